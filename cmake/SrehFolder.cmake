@@ -1,0 +1,30 @@
+# sreh_folder_library(NAME [DEPS ...]): one library target per code folder
+# (style.md 15), built from every .cpp in the folder, with a namespaced alias.
+function(sreh_folder_library name)
+  cmake_parse_arguments(ARG "" "" "DEPS;PRIVATE_DEPS" ${ARGN})
+  file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp)
+  if(NOT sources) # a header-only folder (or one not written yet)
+    add_library(${name} INTERFACE)
+    target_include_directories(${name} INTERFACE ${PROJECT_SOURCE_DIR})
+    target_link_libraries(${name} INTERFACE ${ARG_DEPS})
+  else()
+    add_library(${name} STATIC ${sources})
+    target_include_directories(${name} PUBLIC ${PROJECT_SOURCE_DIR})
+    target_link_libraries(${name} PUBLIC ${ARG_DEPS} PRIVATE sreh_warnings ${ARG_PRIVATE_DEPS})
+  endif()
+  add_library(sreh::${name} ALIAS ${name})
+endfunction()
+
+# sreh_gtest_folder(NAME DEPS ...): one GoogleTest executable per test folder,
+# every *_test.cpp in it, registered with CTest.
+function(sreh_gtest_folder name)
+  cmake_parse_arguments(ARG "" "" "DEPS" ${ARGN})
+  file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*_test.cpp)
+  if(NOT sources)
+    return()
+  endif()
+  add_executable(${name} ${sources})
+  target_link_libraries(${name} PRIVATE ${ARG_DEPS} GTest::gtest_main GTest::gmock sreh_warnings)
+  target_compile_definitions(${name} PRIVATE SREH_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES LABELS unit)
+endfunction()

@@ -1,0 +1,68 @@
+// The SREH-50-IOL firmware as a value a caller drives (style.md 1, 2):
+//   exchange()  once per IO-Link cycle: process data out in, process data in out;
+//   tick()      once per control step: sensor readings in, motor command out;
+//   isdu_read() / isdu_write(): acyclic parameter access (manual chapter 6);
+//   power_off() / power_on(): supply interruption, non-volatile memory kept.
+// No clocks, no files, no MuJoCo: time only advances through tick(dt).
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "device_logic/device_types.hpp"
+#include "device_logic/process_data.hpp"
+
+namespace sreh {
+
+// ISDU answer: error 0 means success; otherwise an IO-Link ISDU error code
+// (0x8011 index not available, ... see iolink.md) and no data.
+struct IsduResult {
+  uint16_t error = 0;
+  std::vector<uint8_t> data;
+  bool ok() const { return error == 0; }
+};
+
+// The non-volatile memory image: configuration and persistent diagnostics
+// (manual 6.2, 6.3). A power cycle keeps it; the twin may save it to a file.
+struct NonVolatileMemory;
+
+class Device {
+ public:
+  Device();                                   // factory-new, powered on
+  explicit Device(const std::vector<uint8_t>& nvm_image); // powered on with a saved memory image
+  ~Device();
+  Device(const Device&);
+  Device& operator=(const Device&);
+
+  // One IO-Link cycle. `outputs_valid` false: the master marked the outputs
+  // invalid (manual 5). Returns nothing when the device does not communicate
+  // (powered off, or after Back-To-Box until the next power cycle).
+  std::optional<PdInFrame> exchange(const PdOutFrame& out, bool outputs_valid = true);
+
+  // One control step of dt_s seconds. Also runs the communication watchdog:
+  // no exchange() for longer than the watchdog time is a link loss (manual 5).
+  MotorCommand tick(double dt_s, const SensorReadings& sensors);
+
+  IsduResult isdu_read(uint16_t index, uint8_t subindex);
+  IsduResult isdu_write(uint16_t index, uint8_t subindex, std::span<const uint8_t> data);
+
+  // Supply interruption: off loses everything volatile; on re-reads the
+  // multiturn encoder within +-720 deg (manual 4.1) and re-initialises.
+  void power_off();
+  void power_on(const SensorReadings& sensors);
+  bool powered() const;
+
+  std::vector<uint8_t> save_nvm() const;     // memory image, for a file
+  Telemetry telemetry() const;
+  LedColor led() const;                      // LED band now (blinking resolved)
+  IoLinkLedMode io_link_led() const;
+  bool in_boot_mode() const;                 // manual 9
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+} // namespace sreh

@@ -1,0 +1,59 @@
+// Process data codec, manual 2.2 (out, 6 bytes), 2.3 (in, 7 bytes), 2.5
+// (position coding). Big-endian as IO-Link transmits multi-byte values.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <span>
+
+namespace sreh {
+
+inline constexpr std::size_t kPdOutBytes = 6; // manual 2.2
+inline constexpr std::size_t kPdInBytes = 7;  // manual 2.3
+using PdOutFrame = std::array<uint8_t, kPdOutBytes>;
+using PdInFrame = std::array<uint8_t, kPdInBytes>;
+
+// Outgoing process data: PLC -> module (manual 2.2).
+struct ProcessDataOut {
+  int32_t target_position = 0; // bits 47..16, 2^16 counts per revolution
+  uint8_t parameter_set = 0;   // bits 15..8, valid 0..7
+  bool shortest_path = false;  // bit 6
+  bool relative = false;       // bit 5
+  bool set_origin = false;     // bit 4
+  bool reset_error = false;    // bit 3
+  bool stop = false;           // bit 2
+  bool move = false;           // bit 1
+  bool motor_on = false;       // bit 0
+  bool operator==(const ProcessDataOut&) const = default;
+};
+
+// Incoming process data: module -> PLC (manual 2.3).
+struct ProcessDataIn {
+  int32_t actual_position = 0; // bits 55..24
+  uint8_t error_code = 0;      // bits 23..16, bit field (manual 2.4)
+  uint8_t warning_code = 0;    // bits 15..8, bit field (manual 2.4)
+  bool error = false;          // bit 5
+  bool warning = false;        // bit 4
+  bool done = false;           // bit 3
+  bool busy = false;           // bit 2
+  bool ready = false;          // bit 1
+  bool motor_off = false;      // bit 0
+  bool operator==(const ProcessDataIn&) const = default;
+};
+
+PdOutFrame encode(const ProcessDataOut& pd);
+PdInFrame encode(const ProcessDataIn& pd);
+ProcessDataOut decode_out(const PdOutFrame& frame);
+ProcessDataIn decode_in(const PdInFrame& frame);
+
+// From bytes of unknown length, as a master or a file hands them over: a frame
+// of the wrong length throws std::invalid_argument naming both lengths.
+ProcessDataOut decode_out(std::span<const uint8_t> bytes);
+ProcessDataIn decode_in(std::span<const uint8_t> bytes);
+
+// Manual 2.5: the int32 position is the low 32 bits of the position in 2^16
+// counts per revolution; beyond +-2^15 revolutions it overflows (wraps).
+constexpr int32_t wrap_wire_position(int64_t wire_counts) {
+  return static_cast<int32_t>(static_cast<uint32_t>(static_cast<uint64_t>(wire_counts) & 0xFFFFFFFFu));
+}
+
+} // namespace sreh

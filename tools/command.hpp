@@ -1,0 +1,28 @@
+// Subcommand registry for the sreh-twin CLI: each cmd_*.cpp adds its own
+// subcommand with SREH_REGISTER_COMMAND, so commands live in small files.
+#pragma once
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <stdexcept>
+#include <string>
+
+namespace sreh::tools {
+
+// Bad input (file, option, value): main prints "sreh-twin: <what>" and exits 2
+// (interfaces.md).
+struct InputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// A subcommand's setup: add the subcommand to `app`; its callback returns the
+// process exit code through `exit_code`.
+using CommandSetup = std::function<void(CLI::App& app, int& exit_code)>;
+
+bool register_command(int order, CommandSetup setup);
+
+} // namespace sreh::tools
+
+#define SREH_CONCAT_INNER(a, b) a##b
+#define SREH_CONCAT(a, b) SREH_CONCAT_INNER(a, b)
+#define SREH_REGISTER_COMMAND(order, setup) \
+  static const bool SREH_CONCAT(sreh_registered_, __LINE__) = ::sreh::tools::register_command(order, setup)

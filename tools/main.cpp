@@ -1,0 +1,50 @@
+// sreh-twin: the command line of the SREH-50-IOL digital twin.
+// Exit codes (interfaces.md): 0 ok, 1 expectation failed / infeasible, 2 bad input.
+#include <algorithm>
+#include <exception>
+#include <iostream>
+#include <vector>
+
+#include "tools/command.hpp"
+
+namespace sreh::tools {
+namespace {
+std::vector<std::pair<int, CommandSetup>>& registry() {
+  static std::vector<std::pair<int, CommandSetup>> commands;
+  return commands;
+}
+} // namespace
+
+bool register_command(int order, CommandSetup setup) {
+  registry().emplace_back(order, std::move(setup));
+  return true;
+}
+} // namespace sreh::tools
+
+int main(int argc, char** argv) {
+  using namespace sreh::tools;
+  CLI::App app{"sreh-twin: digital twin of the Afag SREH-50-IOL smart rotary module"};
+  app.require_subcommand(1);
+  int exit_code = 0;
+  auto commands = registry();
+  std::stable_sort(commands.begin(), commands.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (auto& [order, setup] : commands) setup(app, exit_code);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "sreh-twin: " << e.what() << "\n";
+    return 2;
+  } catch (const InputError& e) {
+    std::cerr << "sreh-twin: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "sreh-twin: internal error: " << e.what() << "\n";
+    return 3;
+  }
+  return exit_code;
+}
