@@ -1,0 +1,97 @@
+// The twin: the device logic coupled to the MuJoCo plant on integer clocks
+// (architecture.md "Time"): physics and control every physics step, process
+// data every IO-Link cycle. Deterministic: same inputs, same trace.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "device_logic/device.hpp"
+#include "twin/trace.hpp"
+
+struct mjModel_;
+struct mjData_;
+
+namespace sreh {
+
+// Attachable loads (issue 5). Masses in kg, lengths in m.
+struct DiskLoad { double mass_kg = 0; double radius_m = 0; double thickness_m = 0.01; };
+struct RingLoad { double mass_kg = 0; double inner_radius_m = 0; double outer_radius_m = 0; double thickness_m = 0.01; };
+struct BoxLoad { double mass_kg = 0; double x_m = 0; double y_m = 0; double z_m = 0; };
+// A light arm (its own mass spread along it) with a point mass at `radius_m`.
+struct ArmLoad { double mass_kg = 0; double radius_m = 0; double arm_mass_kg = 0; };
+struct InertiaLoad { double inertia_gcm2 = 0; }; // a given inertia about the axis
+struct MjcfLoad { std::string path; };           // any MJCF body file
+struct NoLoad {};
+using LoadSpec = std::variant<NoLoad, DiskLoad, RingLoad, BoxLoad, ArmLoad, InertiaLoad, MjcfLoad>;
+
+// Optional world objects.
+struct HardStop { double angle_deg = 0; };       // an obstacle the load hits at this flange angle
+
+struct SupplySpec {
+  double voltage_V = 24.0;            // source voltage
+  double source_resistance_ohm = 0.0; // 0: ideal source
+  double bus_capacitance_F = 0.0;     // with resistance > 0: bus voltage dynamics
+};
+
+struct ThermalSpec {
+  double ambient_C = 25.0;
+  double time_scale = 1.0; // > 1 accelerates thermal dynamics (documented, for long duty tests)
+};
+
+struct TwinConfig {
+  LoadSpec load = NoLoad{};
+  std::vector<HardStop> hard_stops;
+  SupplySpec supply;
+  ThermalSpec thermal;
+  double physics_dt_s = 1e-4;
+  double cycle_s = 0.002;        // IO-Link cycle; an integer multiple of physics_dt_s
+  std::optional<std::vector<uint8_t>> nvm_image; // saved memory; factory-new otherwise
+  bool record_trace = true;
+};
+
+class Plant; // twin/plant.hpp
+
+class Twin {
+ public:
+  explicit Twin(const TwinConfig& config); // throws std::invalid_argument on a bad load / config
+  ~Twin();
+  Twin(const Twin&) = delete;
+  Twin& operator=(const Twin&) = delete;
+
+  // PLC side, applied at the next IO-Link cycle boundary.
+  void set_pd_out(const ProcessDataOut& out);
+  const ProcessDataOut& pd_out() const;
+  void set_outputs_valid(bool valid);   // manual 5
+  void set_link_up(bool up);            // cycles stop while down (manual 5)
+  ProcessDataIn pd_in() const;          // last frame the master received
+  IsduResult isdu_read(uint16_t index, uint8_t subindex);
+  IsduResult isdu_write(uint16_t index, uint8_t subindex, std::span<const uint8_t> data);
+
+  // World side.
+  void set_external_torque(double torque_Nm);
+  void set_supply_voltage(double volts);
+  void power_cycle();                   // off and on again; non-volatile memory kept
+
+  // Advance one IO-Link cycle (exchange, then cycle_s / physics_dt_s steps).
+  void run_cycle();
+  uint64_t cycles() const;
+  double time_s() const;                // cycles * cycle_s
+
+  Telemetry telemetry() const;
+  const std::vector<TraceRow>& trace() const;
+  const std::vector<MoveRecord>& moves() const;
+  double load_inertia_gcm2() const;     // actual load about the axis, as MuJoCo computes it
+  const Device& device() const;
+  const Plant& plant() const;
+  std::vector<uint8_t> save_nvm() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+} // namespace sreh
