@@ -12,17 +12,10 @@
 #include <vector>
 
 #include "device_logic/device_types.hpp"
+#include "device_logic/isdu.hpp"
 #include "device_logic/process_data.hpp"
 
 namespace sreh {
-
-// ISDU answer: error 0 means success; otherwise an IO-Link ISDU error code
-// (0x8011 index not available, ... see iolink.md) and no data.
-struct IsduResult {
-  uint16_t error = 0;
-  std::vector<uint8_t> data;
-  bool ok() const { return error == 0; }
-};
 
 // The non-volatile memory image: configuration and persistent diagnostics
 // (manual 6.2, 6.3). A power cycle keeps it; the twin may save it to a file.
