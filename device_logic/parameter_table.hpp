@@ -32,6 +32,9 @@ struct ParameterEntry {
   std::string_view default_text;// default for strings
   std::string_view section;     // manual section, e.g. "6.2"
   std::size_t max_length = 0;   // strings / octet strings: maximum octets
+  std::string_view record_name = {}; // the record a member belongs to, e.g. "Position limit"
+  std::string_view type_label = {};  // manual's type text where it differs, e.g. "uint16[]"
+  std::string_view notes = {};       // value meanings, e.g. "0: clockwise, 1: counterclockwise"
 };
 
 // Every row of the table, in index/subindex order.
@@ -44,6 +47,15 @@ const ParameterEntry* find_parameter(uint16_t index, uint8_t subindex);
 // The members of a record index in subindex order (empty if not a record).
 std::vector<const ParameterEntry*> record_members(uint16_t index);
 bool index_exists(uint16_t index);
+
+bool is_record(uint16_t index);
+// Position of a row in parameter_table(), -1 if none; O(1) for indices < 128.
+int row_position(uint16_t index, uint8_t subindex);
+std::size_t parameter_row_count();
+// Manual type text of a row: type_label if set, else type_name(type).
+std::string_view row_type_text(const ParameterEntry& row);
+std::string_view storage_name(Storage storage);
+bool is_numeric(ParamType type);
 
 // Octets of a numeric type on the wire (1, 2 or 4); 0 for strings.
 std::size_t wire_size(ParamType type);
