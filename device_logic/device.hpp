@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <string_view>
 #include <vector>
 
 #include "device_logic/device_types.hpp"
@@ -53,8 +54,18 @@ class Device {
   IoLinkLedMode io_link_led() const;
   bool in_boot_mode() const;                 // manual 9
 
+  // Manual 9: in boot mode (system commands 80, 81, 82 in order) a master
+  // transfers an update image. A valid image (see firmware_image()) restarts
+  // the device in normal mode with its configuration kept; an invalid one
+  // leaves it in boot mode, across power cycles, until a valid one arrives.
+  // Returns 0 or an ISDU error code (0x8020 when not in boot mode, 0x8041 bad image).
+  uint16_t firmware_update(std::span<const uint8_t> image);
+  // A well-formed update image for `version` (format: A-FW-3).
+  static std::vector<uint8_t> firmware_image(std::string_view version);
+
+  struct Impl; // opaque: device_logic/device_impl.hpp
+
  private:
-  struct Impl;
   std::unique_ptr<Impl> impl_;
 };
 

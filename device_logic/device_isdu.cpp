@@ -1,0 +1,183 @@
+// ISDU routing of the Device (manual chapter 6): volatile diagnostics and
+// the device-side system commands here, stored parameters in ParameterStore.
+#include <algorithm>
+#include <cmath>
+
+#include "device_logic/device_impl.hpp"
+#include "device_logic/parameter_table.hpp"
+#include "device_logic/position_frame.hpp"
+
+namespace sreh {
+namespace {
+
+IsduResult number(ParamType type, int64_t value) { return isdu_data(encode_number(type, value)); }
+
+// Event codes of the pending errors and warnings, for index 37 (A-EVT-1,
+// iolink.md standard codes where one fits, vendor codes 0x8CAx otherwise).
+constexpr uint16_t kErrorEventCode[8] = {
+    0x8CA0, // bit 0 positioning error
+    0x8CA1, // bit 1 invalid parameter
+    0x8CA2, // bit 2 invalid command / communication
+    0x8CA3, // bit 3 tracking error
+    0x5100, // bit 4 motor voltage: general power supply fault
+    0x4000, // bit 5 temperature fault
+    0x8CA6, // bit 6 output stage / trajectory
+    0x6320, // bit 7 device error: parameter (configuration) error
+};
+constexpr uint8_t kErrorAppears = 0xF4;
+constexpr uint8_t kWarningAppears = 0xE4;
+
+} // namespace
+
+uint8_t Device::Impl::device_status() const {
+  if (faults.any_error()) return 4;   // failure
+  if (faults.any_warning()) return 2; // out of specification
+  return 0;
+}
+
+std::vector<uint8_t> Device::Impl::detailed_device_status() const {
+  std::vector<uint8_t> out(12, 0); // OctetString3[4], manual 6.4
+  std::size_t slot = 0;
+  auto push = [&](uint8_t qualifier, uint16_t code) {
+    if (slot >= 4) return;
+    out[slot * 3] = qualifier;
+    out[slot * 3 + 1] = static_cast<uint8_t>(code >> 8);
+    out[slot * 3 + 2] = static_cast<uint8_t>(code);
+    ++slot;
+  };
+  for (int bit = 7; bit >= 0; --bit) {
+    if (faults.error_cause[bit]) push(kErrorAppears, kErrorEventCode[bit]);
+  }
+  if (faults.warning(WarningBit::Temperature)) push(kWarningAppears, 0x4210);
+  if (const uint8_t v = faults.warning(WarningBit::MotorVoltage)) {
+    push(kWarningAppears, v == cause::kVoltageLow ? 0x5111 : 0x5110);
+  }
+  if (faults.warning(WarningBit::Positioning)) push(kWarningAppears, 0x8CB5);
+  return out;
+}
+
+IsduResult Device::Impl::read(uint16_t index, uint8_t sub) const {
+  if (!powered || comm_blocked) return isdu_error(kIsduServiceTempUnavailable);
+  if (boot_mode && index != 17343 && index != 17342 && !(index >= 13 && index <= 23)) {
+    return isdu_error(kIsduServiceTempUnavailable); // manual 9: normal functions disabled
+  }
+  auto plain = [&](ParamType type, int64_t value) {
+    return sub == 0 ? number(type, value) : isdu_error(kIsduSubindexNotAvailable);
+  };
+  switch (index) {
+    case 2: return isdu_error(kIsduAccessDenied); // system command: write-only
+    case 32: return plain(ParamType::UInt16, error_counter);
+    case 36: return plain(ParamType::UInt8, device_status());
+    case 37: return sub == 0 ? isdu_data(detailed_device_status()) : isdu_error(kIsduSubindexNotAvailable);
+    case 40: return sub == 0 ? isdu_data({last_in_frame.begin(), last_in_frame.end()}) : isdu_error(kIsduSubindexNotAvailable);
+    case 41: return sub == 0 ? isdu_data({last_out_frame.begin(), last_out_frame.end()}) : isdu_error(kIsduSubindexNotAvailable);
+    case 112: return plain(ParamType::UInt8, std::clamp<int64_t>(std::llround(temperature_C * 2.0), 0, 255));
+    case 113: return plain(ParamType::UInt16, std::clamp<int64_t>(std::llround(supply_V * 1000.0), 0, 65535));
+    case 114: {
+      if (sub > 8) return isdu_error(kIsduSubindexNotAvailable);
+      std::vector<uint8_t> all;
+      for (int s = 1; s <= 8; ++s) all.push_back(faults.error_cause[8 - s]); // 114.1 = bit 7
+      if (sub == 0) return isdu_data(all);
+      return isdu_data({all[sub - 1]});
+    }
+    case 115: {
+      if (sub > 3) return isdu_error(kIsduSubindexNotAvailable);
+      std::vector<uint8_t> all;
+      for (int s = 1; s <= 3; ++s) all.push_back(faults.warning_cause[8 - s]); // 115.1 = bit 7
+      if (sub == 0) return isdu_data(all);
+      return isdu_data({all[sub - 1]});
+    }
+    case 17343: {
+      const BootStatus st = !boot_mode ? BootStatus::Normal
+                            : firmware_failed ? BootStatus::BootModeAfterFailedUpdate
+                                              : BootStatus::BootMode;
+      return plain(ParamType::UInt8, static_cast<int64_t>(st));
+    }
+    default:
+      return store.read(index, sub);
+  }
+}
+
+IsduResult Device::Impl::write(uint16_t index, uint8_t sub, std::span<const uint8_t> data) {
+  if (!powered || comm_blocked) return isdu_error(kIsduServiceTempUnavailable);
+  if (index == 2) {
+    if (sub != 0) return isdu_error(kIsduSubindexNotAvailable);
+    if (data.size() > 1) return isdu_error(kIsduLengthOverrun);
+    if (data.empty()) return isdu_error(kIsduLengthUnderrun);
+    const uint16_t err = system_command(data[0]);
+    return err ? isdu_error(err) : IsduResult{};
+  }
+  if (boot_mode) return isdu_error(kIsduServiceTempUnavailable);
+  switch (index) { // volatile diagnostics are read-only
+    case 32: case 36: case 37: case 40: case 41: case 112: case 113: case 114: case 115: case 17343:
+      return isdu_error(kIsduAccessDenied);
+    default:
+      break;
+  }
+  const int64_t zero_before = store.raw(86, 0);
+  IsduResult r = store.write(index, sub, data);
+  // Manual 4.3.2 / 4.3.3: writing index 86 stores the zero offset and applies it.
+  if (r.ok() && index == 86 && !store.download_open()) init_origin();
+  (void)zero_before;
+  return r;
+}
+
+// Manual 6.6.
+uint16_t Device::Impl::system_command(uint8_t cmd) {
+  if (boot_mode && !(cmd >= 80 && cmd <= 82)) return kIsduFunctionTempUnavailable;
+  switch (cmd) {
+    case 1: case 2: case 3: case 4: case 5: case 6: { // block parameterisation
+      const int64_t zero_before = store.raw(86, 0);
+      const uint16_t err = store.block_command(cmd);
+      if (err == 0 && store.raw(86, 0) != zero_before) init_origin(); // a downloaded 86 is applied
+      return err;
+    }
+    case 80: // firmware update unlock, step 1 (A-FW-2)
+      fw_unlock_step = 1;
+      return 0;
+    case 81:
+      if (fw_unlock_step != 1) return kIsduFunctionTempUnavailable;
+      fw_unlock_step = 2;
+      return 0;
+    case 82: // enter boot mode (manual 9): normal functions off, configuration kept
+      if (fw_unlock_step != 2) return kIsduFunctionTempUnavailable;
+      fw_unlock_step = 0;
+      if (motor_on()) enter(State::MotorOff, Event::SwitchOff);
+      state = State::MotorOff;
+      boot_mode = true;
+      locator = false;
+      return 0;
+    case 126: // Locator start
+      locator = true;
+      locator_start_ns = time_ns;
+      return 0;
+    case 127: // Locator stop
+      locator = false;
+      return 0;
+    case 129: // Application reset: configuration to factory settings
+    case 131: { // Back-To-Box: the same, then silent until power is cycled
+      store.factory_reset(/*keep_tags=*/cmd == 129);
+      init_origin();
+      if (cmd == 131) comm_blocked = true;
+      return 0;
+    }
+    case 160: // reset the resettable maximum temperature (index 99)
+      store.set_raw_internal(99, 1, 0);
+      store.set_raw_internal(99, 2, 0);
+      return 0;
+    case 161: // reset the time above critical temperature (index 100)
+      store.set_raw_internal(100, 0, 0);
+      temp_warn_rem_ns = 0;
+      return 0;
+    case 170: // apply position zero: re-initialise from index 86 (manual 4.3.3)
+      init_origin();
+      return 0;
+    case 171: // store the zero set with Set Origin persistently (manual 4.3.2)
+      store.set_raw_internal(86, 0, origin_to_zero_offset_wire(origin));
+      return 0;
+    default:
+      return kIsduFunctionUnavailable;
+  }
+}
+
+} // namespace sreh

@@ -1,0 +1,95 @@
+// Errors and warnings as the manual numbers them (2.4, 7.2, 7.3): one cause
+// code per bit, sticky errors with an explicit reset, self-clearing warnings
+// (style.md 4). The cause codes are the values of indices 114.x / 115.x.
+#pragma once
+#include <array>
+#include <cstdint>
+
+namespace sreh {
+
+// Error bits of the process data error byte (manual 2.4).
+enum class ErrorBit : uint8_t {
+  Positioning = 0,       // 114.8
+  InvalidParameter = 1,  // 114.7
+  InvalidCommand = 2,    // 114.6
+  TrackingError = 3,     // 114.5
+  MotorVoltage = 4,      // 114.4
+  Temperature = 5,       // 114.3
+  OutputStage = 6,       // 114.2
+  DeviceError = 7,       // 114.1
+};
+
+// Warning bits of the warning byte (manual 2.4).
+enum class WarningBit : uint8_t {
+  Positioning = 5,  // 115.3
+  MotorVoltage = 6, // 115.2
+  Temperature = 7,  // 115.1
+};
+
+// Cause codes, manual 7.2 / 7.3.
+namespace cause {
+inline constexpr uint8_t kInternalConfiguration = 1;   // 114.1
+inline constexpr uint8_t kOutputStageOvercurrent = 1;  // 114.2
+inline constexpr uint8_t kTrajectoryError = 2;         // 114.2
+inline constexpr uint8_t kStateMachineError = 3;       // 114.2
+inline constexpr uint8_t kOverTemperature = 1;         // 114.3
+inline constexpr uint8_t kVoltageLow = 1;              // 114.4, 115.2
+inline constexpr uint8_t kVoltageHigh = 2;             // 114.4, 115.2
+inline constexpr uint8_t kTrackingError = 64;          // 114.5
+inline constexpr uint8_t kMotorSwitchedOff = 1;        // 114.6
+inline constexpr uint8_t kOperationAborted = 2;        // 114.6
+inline constexpr uint8_t kMoveFromInvalidState = 4;    // 114.6
+inline constexpr uint8_t kSetOriginFromInvalidState = 5; // 114.6
+inline constexpr uint8_t kMoveAndSetOrigin = 6;        // 114.6
+inline constexpr uint8_t kConnectionInterrupted = 16;  // 114.6
+inline constexpr uint8_t kOutputsInvalid = 17;         // 114.6
+inline constexpr uint8_t kInvalidTarget = 1;           // 114.7
+inline constexpr uint8_t kInvalidParameterSet = 2;     // 114.7
+inline constexpr uint8_t kRelativeAndShortestPath = 3; // 114.7
+inline constexpr uint8_t kSettlingTimeout = 1;         // 114.8
+inline constexpr uint8_t kTemperatureWarning = 1;      // 115.1
+inline constexpr uint8_t kLeftToleranceWindow = 1;     // 115.3
+} // namespace cause
+
+// Does this error switch the motor off? Manual 2.4 bit-field table: bits 7..3
+// yes, bit 2 only for invalid process data / connection loss, bits 1, 0 no.
+constexpr bool error_switches_motor_off(ErrorBit bit, uint8_t code) {
+  switch (bit) {
+    case ErrorBit::InvalidCommand:
+      return code == cause::kConnectionInterrupted || code == cause::kOutputsInvalid ||
+             code == cause::kMotorSwitchedOff; // the PLC switched it off itself (manual 7.2 code 1)
+    case ErrorBit::InvalidParameter:
+    case ErrorBit::Positioning:
+      return false;
+    default:
+      return true;
+  }
+}
+
+// Subindex of 114 for an error bit: bit 7 -> 1 ... bit 0 -> 8 (manual 6.4).
+constexpr uint8_t error_subindex(ErrorBit bit) { return static_cast<uint8_t>(8 - static_cast<int>(bit)); }
+// Subindex of 115 for a warning bit: bit 7 -> 1, 6 -> 2, 5 -> 3.
+constexpr uint8_t warning_subindex(WarningBit bit) { return static_cast<uint8_t>(8 - static_cast<int>(bit)); }
+
+// Active causes: one code per bit, 0 when inactive (manual 6.4 note).
+struct FaultSet {
+  std::array<uint8_t, 8> error_cause{};   // by error bit number
+  std::array<uint8_t, 8> warning_cause{}; // by warning bit number (5..7 used)
+
+  uint8_t error_byte() const {
+    uint8_t b = 0;
+    for (int i = 0; i < 8; ++i) b = static_cast<uint8_t>(b | (error_cause[i] ? (1u << i) : 0u));
+    return b;
+  }
+  uint8_t warning_byte() const {
+    uint8_t b = 0;
+    for (int i = 0; i < 8; ++i) b = static_cast<uint8_t>(b | (warning_cause[i] ? (1u << i) : 0u));
+    return b;
+  }
+  bool any_error() const { return error_byte() != 0; }
+  bool any_warning() const { return warning_byte() != 0; }
+  uint8_t error(ErrorBit b) const { return error_cause[static_cast<int>(b)]; }
+  uint8_t warning(WarningBit b) const { return warning_cause[static_cast<int>(b)]; }
+};
+
+} // namespace sreh
