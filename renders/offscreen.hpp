@@ -1,0 +1,96 @@
+// Off-screen rendering of the module with OSMesa (issue 7, design/mujoco.md
+// "Rendering off-screen"). One renderer owns one OSMesa context and one
+// MuJoCo GPU context; every call makes its context current on the calling
+// thread, so a renderer may be used from any (one at a time) thread.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "device_logic/device_types.hpp"
+
+struct mjModel_;
+struct mjData_;
+
+namespace sreh {
+
+// Where the camera looks from. Unset fields take the automatic framing of
+// the module and its load (renders.md A-RENDERS-1).
+struct CameraSpec {
+  enum class Preset : uint8_t { Default, Top };
+  Preset preset = Preset::Default;
+  std::optional<double> azimuth_deg;
+  std::optional<double> elevation_deg;
+  std::optional<double> distance_m;
+  std::optional<std::array<double, 3>> lookat_m;
+
+  static CameraSpec top() { CameraSpec c; c.preset = Preset::Top; return c; }
+};
+
+struct RenderOptions {
+  int width_px = 1280;   // must be even (yuv420p video)
+  int height_px = 720;
+  int msaa_samples = 4;  // m->vis.quality.offsamples (A-RENDERS-3)
+  bool shadows = true;
+  int shadow_size = 2048; // shadow map texture size
+};
+
+// What changes per frame besides the physics state.
+struct SceneState {
+  LedColor led = LedColor::Off;
+  // Flange joint angle (MuJoCo qpos sense, rad) the setpoint ghost shows;
+  // unset: the ghost is left where the model data has it.
+  std::optional<double> ghost_joint_rad;
+  // Text lines drawn in the top-left corner: label column, value column.
+  std::vector<std::pair<std::string, std::string>> overlay;
+};
+
+// An RGB image, rows top-down, 3 bytes per pixel.
+struct RgbImage {
+  int width = 0;
+  int height = 0;
+  std::vector<uint8_t> rgb;
+  std::array<uint8_t, 3> at(int x, int y) const {
+    const std::size_t i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)) * 3;
+    return {rgb[i], rgb[i + 1], rgb[i + 2]};
+  }
+};
+
+// The LED band colour as rendered (A-RENDERS-2): rgba and emission.
+struct LedLook { std::array<float, 4> rgba; float emission; };
+LedLook led_look(LedColor c);
+
+class OffscreenRenderer {
+ public:
+  // The model's geometry is uploaded once; `m` must outlive the renderer and
+  // keep its structure (same model, or one compiled from the same MJCF).
+  // Throws std::runtime_error if OSMesa or MuJoCo cannot make the context.
+  OffscreenRenderer(const mjModel_* m, const RenderOptions& options, const CameraSpec& camera = {});
+  ~OffscreenRenderer();
+  OffscreenRenderer(const OffscreenRenderer&) = delete;
+  OffscreenRenderer& operator=(const OffscreenRenderer&) = delete;
+
+  void set_camera(const CameraSpec& camera);
+
+  // Renders the current state of `d` (kinematics as the last step left it).
+  // Writes d->mocap_quat of the ghost when state.ghost_joint_rad is set.
+  RgbImage render(const mjModel_* m, mjData_* d, const SceneState& state);
+  // Same, into a caller-owned buffer of width*height*3 bytes. With
+  // `flip` false the rows stay bottom-up as OpenGL reads them.
+  void render_into(const mjModel_* m, mjData_* d, const SceneState& state, uint8_t* rgb, bool flip = true);
+
+  int width() const;
+  int height() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Flips an RGB image with `height` rows of `width` pixels in place.
+void flip_rows(uint8_t* rgb, int width, int height);
+
+} // namespace sreh

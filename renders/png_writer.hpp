@@ -1,0 +1,12 @@
+// PNG frames with libpng (design/mujoco.md: fastest of the tried encoders).
+#pragma once
+#include <cstdint>
+#include <filesystem>
+
+namespace sreh {
+
+// Writes an 8-bit RGB image, rows top-down, to `path`. zlib level 1..9
+// trades size for time (A-RENDERS-6). Throws std::runtime_error on failure.
+void write_png(const std::filesystem::path& path, const uint8_t* rgb, int width, int height, int zlib_level = 3);
+
+} // namespace sreh

@@ -1,0 +1,163 @@
+// Off-screen rendering of the module (issue 7): images are real, respond to
+// the flange angle, the LED band colour (manual 3.1 LED states) and the ghost.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+
+#include "render_fixture.hpp"
+#include "renders/offscreen.hpp"
+
+namespace sreh {
+namespace {
+
+class OffscreenTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    md_ = new test::ModelData();
+    RenderOptions o;
+    o.width_px = 320;
+    o.height_px = 240;
+    renderer_ = new OffscreenRenderer(md_->m, o);
+  }
+  static void TearDownTestSuite() {
+    delete renderer_;
+    delete md_;
+  }
+  void SetUp() override {
+    md_->set_flange(0.0);
+    renderer_->set_camera(CameraSpec{});
+  }
+  static RgbImage render(const SceneState& s = {}) { return renderer_->render(md_->m, md_->d, s); }
+
+  static test::ModelData* md_;
+  static OffscreenRenderer* renderer_;
+};
+test::ModelData* OffscreenTest::md_ = nullptr;
+OffscreenRenderer* OffscreenTest::renderer_ = nullptr;
+
+double luminance_variance(const RgbImage& img) {
+  double sum = 0, sum2 = 0;
+  const std::size_t n = img.rgb.size() / 3;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double l = (img.rgb[3 * i] + img.rgb[3 * i + 1] + img.rgb[3 * i + 2]) / 3.0;
+    sum += l;
+    sum2 += l * l;
+  }
+  const double mean = sum / static_cast<double>(n);
+  return sum2 / static_cast<double>(n) - mean * mean;
+}
+
+std::size_t differing_pixels(const RgbImage& a, const RgbImage& b, int threshold = 24) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i + 2 < a.rgb.size(); i += 3) {
+    const int d = std::abs(a.rgb[i] - b.rgb[i]) + std::abs(a.rgb[i + 1] - b.rgb[i + 1]) + std::abs(a.rgb[i + 2] - b.rgb[i + 2]);
+    if (d > threshold) ++n;
+  }
+  return n;
+}
+
+TEST_F(OffscreenTest, FrameIsNotBlank) {
+  const RgbImage img = render();
+  ASSERT_EQ(img.rgb.size(), 320u * 240u * 3u);
+  EXPECT_GT(luminance_variance(img), 100.0);
+}
+
+TEST_F(OffscreenTest, SameStateRendersPixelIdentical) {
+  EXPECT_EQ(render().rgb, render().rgb);
+}
+
+TEST_F(OffscreenTest, FramesDifferWhenTheFlangeTurns) {
+  const RgbImage a = render();
+  md_->set_flange(1.2);
+  const RgbImage b = render();
+  EXPECT_GT(differing_pixels(a, b), 200u);
+}
+
+TEST_F(OffscreenTest, CameraFramingDoesNotFollowTheLoadRotation) {
+  // The auto framing uses a bounding cylinder about the flange axis: turning
+  // the flange by a full revolution gives the identical picture.
+  const RgbImage a = render();
+  md_->set_flange(2.0 * M_PI);
+  renderer_->set_camera(CameraSpec{});
+  const RgbImage b = render();
+  EXPECT_LT(differing_pixels(a, b), 20u);
+}
+
+TEST_F(OffscreenTest, GhostShowsTheSetpointAngleAndWritesMocapQuat) {
+  SceneState s;
+  s.ghost_joint_rad = 0.0;
+  const RgbImage a = render(s);
+  s.ghost_joint_rad = 1.5;
+  const RgbImage b = render(s);
+  EXPECT_GT(differing_pixels(a, b), 50u);
+  const int body = mj_name2id(md_->m, mjOBJ_BODY, "setpoint_ghost");
+  const double* q = md_->d->mocap_quat + 4 * md_->m->body_mocapid[body];
+  EXPECT_NEAR(2.0 * std::atan2(q[3], q[0]), 1.5, 1e-9); // rotation about +z
+}
+
+TEST_F(OffscreenTest, TopViewDiffersFromDefaultView) {
+  const RgbImage a = render();
+  renderer_->set_camera(CameraSpec::top());
+  const RgbImage b = render();
+  EXPECT_GT(differing_pixels(a, b), 1000u);
+}
+
+TEST_F(OffscreenTest, OverlayTextIsDrawnTopLeft) {
+  const RgbImage a = render();
+  SceneState s;
+  s.overlay = {{"t", "1.234 s"}, {"state", "Busy"}};
+  const RgbImage b = render(s);
+  std::size_t changed_top_left = 0;
+  for (int y = 0; y < 60; ++y)
+    for (int x = 0; x < 160; ++x)
+      if (a.at(x, y) != b.at(x, y)) ++changed_top_left;
+  EXPECT_GT(changed_top_left, 50u);
+}
+
+// Manual 3.1 / index 83: the LED band shows the state colour. The band's
+// pixels are found as those that change between two distinct colours; their
+// mean colour must then point the way the set colour points.
+TEST_F(OffscreenTest, LedBandPixelsTakeTheSetColour) {
+  SceneState red, blue;
+  red.led = LedColor::Red;
+  blue.led = LedColor::Blue;
+  const RgbImage ir = render(red), ib = render(blue);
+  std::vector<std::pair<int, int>> band;
+  for (int y = 0; y < ir.height; ++y)
+    for (int x = 0; x < ir.width; ++x) {
+      const auto a = ir.at(x, y), b = ib.at(x, y);
+      if (a[0] > b[0] + 80 && b[2] > a[2] + 80) band.emplace_back(x, y);
+    }
+  ASSERT_GT(band.size(), 30u) << "LED band not visible";
+
+  auto mean_colour = [&](LedColor c) {
+    SceneState s;
+    s.led = c;
+    const RgbImage img = render(s);
+    std::array<double, 3> m{};
+    for (auto [x, y] : band)
+      for (int k = 0; k < 3; ++k) m[static_cast<std::size_t>(k)] += img.at(x, y)[static_cast<std::size_t>(k)];
+    for (double& v : m) v /= static_cast<double>(band.size());
+    return m;
+  };
+  for (LedColor c : {LedColor::Green, LedColor::Yellow, LedColor::Blue, LedColor::Red, LedColor::Orange,
+                     LedColor::White, LedColor::Violet}) {
+    const auto m = mean_colour(c);
+    const auto want = led_look(c).rgba;
+    double dot = 0, nm = 0, nw = 0;
+    for (std::size_t k = 0; k < 3; ++k) {
+      dot += m[k] * want[k];
+      nm += m[k] * m[k];
+      nw += double(want[k]) * want[k];
+    }
+    EXPECT_GT(dot / std::sqrt(nm * nw), 0.97) << led_name(c) << " rendered " << m[0] << "," << m[1] << "," << m[2];
+  }
+  const auto off = mean_colour(LedColor::Off);
+  const auto white = mean_colour(LedColor::White);
+  EXPECT_LT(off[0] + off[1] + off[2], 0.4 * (white[0] + white[1] + white[2])) << "off must look dark";
+  EXPECT_NEAR(off[0], off[2], 20.0) << "off must look grey, not coloured";
+}
+
+} // namespace
+} // namespace sreh
