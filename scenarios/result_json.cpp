@@ -1,0 +1,55 @@
+#include "scenarios/result_json.hpp"
+
+#include <cmath>
+
+namespace sreh {
+namespace {
+
+// JSON has no infinity / NaN: such values become null.
+nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+} // namespace
+
+nlohmann::json to_json(const RunResult& r) {
+  nlohmann::json moves = nlohmann::json::array();
+  for (const MoveRecord& m : r.moves) {
+    moves.push_back({{"start_s", number(m.start_s)},
+                     {"target_deg", number(m.target_deg)},
+                     {"travel_s", number(m.travel_s)},
+                     {"settling_s", m.completed ? number(m.settling_s) : nlohmann::json(nullptr)},
+                     {"positioning_s", m.completed ? number(m.positioning_s) : nlohmann::json(nullptr)},
+                     {"max_tracking_error_deg", number(m.max_tracking_error_deg)},
+                     {"completed", m.completed}});
+  }
+  nlohmann::json checks = nlohmann::json::array();
+  for (const CheckRecord& c : r.checks) {
+    checks.push_back({{"step", c.step},
+                      {"line", c.line},
+                      {"description", c.description},
+                      {"passed", c.passed},
+                      {"t_s", number(c.t_s)},
+                      {"actual", c.actual}});
+  }
+  return {
+      {"name", r.name},
+      {"passed", r.passed},
+      {"failures", r.failures},
+      {"stopped_early", r.stopped_early},
+      {"moves", moves},
+      {"final",
+       {{"state", std::string(state_name(r.final_state.state))},
+        {"position_deg", number(r.final_state.position_deg)},
+        {"error_code", r.final_state.error_code},
+        {"warning_code", r.final_state.warning_code},
+        {"led", std::string(led_name(r.final_state.led))}}},
+      {"checks", checks},
+      {"sim_time_s", number(r.sim_time_s)},
+      {"cycles", r.cycles},
+      {"max_tracking_error_deg", number(r.max_tracking_error_deg)},
+      {"max_temperature_C", number(r.max_temperature_C)},
+      {"min_supply_V", number(r.min_supply_V)},
+      {"max_supply_V", number(r.max_supply_V)},
+  };
+}
+
+} // namespace sreh

@@ -1,0 +1,295 @@
+#include "scenarios/runner.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "scenarios/isdu_value.hpp"
+#include "scenarios/snapshot.hpp"
+
+namespace sreh {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+std::string hex_code(uint16_t code) { return fmt::format("0x{:04X}", code); }
+
+std::string bytes_hex(const std::vector<uint8_t>& data) {
+  std::string s;
+  for (uint8_t b : data) s += fmt::format("{:02X}", b);
+  return s.empty() ? "(none)" : s;
+}
+
+std::string seconds(double s) { return fmt::format("{:g} s", s); }
+
+struct StopRun {}; // stop_on_failure: unwinds the step loop
+
+class ScenarioRun {
+ public:
+  ScenarioRun(const Scenario& s, const RunOptions& o) : s_(s), o_(o) {}
+
+  RunResult run() {
+    TwinConfig config = make_twin_config(s_);
+    config.record_trace = o_.record_trace;
+    try {
+      twin_ = std::make_unique<Twin>(config);
+    } catch (const std::invalid_argument& e) {
+      const bool has_load = !std::holds_alternative<NoLoad>(s_.load);
+      throw ScenarioError(has_load ? s_.load_loc : SourceLoc{s_.file, 0, 0},
+                          fmt::format("{}the twin rejects this setup: {}", has_load ? "load: " : "", e.what()));
+    }
+    r_.name = s_.name;
+    const Snapshot first = take_snapshot(*twin_);
+    r_.min_supply_V = r_.max_supply_V = first.telemetry.supply_V;
+    r_.max_temperature_C = first.telemetry.temperature_C;
+    try {
+      for (std::size_t i = 0; i < s_.device.isdu.size(); ++i) {
+        isdu_write(s_.device.isdu[i], fmt::format("device.isdu[{}]", i + 1));
+      }
+      run_steps(s_.steps, "");
+    } catch (const StopRun&) {
+      r_.stopped_early = true;
+    }
+    check_run_metrics();
+    finish();
+    return std::move(r_);
+  }
+
+ private:
+  // ---- time ----
+  uint64_t cycles_for(double duration_s) const {
+    // Rounded up to whole IO-Link cycles (A-SCN-3).
+    return static_cast<uint64_t>(std::ceil(duration_s / s_.sim.cycle_s - 1e-9));
+  }
+
+  void cycle() {
+    twin_->run_cycle();
+    const Telemetry t = twin_->telemetry();
+    r_.max_tracking_error_deg = std::max(r_.max_tracking_error_deg, std::abs(t.tracking_error_deg));
+    r_.max_temperature_C = std::max(r_.max_temperature_C, t.temperature_C);
+    r_.min_supply_V = std::min(r_.min_supply_V, t.supply_V);
+    r_.max_supply_V = std::max(r_.max_supply_V, t.supply_V);
+    if (o_.on_cycle) o_.on_cycle(*twin_);
+  }
+
+  void cycles(uint64_t n) {
+    for (uint64_t i = 0; i < n; ++i) cycle();
+  }
+
+  // ---- recording ----
+  void record(const std::string& step, const SourceLoc& loc, const std::string& description, bool passed,
+              const std::string& actual, const std::string& why) {
+    r_.checks.push_back(CheckRecord{step, loc.line, description, passed, twin_->time_s(), actual});
+    if (passed) return;
+    r_.passed = false;
+    r_.failures.push_back(fmt::format("step {} (line {}): {}: {} at t={:.3f} s", step, loc.line, description, why,
+                                      twin_->time_s()));
+    if (s_.stop_on_failure) throw StopRun{};
+  }
+
+  // ---- steps ----
+  void run_steps(const std::vector<Step>& steps, const std::string& pass) {
+    for (const Step& step : steps) run_step(step, pass);
+  }
+
+  void run_step(const Step& step, const std::string& pass) {
+    const std::string id = step.number + pass;
+    std::visit([&](const auto& a) { execute(step, id, a); }, step.action);
+  }
+
+  void execute(const Step&, const std::string&, const PdStep& a) {
+    // Fields left out keep their value (interfaces.md); the step lasts one
+    // cycle so that the device sees these outputs at least once.
+    if (a.target_raw) pd_.target_position = *a.target_raw;
+    if (a.parameter_set) pd_.parameter_set = *a.parameter_set;
+    if (a.motor_on) pd_.motor_on = *a.motor_on;
+    if (a.move) pd_.move = *a.move;
+    if (a.stop) pd_.stop = *a.stop;
+    if (a.reset_error) pd_.reset_error = *a.reset_error;
+    if (a.set_origin) pd_.set_origin = *a.set_origin;
+    if (a.relative) pd_.relative = *a.relative;
+    if (a.shortest_path) pd_.shortest_path = *a.shortest_path;
+    twin_->set_pd_out(pd_);
+    cycle();
+  }
+
+  void execute(const Step&, const std::string&, const WaitStep& a) { cycles(cycles_for(a.duration_s)); }
+
+  void execute(const Step& step, const std::string& id, const WaitUntilStep& a) {
+    const std::string description = fmt::format("wait_until {} within {}", describe(a.until), seconds(a.within_s));
+    const uint64_t limit = cycles_for(a.within_s);
+    Evaluation e = evaluate(a.until, take_snapshot(*twin_));
+    for (uint64_t i = 0; i < limit && !e.passed; ++i) {
+      cycle();
+      e = evaluate(a.until, take_snapshot(*twin_));
+    }
+    record(id, step.loc, description, e.passed, e.actual, "not reached; " + e.mismatch);
+  }
+
+  void execute(const Step& step, const std::string& id, const ExpectStep& a) {
+    const Evaluation e = evaluate(a.check, take_snapshot(*twin_));
+    record(id, step.loc, "expect " + e.expected, e.passed, e.actual, e.mismatch);
+  }
+
+  void execute(const Step& step, const std::string& id, const IsduReadStep& a) {
+    const IsduResult res = twin_->isdu_read(a.index, a.subindex);
+    std::string description = fmt::format("isdu_read {}.{}", a.index, a.subindex);
+    if (a.expect_error) {
+      description += " expect_error " + hex_code(*a.expect_error);
+      const std::string actual = res.ok() ? "ok, data " + bytes_hex(res.data) : "error " + hex_code(res.error);
+      record(id, step.loc, description, res.error == *a.expect_error, actual, "answered " + actual);
+      return;
+    }
+    if (!res.ok()) {
+      record(id, step.loc, description, false, "error " + hex_code(res.error), "answered error " + hex_code(res.error));
+      return;
+    }
+    if (!a.expect) {
+      record(id, step.loc, description, true, "data " + bytes_hex(res.data), "");
+      return;
+    }
+    if (a.expect->text) {
+      const std::string text = detail::decode_isdu_text(res.data);
+      description += fmt::format(" expect \"{}\"", *a.expect->text);
+      record(id, step.loc, description, text == *a.expect->text, fmt::format("\"{}\"", text),
+             fmt::format("read \"{}\"", text));
+      return;
+    }
+    description += " expect " + a.expect->number->str();
+    const auto value = detail::decode_isdu_number(a.index, a.subindex, res.data);
+    if (!value) {
+      record(id, step.loc, description, false, "data " + bytes_hex(res.data), "not a number: data " + bytes_hex(res.data));
+      return;
+    }
+    const double v = static_cast<double>(*value);
+    record(id, step.loc, description, a.expect->number->contains(v), std::to_string(*value),
+           "read " + std::to_string(*value));
+  }
+
+  void execute(const Step&, const std::string& id, const IsduWriteStep& a) { isdu_write(a, id); }
+
+  void isdu_write(const IsduWriteStep& a, const std::string& id) {
+    const IsduResult res = twin_->isdu_write(a.index, a.subindex, a.data);
+    const uint16_t want = a.expect_error.value_or(0);
+    std::string description = fmt::format("isdu_write {}.{} = {}", a.index, a.subindex, a.value_text);
+    description += a.expect_error ? " expect_error " + hex_code(*a.expect_error) : "";
+    const std::string actual = res.ok() ? "ok" : "error " + hex_code(res.error);
+    record(id, a.loc, description, res.error == want, actual, "answered " + actual);
+  }
+
+  void execute(const Step&, const std::string&, const TorqueStep& a) {
+    twin_->set_external_torque(a.torque_Nm);
+    if (!a.for_s) return; // stays until the next torque step
+    cycles(cycles_for(*a.for_s));
+    twin_->set_external_torque(0.0);
+  }
+
+  void execute(const Step&, const std::string&, const SupplyStep& a) { twin_->set_supply_voltage(a.voltage_V); }
+
+  void execute(const Step&, const std::string&, const LinkStep& a) {
+    twin_->set_link_up(false);
+    cycles(cycles_for(a.down_s));
+    twin_->set_link_up(true);
+  }
+
+  void execute(const Step&, const std::string&, const PdValidStep& a) { twin_->set_outputs_valid(a.valid); }
+  void execute(const Step&, const std::string&, const PowerCycleStep&) { twin_->power_cycle(); }
+  void execute(const Step&, const std::string&, const CommentStep&) {}
+
+  void execute(const Step&, const std::string& id, const RepeatStep& a) {
+    for (int i = 0; i < a.times; ++i) run_steps(a.steps, fmt::format(" (pass {} of step {})", i + 1, id));
+  }
+
+  static std::string describe(const Conditions& c) {
+    // The expected side of an evaluation does not depend on the snapshot.
+    return evaluate(c, Snapshot{}).expected;
+  }
+
+  // ---- whole run ----
+  void check_run_metrics() {
+    const auto& moves = twin_->moves();
+    auto max_of = [&](auto field) {
+      double m = 0;
+      for (const MoveRecord& mv : moves) m = std::max(m, field(mv));
+      return m;
+    };
+    for (const RunCheck& c : s_.expect) {
+      double v = 0;
+      switch (c.metric) {
+        case RunMetric::MaxTrackingErrorDeg:
+          v = std::max(r_.max_tracking_error_deg, max_of([](const MoveRecord& m) { return m.max_tracking_error_deg; }));
+          break;
+        case RunMetric::Moves: v = static_cast<double>(moves.size()); break;
+        case RunMetric::MovesCompleted:
+          v = static_cast<double>(std::count_if(moves.begin(), moves.end(), [](const MoveRecord& m) { return m.completed; }));
+          break;
+        case RunMetric::MaxTravelS: v = max_of([](const MoveRecord& m) { return m.travel_s; }); break;
+        case RunMetric::MaxSettlingS:
+          // A move that never completed never settled.
+          v = max_of([](const MoveRecord& m) { return m.completed ? m.settling_s : kInf; });
+          break;
+        case RunMetric::MaxPositioningS:
+          v = max_of([](const MoveRecord& m) { return m.completed ? m.positioning_s : kInf; });
+          break;
+        case RunMetric::MaxTemperatureC: v = r_.max_temperature_C; break;
+        case RunMetric::MinSupplyV: v = r_.min_supply_V; break;
+        case RunMetric::MaxSupplyV: v = r_.max_supply_V; break;
+      }
+      const std::string actual = fmt::format("{:g}", v);
+      try {
+        record("expect", c.loc, fmt::format("{} {}", c.key, c.range.str()), c.range.contains(v), actual,
+               "was " + actual);
+      } catch (const StopRun&) {
+        r_.stopped_early = true;
+      }
+    }
+  }
+
+  void finish() {
+    const Snapshot s = take_snapshot(*twin_);
+    r_.final_state = FinalState{s.state, s.position_deg, s.in.error_code, s.in.warning_code, s.telemetry.led};
+    r_.moves = twin_->moves();
+    r_.sim_time_s = twin_->time_s();
+    r_.cycles = twin_->cycles();
+    if (o_.record_trace) r_.trace = twin_->trace();
+    r_.nvm_image = twin_->save_nvm();
+  }
+
+  const Scenario& s_;
+  const RunOptions& o_;
+  std::unique_ptr<Twin> twin_;
+  ProcessDataOut pd_{}; // the PLC's outputs; kept across power cycles like a real PLC's
+  RunResult r_;
+};
+
+std::vector<uint8_t> read_bytes(const std::string& path, const SourceLoc& loc) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ScenarioError(loc, fmt::format("device.nvm_image: cannot read '{}'", path));
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+} // namespace
+
+TwinConfig make_twin_config(const Scenario& s) {
+  TwinConfig c;
+  c.load = s.load;
+  c.hard_stops = s.hard_stops;
+  c.supply = SupplySpec{s.device.supply_V, s.device.source_resistance_ohm, s.device.bus_capacitance_F};
+  c.thermal = ThermalSpec{s.device.ambient_C, s.sim.thermal_time_scale};
+  c.physics_dt_s = s.sim.physics_dt_s;
+  c.cycle_s = s.sim.cycle_s;
+  if (s.device.nvm_image_path) c.nvm_image = read_bytes(*s.device.nvm_image_path, s.device.nvm_image_loc);
+  c.record_trace = false;
+  return c;
+}
+
+RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
+  return ScenarioRun(scenario, options).run();
+}
+
+} // namespace sreh

@@ -1,0 +1,66 @@
+// Runs a Scenario on a Twin: steps on IO-Link cycle boundaries, the device
+// reached only through process data and ISDU (architecture.md). Every check
+// is recorded; a failed check does not stop the run unless the scenario says
+// `stop_on_failure: true`. A wait_until that is not met gives up after its
+// `within_s`, so no run can hang.
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "scenarios/scenario.hpp"
+#include "twin/twin.hpp"
+
+namespace sreh {
+
+struct CheckRecord {
+  std::string step;        // "4", "5.2"; "device.isdu[0]" or "expect" outside the steps
+  int line = 0;            // scenario line (1-based)
+  std::string description; // "wait_until state Done within 1 s"
+  bool passed = false;
+  double t_s = 0;          // simulated time when it was decided
+  std::string actual;      // what was observed
+};
+
+struct FinalState {
+  State state = State::MotorOff;
+  double position_deg = 0;
+  uint8_t error_code = 0;
+  uint8_t warning_code = 0;
+  LedColor led = LedColor::Off;
+};
+
+struct RunResult {
+  std::string name;
+  bool passed = true;
+  bool stopped_early = false;        // stop_on_failure ended the run
+  std::vector<std::string> failures; // "step 4 (line 12): ..."
+  std::vector<CheckRecord> checks;
+  std::vector<MoveRecord> moves;
+  FinalState final_state;
+  double sim_time_s = 0;
+  uint64_t cycles = 0;
+  double max_tracking_error_deg = 0;
+  double max_temperature_C = 0;
+  double min_supply_V = 0;
+  double max_supply_V = 0;
+  std::vector<TraceRow> trace;        // with RunOptions::record_trace
+  std::vector<uint8_t> nvm_image;     // non-volatile memory at the end (--save-nvm)
+};
+
+struct RunOptions {
+  bool record_trace = false;
+  // Called after every IO-Link cycle (video frames, progress).
+  std::function<void(const Twin&)> on_cycle;
+};
+
+// The twin a scenario describes (load, world, supply, thermal, clocks, NVM).
+// Throws ScenarioError if the NVM image file cannot be read.
+TwinConfig make_twin_config(const Scenario& scenario);
+
+// Throws ScenarioError for input the twin rejects (e.g. an invalid MJCF
+// load), citing the scenario line.
+RunResult run_scenario(const Scenario& scenario, const RunOptions& options = {});
+
+} // namespace sreh

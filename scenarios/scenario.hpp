@@ -1,0 +1,180 @@
+// A scenario: a PLC program plus the world it runs in (interfaces.md
+// "Scenario files"), as plain structs. YAML stays in scenario_parser.cpp;
+// the runner only sees these values. Every element keeps where it came from
+// (file:line:col) so that failures can cite the scenario line.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "device_logic/device_types.hpp"
+#include "twin/twin.hpp"
+
+namespace sreh {
+
+// A position in a scenario file; line and column are 1-based (0: unknown).
+struct SourceLoc {
+  std::string file;
+  int line = 0;
+  int column = 0;
+  std::string str() const; // "FILE:LINE:COL" (or just FILE when unknown)
+};
+
+// Bad scenario input (exit code 2). what() is "FILE:LINE:COL: what is wrong".
+class ScenarioError : public std::runtime_error {
+ public:
+  ScenarioError(const SourceLoc& loc, const std::string& message);
+  const SourceLoc& where() const { return loc_; }
+  const std::string& message() const { return message_; } // without the location
+ private:
+  SourceLoc loc_;
+  std::string message_;
+};
+
+// A closed interval. A plain number in a scenario becomes [x - tol, x + tol]
+// with `exact` set (tol is 0 for integers, half a wire count for degrees).
+struct Range {
+  double min = 0;
+  double max = 0;
+  bool exact = false; // written as one number, not [min, max]
+  bool contains(double v) const { return v >= min && v <= max; }
+  std::string str() const; // "90" or "[89.9, 90.1]"
+};
+
+// What a PLC (process data in) or the world (LED band, sensors) shows at an
+// instant. Every present field must hold; `state` and `led` hold when the
+// value is any of the listed ones.
+struct Conditions {
+  std::vector<State> state;
+  std::optional<Range> position_deg;       // process data in, manual 2.5
+  std::optional<Range> position_raw;       // wire counts, 2^16 per revolution
+  std::optional<Range> error_code;         // bit field, manual 2.4
+  std::optional<Range> warning_code;
+  std::optional<bool> error;               // summary bits, manual 2.3
+  std::optional<bool> warning;
+  std::vector<LedColor> led;               // LED band, manual 3.1 / index 83
+  std::optional<Range> temperature_C;      // world side (twin telemetry)
+  std::optional<Range> supply_V;           // world side: motor voltage at the module
+  std::optional<Range> velocity_dps;       // world side
+  std::optional<Range> tracking_error_deg; // world side
+  bool empty() const;
+};
+
+// Process data out fields (manual 2.2); fields left out keep their value.
+struct PdStep {
+  std::optional<int32_t> target_raw; // target_deg is converted to wire counts by the parser
+  std::optional<uint8_t> parameter_set;
+  std::optional<bool> motor_on;
+  std::optional<bool> move;
+  std::optional<bool> stop;
+  std::optional<bool> reset_error;
+  std::optional<bool> set_origin;
+  std::optional<bool> relative;
+  std::optional<bool> shortest_path;
+};
+
+struct WaitStep { double duration_s = 0; };
+struct WaitUntilStep { Conditions until; double within_s = 0; };
+struct ExpectStep { Conditions check; };
+
+// Expected value of an ISDU read: a number / range (raw wire value decoded
+// with the parameter table's type) or a string.
+struct IsduValueCheck {
+  std::optional<Range> number;
+  std::optional<std::string> text;
+};
+
+struct IsduReadStep {
+  uint16_t index = 0;
+  uint8_t subindex = 0;
+  std::optional<IsduValueCheck> expect;
+  std::optional<uint16_t> expect_error; // the ISDU error code the device must answer
+};
+
+struct IsduWriteStep {
+  uint16_t index = 0;
+  uint8_t subindex = 0;
+  std::vector<uint8_t> data;            // encoded with the parameter table's type
+  std::string value_text;               // as written in the scenario, for messages
+  std::optional<uint16_t> expect_error; // absent: the write must succeed
+  SourceLoc loc;
+};
+
+struct TorqueStep { double torque_Nm = 0; std::optional<double> for_s; }; // no for_s: stays on
+struct SupplyStep { double voltage_V = 24; };
+struct LinkStep { double down_s = 0; };
+struct PdValidStep { bool valid = true; };
+struct PowerCycleStep {};
+struct CommentStep { std::string text; };
+
+struct Step;
+struct RepeatStep {
+  int times = 1;
+  std::vector<Step> steps;
+};
+
+using StepAction = std::variant<PdStep, WaitStep, WaitUntilStep, ExpectStep, IsduReadStep, IsduWriteStep,
+                                TorqueStep, SupplyStep, LinkStep, PdValidStep, PowerCycleStep, CommentStep,
+                                RepeatStep>;
+
+struct Step {
+  std::string number; // "3", or "5.2" inside a repeat
+  SourceLoc loc;
+  std::string kind;   // the YAML key: "pd", "wait_until", ...
+  std::string comment;
+  StepAction action;
+};
+
+// Checks over the whole run (the top-level `expect:`).
+enum class RunMetric {
+  MaxTrackingErrorDeg, // max |tracking error| over all cycles
+  Moves,               // number of executed move commands
+  MovesCompleted,      // of which reached Done
+  MaxTravelS,          // longest travel time of a move (manual 3.5.2 (1))
+  MaxSettlingS,        // longest settling time (2); a move that never settled counts as infinite
+  MaxPositioningS,     // longest positioning time (4)
+  MaxTemperatureC,
+  MinSupplyV,
+  MaxSupplyV,
+};
+
+struct RunCheck {
+  RunMetric metric;
+  std::string key;
+  Range range; // a plain number means "at most" for the max_* metrics, "exactly" for counts
+  SourceLoc loc;
+};
+
+struct DeviceSetup {
+  double supply_V = 24.0;
+  double ambient_C = 25.0;
+  double source_resistance_ohm = 0.0;
+  double bus_capacitance_F = 0.0;
+  std::optional<std::string> nvm_image_path; // resolved against the scenario's folder
+  SourceLoc nvm_image_loc;
+  std::vector<IsduWriteStep> isdu;          // acyclic writes at start-up
+};
+
+struct SimSetup {
+  double physics_dt_s = 1e-4;
+  double cycle_s = 0.002;
+  double thermal_time_scale = 1.0;
+};
+
+struct Scenario {
+  std::string file;
+  std::string name;
+  DeviceSetup device;
+  LoadSpec load = NoLoad{};
+  SourceLoc load_loc;
+  std::vector<HardStop> hard_stops;
+  SimSetup sim;
+  bool stop_on_failure = false; // default: a failed check is recorded and the run goes on
+  std::vector<Step> steps;
+  std::vector<RunCheck> expect;
+};
+
+} // namespace sreh

@@ -1,0 +1,458 @@
+// Scenario YAML -> plain structs. Every key is documented in
+// scenarios/README.md; every limit that the manual does not give is in
+// docs/assumptions/scenarios.md (A-SCN-*).
+#include "scenarios/scenario_parser.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include "device_logic/units.hpp"
+#include "scenarios/isdu_value.hpp"
+#include "scenarios/yaml_reader.hpp"
+
+namespace sreh {
+namespace {
+
+namespace fs = std::filesystem;
+using detail::YamlReader;
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// Half a wire count (manual 2.5): a plain position in degrees matches the nearest count.
+constexpr double kHalfWireCountDeg = 180.0 / static_cast<double>(kWireCountsPerRev);
+// The int32 wire range in degrees (manual 2.5: +-2^15 revolutions).
+constexpr double kWireLimitDeg = 32768.0 * 360.0;
+// A-SCN-1: plausibility limits of world inputs.
+constexpr double kMaxSupplyV = 40.0;
+constexpr double kMaxTorqueNm = 50.0;
+constexpr double kMaxDurationS = 3600.0;
+constexpr int kMaxRepeat = 100000;
+
+const std::vector<std::string_view> kConditionKeys = {
+    "state", "position_deg", "position_raw", "error_code", "warning_code", "error", "warning",
+    "led", "temperature_C", "supply_V", "velocity_dps", "tracking_error_deg"};
+
+const std::vector<std::string_view> kStepKinds = {
+    "pd", "wait_s", "wait_until", "expect", "isdu_read", "isdu_write", "torque", "supply",
+    "link", "pd_valid", "power", "comment", "repeat"};
+
+std::optional<State> state_from_name(const std::string& s) {
+  for (State st : {State::MotorOff, State::Ready, State::Busy, State::Done, State::ErrorOn, State::ErrorOff}) {
+    if (state_name(st) == s) return st;
+  }
+  return std::nullopt;
+}
+
+std::optional<LedColor> led_from_name(const std::string& s) {
+  for (LedColor c : {LedColor::Off, LedColor::Green, LedColor::Yellow, LedColor::Blue, LedColor::Red, LedColor::Orange,
+                     LedColor::White, LedColor::Violet}) {
+    if (led_name(c) == s) return c;
+  }
+  return std::nullopt;
+}
+
+class Parser {
+ public:
+  Parser(const std::string& file, std::string base_dir) : r_(file), base_dir_(std::move(base_dir)) {}
+
+  Scenario parse(const YAML::Node& root) {
+    r_.check_map(root, "scenario",
+                 {"name", "description", "device", "load", "world", "sim", "stop_on_failure", "steps", "expect"});
+    Scenario s;
+    s.file = r_.file();
+    s.name = r_.text(r_.require(root, "name", "scenario"), "name");
+    if (root["device"]) parse_device(root["device"], s.device);
+    if (root["load"]) {
+      s.load_loc = r_.loc(root["load"]);
+      s.load = parse_load(root["load"]);
+    }
+    if (root["world"]) s.hard_stops = parse_world(root["world"]);
+    if (root["sim"]) s.sim = parse_sim(root["sim"]);
+    if (root["stop_on_failure"]) s.stop_on_failure = r_.boolean(root["stop_on_failure"], "stop_on_failure");
+    const YAML::Node steps = r_.require(root, "steps", "scenario");
+    s.steps = parse_steps(steps, "", "steps");
+    if (root["expect"]) s.expect = parse_run_expect(root["expect"]);
+    return s;
+  }
+
+ private:
+  // ---- world and configuration ----
+  void parse_device(const YAML::Node& n, DeviceSetup& d) {
+    r_.check_map(n, "device", {"supply_V", "ambient_C", "source_resistance_ohm", "bus_capacitance_F", "nvm_image", "isdu"});
+    if (n["supply_V"]) d.supply_V = r_.number(n["supply_V"], "device.supply_V", 0.0, kMaxSupplyV);
+    if (n["ambient_C"]) d.ambient_C = r_.number(n["ambient_C"], "device.ambient_C", -40.0, 100.0);
+    if (n["source_resistance_ohm"]) {
+      d.source_resistance_ohm = r_.number(n["source_resistance_ohm"], "device.source_resistance_ohm", 0.0, 1000.0);
+    }
+    if (n["bus_capacitance_F"]) d.bus_capacitance_F = r_.number(n["bus_capacitance_F"], "device.bus_capacitance_F", 0.0, 10.0);
+    if (n["nvm_image"]) {
+      d.nvm_image_loc = r_.loc(n["nvm_image"]);
+      d.nvm_image_path = existing_file(n["nvm_image"], "device.nvm_image", false);
+    }
+    if (n["isdu"]) {
+      const YAML::Node list = n["isdu"];
+      if (!list.IsSequence()) r_.fail(list, "device.isdu: expected a list of {index, subindex, value}");
+      for (std::size_t i = 0; i < list.size(); ++i) {
+        d.isdu.push_back(parse_isdu_write(list[i], fmt::format("device.isdu[{}]", i)));
+      }
+    }
+  }
+
+  LoadSpec parse_load(const YAML::Node& n) {
+    r_.check_map(n, "load", {"disk", "ring", "box", "arm", "mjcf", "inertia_gcm2", "none"});
+    if (n.size() != 1) r_.fail(n, "load: give exactly one of disk, ring, box, arm, mjcf, inertia_gcm2, none");
+    const std::string kind = n.begin()->first.Scalar();
+    const YAML::Node v = n.begin()->second;
+    const std::string what = "load." + kind;
+    auto mass = [&](const YAML::Node& m) { return r_.number(r_.require(m, "mass_kg", what), what + ".mass_kg", 1e-6, 100.0); };
+    auto length = [&](const YAML::Node& m, const char* key, double min) {
+      return r_.number(r_.require(m, key, what), fmt::format("{}.{}", what, key), min, 10.0);
+    };
+    if (kind == "disk") {
+      r_.check_map(v, what, {"mass_kg", "radius_m", "thickness_m"});
+      DiskLoad d{mass(v), length(v, "radius_m", 1e-6)};
+      if (v["thickness_m"]) d.thickness_m = length(v, "thickness_m", 1e-6);
+      return d;
+    }
+    if (kind == "ring") {
+      r_.check_map(v, what, {"mass_kg", "inner_radius_m", "outer_radius_m", "thickness_m"});
+      RingLoad g{mass(v), length(v, "inner_radius_m", 0.0), length(v, "outer_radius_m", 1e-6)};
+      if (g.inner_radius_m >= g.outer_radius_m) r_.fail(v["inner_radius_m"], what + ": inner_radius_m must be below outer_radius_m");
+      if (v["thickness_m"]) g.thickness_m = length(v, "thickness_m", 1e-6);
+      return g;
+    }
+    if (kind == "box") {
+      r_.check_map(v, what, {"mass_kg", "x_m", "y_m", "z_m"});
+      return BoxLoad{mass(v), length(v, "x_m", 1e-6), length(v, "y_m", 1e-6), length(v, "z_m", 1e-6)};
+    }
+    if (kind == "arm") {
+      r_.check_map(v, what, {"mass_kg", "radius_m", "arm_mass_kg"});
+      ArmLoad a{mass(v), length(v, "radius_m", 0.0)};
+      if (v["arm_mass_kg"]) a.arm_mass_kg = r_.number(v["arm_mass_kg"], what + ".arm_mass_kg", 0.0, 100.0);
+      return a;
+    }
+    if (kind == "mjcf") return MjcfLoad{existing_file(v, what, true)};
+    if (kind == "none") {
+      if (!v.IsNull() && !(v.IsScalar() && r_.boolean(v, what))) r_.fail(v, "load.none: write 'none: true' or leave load out");
+      return NoLoad{};
+    }
+    // inertia_gcm2; the manual's parameter range is 0..15000 (6.2, 64.4), the physics allows more.
+    return InertiaLoad{r_.number(v, what, 0.0, 1e6)};
+  }
+
+  std::vector<HardStop> parse_world(const YAML::Node& n) {
+    r_.check_map(n, "world", {"hard_stops"});
+    std::vector<HardStop> stops;
+    if (const YAML::Node list = n["hard_stops"]) {
+      if (!list.IsSequence()) r_.fail(list, "world.hard_stops: expected a list of {angle_deg: A}");
+      for (std::size_t i = 0; i < list.size(); ++i) {
+        const std::string what = fmt::format("world.hard_stops[{}]", i);
+        r_.check_map(list[i], what, {"angle_deg"});
+        stops.push_back(HardStop{r_.number(r_.require(list[i], "angle_deg", what), what + ".angle_deg", -720.0, 720.0)});
+      }
+    }
+    return stops;
+  }
+
+  SimSetup parse_sim(const YAML::Node& n) {
+    r_.check_map(n, "sim", {"physics_dt_s", "cycle_s", "thermal_time_scale"});
+    SimSetup s;
+    if (n["physics_dt_s"]) s.physics_dt_s = r_.number(n["physics_dt_s"], "sim.physics_dt_s", 1e-6, 1e-3);
+    // manual 1: minimum IO-Link cycle time 2 ms.
+    if (n["cycle_s"]) s.cycle_s = r_.number(n["cycle_s"], "sim.cycle_s", 0.002, 1.0);
+    const double ratio = s.cycle_s / s.physics_dt_s;
+    if (std::abs(ratio - std::round(ratio)) > 1e-6) {
+      r_.fail(n["cycle_s"] ? n["cycle_s"] : n["physics_dt_s"],
+              fmt::format("sim: cycle_s {} must be an integer multiple of physics_dt_s {}", s.cycle_s, s.physics_dt_s));
+    }
+    if (n["thermal_time_scale"]) s.thermal_time_scale = r_.number(n["thermal_time_scale"], "sim.thermal_time_scale", 1.0, 1e6);
+    return s;
+  }
+
+  // A file that must exist; relative to the scenario's folder, or (models/...)
+  // to the project's models folder.
+  std::string existing_file(const YAML::Node& n, const std::string& what, bool allow_models_dir) {
+    const std::string p = r_.text(n, what);
+    if (p.empty()) r_.fail(n, what + ": empty path");
+    std::vector<fs::path> tried;
+    const fs::path given(p);
+    tried.push_back(given.is_absolute() || base_dir_.empty() ? given : fs::path(base_dir_) / given);
+#ifdef SREH_MODELS_DIR
+    if (allow_models_dir && !given.is_absolute() && p.rfind("models/", 0) == 0) {
+      tried.push_back(fs::path(SREH_MODELS_DIR).parent_path() / given);
+    }
+#else
+    (void)allow_models_dir;
+#endif
+    for (const auto& t : tried) {
+      std::error_code ec;
+      if (fs::is_regular_file(t, ec)) return t.lexically_normal().string();
+    }
+    r_.fail(n, fmt::format("{}: file '{}' not found (looked for {})", what, p, tried.front().lexically_normal().string()));
+  }
+
+  // ---- steps ----
+  std::vector<Step> parse_steps(const YAML::Node& n, const std::string& prefix, std::string_view what) {
+    if (!n.IsSequence()) r_.fail(n, fmt::format("{}: expected a list of steps", what));
+    if (n.size() == 0) r_.fail(n, fmt::format("{}: no steps", what));
+    std::vector<Step> steps;
+    for (std::size_t i = 0; i < n.size(); ++i) {
+      steps.push_back(parse_step(n[i], prefix + std::to_string(i + 1)));
+    }
+    return steps;
+  }
+
+  Step parse_step(const YAML::Node& n, const std::string& number) {
+    const std::string what = "step " + number;
+    std::vector<std::string_view> allowed = kStepKinds;
+    r_.check_map(n, what, allowed);
+    Step step;
+    step.number = number;
+    step.loc = r_.loc(n);
+    int actions = 0;
+    YAML::Node v;
+    for (const auto& kv : n) {
+      const std::string key = kv.first.Scalar();
+      if (key == "comment" && n.size() > 1) continue; // a remark next to an action
+      ++actions;
+      step.kind = key;
+      v = kv.second;
+    }
+    if (actions != 1) r_.fail(n, fmt::format("{}: one action per step (got {})", what, actions));
+    if (step.kind != "comment" && n["comment"]) step.comment = r_.text(n["comment"], what + ".comment");
+    const std::string kw = what + ": " + step.kind;
+    const std::string& k = step.kind;
+    if (k == "pd") step.action = parse_pd(v, kw);
+    else if (k == "wait_s") step.action = WaitStep{r_.number(v, kw, 0.0, kMaxDurationS)};
+    else if (k == "wait_until") step.action = parse_wait_until(v, kw);
+    else if (k == "expect") {
+      r_.check_map(v, kw, kConditionKeys);
+      ExpectStep e{parse_conditions(v, kw)};
+      if (e.check.empty()) r_.fail(v, kw + ": nothing to check");
+      step.action = e;
+    } else if (k == "isdu_read") step.action = parse_isdu_read(v, kw);
+    else if (k == "isdu_write") step.action = parse_isdu_write(v, kw);
+    else if (k == "torque") {
+      r_.check_map(v, kw, {"Nm", "for_s"});
+      TorqueStep t{r_.number(r_.require(v, "Nm", kw), kw + ".Nm", -kMaxTorqueNm, kMaxTorqueNm), std::nullopt};
+      if (v["for_s"]) t.for_s = r_.number(v["for_s"], kw + ".for_s", 0.0, kMaxDurationS);
+      step.action = t;
+    } else if (k == "supply") {
+      r_.check_map(v, kw, {"V"});
+      step.action = SupplyStep{r_.number(r_.require(v, "V", kw), kw + ".V", 0.0, kMaxSupplyV)};
+    } else if (k == "link") {
+      r_.check_map(v, kw, {"down_s"});
+      step.action = LinkStep{r_.number(r_.require(v, "down_s", kw), kw + ".down_s", 0.0, kMaxDurationS)};
+    } else if (k == "pd_valid") step.action = PdValidStep{r_.boolean(v, kw)};
+    else if (k == "power") {
+      if (r_.text(v, kw) != "cycle") r_.fail(v, fmt::format("{}: only 'cycle' is known, got '{}'", kw, v.Scalar()));
+      step.action = PowerCycleStep{};
+    } else if (k == "comment") step.action = CommentStep{r_.text(v, kw)};
+    else { // repeat
+      r_.check_map(v, kw, {"times", "steps"});
+      RepeatStep rep;
+      rep.times = static_cast<int>(r_.integer(r_.require(v, "times", kw), kw + ".times", 1, kMaxRepeat));
+      rep.steps = parse_steps(r_.require(v, "steps", kw), number + ".", kw + ".steps");
+      step.action = std::move(rep);
+    }
+    return step;
+  }
+
+  PdStep parse_pd(const YAML::Node& n, const std::string& what) {
+    r_.check_map(n, what, {"target_deg", "target_raw", "parameter_set", "motor_on", "move", "stop", "reset_error",
+                           "set_origin", "relative", "shortest_path"});
+    PdStep pd;
+    if (n["target_deg"] && n["target_raw"]) r_.fail(n["target_raw"], what + ": give target_deg or target_raw, not both");
+    if (n["target_deg"]) {
+      const double deg = r_.number(n["target_deg"], what + ".target_deg", -kWireLimitDeg, kWireLimitDeg);
+      const int64_t counts = deg_to_wire_counts(deg);
+      if (counts < std::numeric_limits<int32_t>::min() || counts > std::numeric_limits<int32_t>::max()) {
+        r_.fail(n["target_deg"], fmt::format("{}.target_deg: {} deg does not fit the int32 wire position (manual 2.5)", what, deg));
+      }
+      pd.target_raw = static_cast<int32_t>(counts);
+    }
+    if (n["target_raw"]) {
+      pd.target_raw = static_cast<int32_t>(r_.integer(n["target_raw"], what + ".target_raw",
+                                                      std::numeric_limits<int32_t>::min(),
+                                                      std::numeric_limits<int32_t>::max()));
+    }
+    // The wire carries a uint8 (manual 2.2); 8..255 are sent, the device rejects them (7.2, 114.7 code 2).
+    if (n["parameter_set"]) pd.parameter_set = static_cast<uint8_t>(r_.integer(n["parameter_set"], what + ".parameter_set", 0, 255));
+    auto bit = [&](const char* key, std::optional<bool>& out) {
+      if (n[key]) out = r_.boolean(n[key], fmt::format("{}.{}", what, key));
+    };
+    bit("motor_on", pd.motor_on);
+    bit("move", pd.move);
+    bit("stop", pd.stop);
+    bit("reset_error", pd.reset_error);
+    bit("set_origin", pd.set_origin);
+    bit("relative", pd.relative);
+    bit("shortest_path", pd.shortest_path);
+    return pd;
+  }
+
+  WaitUntilStep parse_wait_until(const YAML::Node& n, const std::string& what) {
+    std::vector<std::string_view> keys = kConditionKeys;
+    keys.push_back("within_s");
+    r_.check_map(n, what, keys);
+    WaitUntilStep w;
+    w.within_s = r_.number(r_.require(n, "within_s", what), what + ".within_s", 0.0, kMaxDurationS);
+    w.until = parse_conditions(n, what);
+    if (w.until.empty()) r_.fail(n, what + ": no condition to wait for");
+    return w;
+  }
+
+  Conditions parse_conditions(const YAML::Node& n, const std::string& what) {
+    Conditions c;
+    auto names = [&](const char* key, auto from_name, auto& out, const char* known) {
+      const YAML::Node v = n[key];
+      if (!v) return;
+      const std::string kw = fmt::format("{}.{}", what, key);
+      auto one = [&](const YAML::Node& x) {
+        const auto parsed = from_name(r_.text(x, kw));
+        if (!parsed) r_.fail(x, fmt::format("{}: unknown '{}' (known: {})", kw, x.Scalar(), known));
+        out.push_back(*parsed);
+      };
+      if (v.IsSequence()) {
+        if (v.size() == 0) r_.fail(v, kw + ": empty list");
+        for (const auto& x : v) one(x);
+      } else {
+        one(v);
+      }
+    };
+    names("state", state_from_name, c.state, "MotorOff, Ready, Busy, Done, ErrorOn, ErrorOff");
+    names("led", led_from_name, c.led, "off, green, yellow, blue, red, orange, white, violet");
+    auto num = [&](const char* key, std::optional<Range>& out, double min, double max, bool ints, double tol) {
+      if (n[key]) out = r_.range(n[key], fmt::format("{}.{}", what, key), min, max, ints, tol);
+    };
+    if (n["position_deg"] && n["position_raw"]) r_.fail(n["position_raw"], what + ": give position_deg or position_raw, not both");
+    num("position_deg", c.position_deg, -kWireLimitDeg, kWireLimitDeg, false, kHalfWireCountDeg);
+    num("position_raw", c.position_raw, std::numeric_limits<int32_t>::min(), std::numeric_limits<int32_t>::max(), true, 0);
+    num("error_code", c.error_code, 0, 255, true, 0);
+    num("warning_code", c.warning_code, 0, 255, true, 0);
+    num("temperature_C", c.temperature_C, -100, 300, false, 0);
+    num("supply_V", c.supply_V, 0, 100, false, 0);
+    num("velocity_dps", c.velocity_dps, -1e6, 1e6, false, 0);
+    num("tracking_error_deg", c.tracking_error_deg, -1e6, 1e6, false, 0);
+    if (n["error"]) c.error = r_.boolean(n["error"], what + ".error");
+    if (n["warning"]) c.warning = r_.boolean(n["warning"], what + ".warning");
+    return c;
+  }
+
+  uint16_t isdu_error_code(const YAML::Node& n, const std::string& what) {
+    // ISDU error codes are 0x8000..0x80FF (iolink.md); 0 would mean success.
+    return static_cast<uint16_t>(r_.integer(n, what, 0x8000, 0x80FF));
+  }
+
+  IsduReadStep parse_isdu_read(const YAML::Node& n, const std::string& what) {
+    r_.check_map(n, what, {"index", "subindex", "expect", "expect_error"});
+    IsduReadStep s;
+    s.index = static_cast<uint16_t>(r_.integer(r_.require(n, "index", what), what + ".index", 0, 0xFFFF));
+    if (n["subindex"]) s.subindex = static_cast<uint8_t>(r_.integer(n["subindex"], what + ".subindex", 0, 0xFF));
+    if (n["expect"] && n["expect_error"]) r_.fail(n["expect_error"], what + ": give expect or expect_error, not both");
+    if (n["expect_error"]) s.expect_error = isdu_error_code(n["expect_error"], what + ".expect_error");
+    if (const YAML::Node e = n["expect"]) {
+      IsduValueCheck check;
+      if (detail::is_text_parameter(s.index, s.subindex) || (e.IsScalar() && r_.is_quoted(e))) {
+        check.text = r_.text(e, what + ".expect");
+      } else {
+        check.number = r_.range(e, what + ".expect", -4294967296.0, 4294967295.0, true, 0);
+      }
+      s.expect = check;
+    }
+    return s;
+  }
+
+  IsduWriteStep parse_isdu_write(const YAML::Node& n, const std::string& what) {
+    r_.check_map(n, what, {"index", "subindex", "value", "bytes", "expect_error"});
+    IsduWriteStep s;
+    s.loc = r_.loc(n);
+    s.index = static_cast<uint16_t>(r_.integer(r_.require(n, "index", what), what + ".index", 0, 0xFFFF));
+    if (n["subindex"]) s.subindex = static_cast<uint8_t>(r_.integer(n["subindex"], what + ".subindex", 0, 0xFF));
+    if (n["value"] && n["bytes"]) r_.fail(n["bytes"], what + ": give value or bytes, not both");
+    if (n["value"]) {
+      s.data = detail::encode_isdu_value(r_, n["value"], s.index, s.subindex, what + ".value");
+      s.value_text = YAML::Dump(n["value"]);
+    } else if (const YAML::Node b = n["bytes"]) {
+      // Raw octets: for length errors (0x8033 / 0x8034) and octet strings.
+      if (!b.IsSequence()) r_.fail(b, what + ".bytes: expected a list of octets");
+      for (const auto& x : b) s.data.push_back(static_cast<uint8_t>(r_.integer(x, what + ".bytes", 0, 255)));
+      s.value_text = YAML::Dump(b);
+    } else {
+      r_.fail(n, what + ": missing required key 'value' (or 'bytes')");
+    }
+    if (n["expect_error"]) s.expect_error = isdu_error_code(n["expect_error"], what + ".expect_error");
+    return s;
+  }
+
+  // ---- whole-run checks ----
+  std::vector<RunCheck> parse_run_expect(const YAML::Node& n) {
+    struct Key { std::string_view name; RunMetric metric; char plain; }; // plain: '<' at most, '>' at least, '=' exactly
+    static const Key keys[] = {
+        {"max_tracking_error_deg", RunMetric::MaxTrackingErrorDeg, '<'},
+        {"moves", RunMetric::Moves, '='},
+        {"moves_completed", RunMetric::MovesCompleted, '='},
+        {"max_travel_s", RunMetric::MaxTravelS, '<'},
+        {"max_settling_s", RunMetric::MaxSettlingS, '<'},
+        {"max_positioning_s", RunMetric::MaxPositioningS, '<'},
+        {"max_temperature_C", RunMetric::MaxTemperatureC, '<'},
+        {"min_supply_V", RunMetric::MinSupplyV, '>'},
+        {"max_supply_V", RunMetric::MaxSupplyV, '<'},
+    };
+    std::vector<std::string_view> allowed;
+    for (const auto& k : keys) allowed.push_back(k.name);
+    r_.check_map(n, "expect", allowed);
+    std::vector<RunCheck> checks;
+    for (const auto& kv : n) {
+      const std::string name = kv.first.Scalar();
+      for (const auto& k : keys) {
+        if (k.name != name) continue;
+        const std::string what = "expect." + name;
+        const bool counts = k.plain == '=';
+        Range r = r_.range(kv.second, what, counts ? 0 : -1e6, counts ? 1e6 : 1e6, counts, 0);
+        if (r.exact && k.plain == '<') r = Range{-kInf, r.max, false};
+        if (r.exact && k.plain == '>') r = Range{r.min, kInf, false};
+        checks.push_back(RunCheck{k.metric, name, r, r_.loc(kv.second)});
+      }
+    }
+    return checks;
+  }
+
+  YamlReader r_;
+  std::string base_dir_;
+};
+
+} // namespace
+
+Scenario parse_scenario_text(const std::string& yaml_text, const std::string& file, const std::string& base_dir) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml_text);
+  } catch (const YAML::Exception& e) {
+    SourceLoc loc{file, e.mark.is_null() ? 0 : e.mark.line + 1, e.mark.is_null() ? 0 : e.mark.column + 1};
+    throw ScenarioError(loc, "YAML syntax: " + e.msg);
+  }
+  if (!root.IsDefined() || root.IsNull()) throw ScenarioError(SourceLoc{file, 1, 1}, "empty scenario (expected name, steps, ...)");
+  try {
+    return Parser(file, base_dir).parse(root);
+  } catch (const YAML::Exception& e) { // a yaml-cpp conversion the checks above did not foresee
+    SourceLoc loc{file, e.mark.is_null() ? 0 : e.mark.line + 1, e.mark.is_null() ? 0 : e.mark.column + 1};
+    throw ScenarioError(loc, e.msg);
+  }
+}
+
+Scenario parse_scenario_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ScenarioError(SourceLoc{path, 0, 0}, "cannot open the scenario file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  const fs::path parent = fs::path(path).parent_path();
+  return parse_scenario_text(text.str(), path, parent.string());
+}
+
+} // namespace sreh

@@ -1,0 +1,20 @@
+// YAML -> Scenario (style.md 13: strict loading at the edge). Unknown keys,
+// wrong types, out-of-range values, missing files: ScenarioError with
+// "FILE:LINE:COL: what is wrong". Key reference: scenarios/README.md.
+#pragma once
+#include <string>
+
+#include "scenarios/scenario.hpp"
+
+namespace sreh {
+
+// Reads and parses a scenario file. Relative paths inside it (MJCF loads,
+// NVM images) are resolved against the file's folder.
+Scenario parse_scenario_file(const std::string& path);
+
+// Parses YAML text; `file` names it in messages, `base_dir` resolves
+// relative paths ("" = current directory).
+Scenario parse_scenario_text(const std::string& yaml_text, const std::string& file,
+                             const std::string& base_dir);
+
+} // namespace sreh

@@ -1,0 +1,91 @@
+#include "scenarios/snapshot.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "device_logic/units.hpp"
+
+namespace sreh {
+
+State state_from_status_bits(const ProcessDataIn& in, State fallback) {
+  // Manual 3.1 table: Error with Motor Off is Error (Off), without it Error (On).
+  if (in.error) return in.motor_off ? State::ErrorOff : State::ErrorOn;
+  if (in.motor_off) return State::MotorOff;
+  if (in.ready) return State::Ready;
+  if (in.busy) return State::Busy;
+  if (in.done) return State::Done;
+  return fallback;
+}
+
+Snapshot take_snapshot(const Twin& twin) {
+  Snapshot s;
+  s.t_s = twin.time_s();
+  s.in = twin.pd_in();
+  s.telemetry = twin.telemetry();
+  s.state = state_from_status_bits(s.in, s.telemetry.state);
+  s.position_deg = wire_counts_to_deg(s.in.actual_position);
+  return s;
+}
+
+namespace {
+
+class Evaluator {
+ public:
+  void number(const char* name, const std::optional<Range>& want, double actual, int decimals) {
+    if (!want) return;
+    add(name, want->str(), fmt::format("{:.{}f}", actual, decimals), want->contains(actual));
+  }
+  void flag(const char* name, const std::optional<bool>& want, bool actual) {
+    if (!want) return;
+    add(name, *want ? "1" : "0", actual ? "1" : "0", *want == actual);
+  }
+  template <typename T, typename NameOf>
+  void one_of(const char* name, const std::vector<T>& want, T actual, NameOf name_of) {
+    if (want.empty()) return;
+    std::string w;
+    for (T x : want) {
+      if (!w.empty()) w += '|';
+      w += name_of(x);
+    }
+    add(name, w, std::string(name_of(actual)), std::find(want.begin(), want.end(), actual) != want.end());
+  }
+  Evaluation result() { return std::move(e_); }
+
+ private:
+  void add(const char* name, const std::string& want, const std::string& actual, bool ok) {
+    auto append = [](std::string& to, const std::string& what) {
+      if (!to.empty()) to += ", ";
+      to += what;
+    };
+    append(e_.expected, fmt::format("{} {}", name, want));
+    append(e_.actual, fmt::format("{} {}", name, actual));
+    if (!ok) {
+      e_.passed = false;
+      append(e_.mismatch, fmt::format("{} {} (want {})", name, actual, want));
+    }
+  }
+  Evaluation e_;
+};
+
+} // namespace
+
+Evaluation evaluate(const Conditions& c, const Snapshot& s) {
+  Evaluator ev;
+  ev.one_of("state", c.state, s.state, state_name);
+  ev.number("position_deg", c.position_deg, s.position_deg, 4);
+  ev.number("position_raw", c.position_raw, static_cast<double>(s.in.actual_position), 0);
+  ev.number("error_code", c.error_code, s.in.error_code, 0);
+  ev.number("warning_code", c.warning_code, s.in.warning_code, 0);
+  ev.flag("error", c.error, s.in.error);
+  ev.flag("warning", c.warning, s.in.warning);
+  ev.one_of("led", c.led, s.telemetry.led, led_name);
+  ev.number("temperature_C", c.temperature_C, s.telemetry.temperature_C, 2);
+  ev.number("supply_V", c.supply_V, s.telemetry.supply_V, 3);
+  ev.number("velocity_dps", c.velocity_dps, s.telemetry.velocity_dps, 2);
+  ev.number("tracking_error_deg", c.tracking_error_deg, s.telemetry.tracking_error_deg, 4);
+  return ev.result();
+}
+
+} // namespace sreh
