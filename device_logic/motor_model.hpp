@@ -11,16 +11,20 @@
 namespace sreh {
 
 struct MotorModel {
-  // A-MOTOR-1: back-EMF / torque constant. No-load speed at 24 V = 24 / ke
-  // = 94.25 rad/s = 5400 deg/s, so 4300 deg/s is reachable at 24 V with torque
-  // to spare, and at 19 V the no-load speed (4275 deg/s) is below 4300.
-  double torque_constant_Nm_per_A = 24.0 / deg_to_rad(5400.0);
-  // A-MOTOR-2: winding resistance, chosen so that the full peak torque is
-  // available up to 3000 deg/s (the default speed) at 24 V.
-  double winding_resistance_ohm = 4.53;
+  // A-MOTOR-1: back-EMF / torque constant (flange side). No-load speed
+  // 24 V / ke = 4500 deg/s at 24 V and proportional to the voltage below
+  // (manual 3.5.3): 4300 deg/s is reachable at 24 V with 5 % speed margin,
+  // and at 19 V no speed above 3560 deg/s is.
+  double torque_constant_Nm_per_A = 24.0 / deg_to_rad(4500.0);
+  // A-MOTOR-2: winding resistance, chosen so that the full peak torque
+  // (A-MOTOR-3) is still available at 4300 deg/s and 24 V: the maximum
+  // setting works with torque to spare for control at any load. At 19 V the
+  // rated M = 0.485 N m (alpha100%) is then available up to ~3400 deg/s
+  // = 4300 x 19 / 24, the manual's proportional speed (3.5.3).
+  double winding_resistance_ohm = (24.0 / deg_to_rad(4500.0)) * (24.0 - 24.0 * 4300.0 / 4500.0) / 0.60;
   // A-MOTOR-3: current limit of the output stage; peak torque 0.60 N m, i.e.
   // 24 % above M so the controller keeps headroom at full acceleration.
-  double current_limit_A = 0.60 / (24.0 / deg_to_rad(5400.0));
+  double current_limit_A = 0.60 / (24.0 / deg_to_rad(4500.0));
 
   double peak_torque_Nm() const { return torque_constant_Nm_per_A * current_limit_A; }
 
