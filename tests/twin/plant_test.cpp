@@ -1,0 +1,146 @@
+// The MuJoCo plant (issue 5): encoder, torque paths, hard stops, the
+// physical motor limit, renderer hooks.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "device_logic/units.hpp"
+#include "twin/plant.hpp"
+
+namespace sreh {
+namespace {
+
+PlantConfig config_with(LoadSpec load) {
+  PlantConfig c;
+  c.load = std::move(load);
+  return c;
+}
+
+void run(Plant& plant, const MotorCommand& cmd, int steps) {
+  for (int i = 0; i < steps; ++i) plant.step(cmd);
+}
+
+void set_angle(Plant& plant, double angle_rad) {
+  plant.data()->qpos[0] = angle_rad;
+  plant.data()->qvel[0] = 0;
+  mj_forward(plant.model(), plant.data());
+}
+
+TEST(Plant, ModelLoadsWithNamedElements) {
+  Plant plant(PlantConfig{});
+  EXPECT_GE(mj_name2id(plant.model(), mjOBJ_GEOM, "led_band"), 0);
+  EXPECT_GE(mj_name2id(plant.model(), mjOBJ_BODY, "setpoint_ghost"), 0);
+  EXPECT_GE(mj_name2id(plant.model(), mjOBJ_ACTUATOR, "motor"), 0);
+  EXPECT_EQ(plant.model()->vis.global.offwidth, 1280);
+  EXPECT_EQ(plant.model()->vis.global.offheight, 720);
+  EXPECT_EQ(plant.model()->opt.integrator, mjINT_EULER);
+  EXPECT_EQ(plant.sensors().encoder_counts, 0);
+  EXPECT_EQ(plant.sensors().supply_V, 24.0);
+  EXPECT_EQ(plant.sensors().temperature_C, 25.0);
+}
+
+// Architecture "Units and encodings": 2^19 counts per revolution, multiturn.
+TEST(Plant, EncoderQuantisesTo2Pow19PerRevolution_Manual6_2) {
+  Plant plant(PlantConfig{});
+  const double angles[] = {0.0, 1e-6, 0.5 * 2 * kPi / 524288.0 * 0.999, 1.2345, -0.75, 3 * 2 * kPi + 0.1, -5 * 2 * kPi - 2.0};
+  for (double q : angles) {
+    set_angle(plant, q);
+    plant.step(MotorCommand{}); // at rest, bearing friction holds it
+    EXPECT_EQ(plant.sensors().encoder_counts, std::llround(plant.angle_rad() * 524288.0 / (2 * kPi))) << q;
+    EXPECT_NEAR(internal_counts_to_rad(plant.sensors().encoder_counts), q, kPi / 524288.0 + 1e-12) << q;
+  }
+  set_angle(plant, 3 * 2 * kPi + 0.1);
+  plant.step(MotorCommand{});
+  EXPECT_GT(plant.sensors().encoder_counts, 3 * kInternalCountsPerRev); // never wrapped
+}
+
+// External torque accelerates the flange as (T - bearing friction) / J.
+TEST(Plant, ExternalTorqueAcceleratesAsTOverJ) {
+  Plant plant(config_with(InertiaLoad{5000}));
+  const double j = plant.axis_inertia_kgm2();
+  EXPECT_NEAR(j, kInternalInertia_kgm2 + gcm2_to_kgm2(5000), 1e-12);
+  const double torque = 0.1;
+  const double friction = plant.model()->dof_frictionloss[0];
+  plant.set_external_torque(torque);
+  run(plant, MotorCommand{}, 1000); // 0.1 s
+  const double expected_v = (torque - friction) / j * 0.1;
+  EXPECT_NEAR(plant.velocity_rad_s(), expected_v, 0.005 * expected_v);
+  EXPECT_GT(plant.sensors().encoder_counts, 0); // positive torque = positive (clockwise) angle
+  EXPECT_EQ(plant.applied_torque_Nm(), 0.0);
+}
+
+TEST(Plant, MotorTorqueIsClampedToTheMotorsCapability) {
+  Plant plant(PlantConfig{});
+  plant.step(MotorCommand{5.0, true});
+  EXPECT_DOUBLE_EQ(plant.applied_torque_Nm(), plant.motor().peak_torque_Nm());
+  plant.step(MotorCommand{5.0, false}); // output stage off: no torque
+  EXPECT_EQ(plant.applied_torque_Nm(), 0.0);
+  // At high speed the back-EMF limits motoring torque (manual 3.5.3).
+  set_angle(plant, 0);
+  plant.data()->qvel[0] = deg_to_rad(5000.0);
+  plant.step(MotorCommand{0.485, true});
+  EXPECT_LT(plant.applied_torque_Nm(), 0.2);
+  EXPECT_NEAR(plant.applied_torque_Nm(), plant.motor().max_torque_Nm(deg_to_rad(5000.0), 24.0, 1.0), 1e-12);
+}
+
+TEST(Plant, MotorTorqueFollowsItsSign) {
+  Plant plant(config_with(DiskLoad{0.3, 0.05, 0.01}));
+  run(plant, MotorCommand{-0.2, true}, 500);
+  EXPECT_LT(plant.velocity_rad_s(), 0);
+  EXPECT_LT(plant.sensors().encoder_counts, 0);
+}
+
+TEST(Plant, HardStopBlocksTheFlangeAtItsAngle) {
+  PlantConfig c = config_with(InertiaLoad{2000});
+  c.hard_stops = {HardStop{30.0}, HardStop{-45.0}};
+  Plant plant(c);
+  run(plant, MotorCommand{0.485, true}, 5000); // 0.5 s at full torque: would be far beyond 30 deg
+  EXPECT_NEAR(rad_to_deg(plant.angle_rad()), 30.0, 0.1);
+  EXPECT_NEAR(plant.velocity_rad_s(), 0.0, 1e-3);
+  run(plant, MotorCommand{-0.485, true}, 8000);
+  EXPECT_NEAR(rad_to_deg(plant.angle_rad()), -45.0, 0.1);
+}
+
+TEST(Plant, WithoutHardStopsTheFlangeTurnsFreely) {
+  Plant plant(config_with(InertiaLoad{2000}));
+  run(plant, MotorCommand{0.485, true}, 5000);
+  EXPECT_GT(rad_to_deg(plant.angle_rad()), 360.0);
+}
+
+TEST(Plant, RendererHooksSetLedColourAndGhostAngle) {
+  Plant plant(PlantConfig{});
+  plant.set_led_rgba(led_rgba(LedColor::Green));
+  const int led = mj_name2id(plant.model(), mjOBJ_GEOM, "led_band");
+  EXPECT_FLOAT_EQ(plant.model()->geom_rgba[4 * led + 1], led_rgba(LedColor::Green)[1]);
+  plant.set_ghost_angle(kPi / 2); // 90 deg clockwise from above: the +x pointer turns to -y
+  mj_forward(plant.model(), plant.data());
+  const int ghost_tip = mj_name2id(plant.model(), mjOBJ_GEOM, "ghost_tip");
+  EXPECT_NEAR(plant.data()->geom_xpos[3 * ghost_tip + 0], 0.0, 1e-9);
+  EXPECT_LT(plant.data()->geom_xpos[3 * ghost_tip + 1], -0.04);
+}
+
+TEST(Plant, FlangeMarkTurnsClockwiseSeenFromAbove_Manual4_2) {
+  Plant plant(PlantConfig{});
+  set_angle(plant, kPi / 2);
+  const int mark = mj_name2id(plant.model(), mjOBJ_GEOM, "mark");
+  EXPECT_LT(plant.data()->geom_xpos[3 * mark + 1], -0.01); // +x turned to -y: clockwise from above
+}
+
+TEST(Plant, NanTorqueIsAFatalError) {
+  Plant plant(PlantConfig{});
+  plant.set_external_torque(std::nan(""));
+  EXPECT_THROW(plant.step(MotorCommand{}), std::runtime_error);
+  EXPECT_THROW(plant.step(MotorCommand{}), std::runtime_error);
+}
+
+TEST(Plant, SameInputsGiveBitIdenticalStates) {
+  auto run_once = [] {
+    Plant plant(config_with(MjcfLoad{std::string(SREH_MODELS_DIR) + "/loads/asymmetric_arm.xml"}));
+    for (int i = 0; i < 3000; ++i) plant.step(MotorCommand{0.3 * std::sin(i * 1e-3), true});
+    return std::make_pair(plant.angle_rad(), plant.velocity_rad_s());
+  };
+  EXPECT_EQ(run_once(), run_once());
+}
+
+} // namespace
+} // namespace sreh

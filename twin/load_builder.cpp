@@ -1,0 +1,352 @@
+#include "twin/load_builder.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+
+#include "device_logic/units.hpp"
+
+namespace sreh {
+namespace {
+
+// Assumptions for loads given only by numbers (docs/assumptions/twin.md).
+constexpr double kSteelDensity_kg_m3 = 7850.0;      // A-TWIN-5: InertiaLoad is a steel disk ...
+constexpr double kInertiaDiskThickness_m = 0.010;   // ... 10 mm thick
+constexpr double kArmBarHalfSection_m = 0.005;      // A-TWIN-6: arm drawn as a 10 x 10 mm bar
+constexpr int kRingSegments = 32;                   // ring drawn from box segments (visual only)
+constexpr double kLoadInertiaTolerance_gcm2 = 1e-6; // rounding of the 15'000 g cm^2 check
+
+constexpr const char* kLoadMarker = "<!-- sreh:load -->";
+constexpr const char* kWorldMarker = "<!-- sreh:world -->";
+constexpr const char* kAssetMarker = "<!-- sreh:asset -->";
+
+std::string num(double v) {
+  char buf[64];
+  const auto res = std::to_chars(buf, buf + sizeof buf, v); // shortest round-trip form
+  return std::string(buf, res.ptr);
+}
+
+void require_positive(double v, const char* what, const std::string& origin) {
+  if (!(v > 0.0) || !std::isfinite(v)) {
+    throw std::invalid_argument(origin + ": " + what + " must be positive and finite, got " + num(v));
+  }
+}
+
+void require_non_negative(double v, const char* what, const std::string& origin) {
+  if (!(v >= 0.0) || !std::isfinite(v)) {
+    throw std::invalid_argument(origin + ": " + what + " must be >= 0 and finite, got " + num(v));
+  }
+}
+
+std::string disk_xml(const DiskLoad& l, const std::string& origin) {
+  require_positive(l.mass_kg, "disk mass_kg", origin);
+  require_positive(l.radius_m, "disk radius_m", origin);
+  require_positive(l.thickness_m, "disk thickness_m", origin);
+  const double h = l.thickness_m / 2;
+  // MuJoCo's solid cylinder: Izz = m r^2 / 2.
+  return "<body name=\"load\"><geom name=\"load_disk\" type=\"cylinder\" size=\"" + num(l.radius_m) + " " + num(h) +
+         "\" pos=\"0 0 " + num(h) + "\" mass=\"" + num(l.mass_kg) + "\" material=\"load_alu\"/></body>";
+}
+
+std::string ring_xml(const RingLoad& l, const std::string& origin) {
+  require_positive(l.mass_kg, "ring mass_kg", origin);
+  require_non_negative(l.inner_radius_m, "ring inner_radius_m", origin);
+  require_positive(l.outer_radius_m, "ring outer_radius_m", origin);
+  require_positive(l.thickness_m, "ring thickness_m", origin);
+  if (!(l.inner_radius_m < l.outer_radius_m)) {
+    throw std::invalid_argument(origin + ": ring inner_radius_m (" + num(l.inner_radius_m) +
+                                ") must be below outer_radius_m (" + num(l.outer_radius_m) + ")");
+  }
+  const double ri2 = l.inner_radius_m * l.inner_radius_m;
+  const double ro2 = l.outer_radius_m * l.outer_radius_m;
+  const double t = l.thickness_m;
+  const double izz = l.mass_kg * (ri2 + ro2) / 2;                  // hollow cylinder
+  const double ixx = l.mass_kg * (3 * (ri2 + ro2) + t * t) / 12;
+  // MuJoCo has no hollow primitive: exact inertial, massless box segments to show it.
+  std::string xml = "<body name=\"load\"><inertial pos=\"0 0 " + num(t / 2) + "\" mass=\"" + num(l.mass_kg) +
+                    "\" diaginertia=\"" + num(ixx) + " " + num(ixx) + " " + num(izz) + "\"/>";
+  const double r_mid = (l.inner_radius_m + l.outer_radius_m) / 2;
+  const double half_radial = (l.outer_radius_m - l.inner_radius_m) / 2;
+  const double half_tangential = kPi * r_mid / kRingSegments * 1.02;
+  for (int k = 0; k < kRingSegments; ++k) {
+    const double a = 2 * kPi * k / kRingSegments;
+    xml += "<geom name=\"load_ring_" + std::to_string(k) + "\" type=\"box\" size=\"" + num(half_radial) + " " +
+           num(half_tangential) + " " + num(t / 2) + "\" pos=\"" + num(r_mid * std::cos(a)) + " " +
+           num(r_mid * std::sin(a)) + " " + num(t / 2) + "\" euler=\"0 0 " + num(a) +
+           "\" mass=\"0\" material=\"load_alu\"/>";
+  }
+  return xml + "</body>";
+}
+
+std::string box_xml(const BoxLoad& l, const std::string& origin) {
+  require_positive(l.mass_kg, "box mass_kg", origin);
+  require_positive(l.x_m, "box x_m", origin);
+  require_positive(l.y_m, "box y_m", origin);
+  require_positive(l.z_m, "box z_m", origin);
+  // MuJoCo's solid box: Izz = m (x^2 + y^2) / 12, centred on the axis.
+  return "<body name=\"load\"><geom name=\"load_box\" type=\"box\" size=\"" + num(l.x_m / 2) + " " + num(l.y_m / 2) +
+         " " + num(l.z_m / 2) + "\" pos=\"0 0 " + num(l.z_m / 2) + "\" mass=\"" + num(l.mass_kg) +
+         "\" material=\"load_alu\"/></body>";
+}
+
+std::string arm_xml(const ArmLoad& l, const std::string& origin) {
+  require_positive(l.mass_kg, "arm mass_kg", origin);
+  require_positive(l.radius_m, "arm radius_m", origin);
+  require_non_negative(l.arm_mass_kg, "arm arm_mass_kg", origin);
+  const double r = l.radius_m;
+  const double z = kArmBarHalfSection_m;
+  std::string xml = "<body name=\"load\">";
+  if (l.arm_mass_kg > 0) {
+    // Thin rod along x from the axis to r: about its centre m r^2 / 12;
+    // MuJoCo adds m (r/2)^2, so m r^2 / 3 about the axis.
+    const double i_end = l.arm_mass_kg * r * r / 12;
+    xml += "<inertial pos=\"" + num(r / 2) + " 0 " + num(z) + "\" mass=\"" + num(l.arm_mass_kg) +
+           "\" diaginertia=\"1e-12 " + num(i_end) + " " + num(i_end) + "\"/>";
+  }
+  xml += "<geom name=\"load_arm\" type=\"box\" size=\"" + num(r / 2) + " " + num(kArmBarHalfSection_m) + " " + num(z) +
+         "\" pos=\"" + num(r / 2) + " 0 " + num(z) + "\" mass=\"0\" material=\"load_alu\"/>";
+  // The point mass: exact inertial, a steel sphere of that mass to show it.
+  const double sphere_r = std::cbrt(3 * l.mass_kg / (4 * kPi * kSteelDensity_kg_m3));
+  xml += "<body name=\"load_tip\" pos=\"" + num(r) + " 0 " + num(2 * z + sphere_r) + "\"><inertial pos=\"0 0 0\" mass=\"" +
+         num(l.mass_kg) + "\" diaginertia=\"1e-12 1e-12 1e-12\"/><geom name=\"load_tip\" type=\"sphere\" size=\"" +
+         num(sphere_r) + "\" mass=\"0\" material=\"load_steel\"/></body>";
+  return xml + "</body>";
+}
+
+std::string inertia_xml(const InertiaLoad& l, const std::string& origin) {
+  require_non_negative(l.inertia_gcm2, "inertia_gcm2", origin);
+  if (l.inertia_gcm2 == 0) {
+    return {};
+  }
+  // A steel disk of that inertia: J = rho pi t r^4 / 2.
+  const double j = gcm2_to_kgm2(l.inertia_gcm2);
+  const double t = kInertiaDiskThickness_m;
+  const double r = std::pow(2 * j / (kSteelDensity_kg_m3 * kPi * t), 0.25);
+  const double mass = 2 * j / (r * r);
+  return "<body name=\"load\"><inertial pos=\"0 0 " + num(t / 2) + "\" mass=\"" + num(mass) + "\" diaginertia=\"" +
+         num(mass * (3 * r * r + t * t) / 12) + " " + num(mass * (3 * r * r + t * t) / 12) + " " + num(j) +
+         "\"/><geom name=\"load_disk\" type=\"cylinder\" size=\"" + num(r) + " " + num(t / 2) + "\" pos=\"0 0 " +
+         num(t / 2) + "\" mass=\"0\" material=\"load_steel\"/></body>";
+}
+
+// Replaces every character of [begin, end) except newlines with blanks, so
+// MuJoCo's line numbers in error messages still match the user's file.
+void blank_out(std::string& text, std::size_t begin, std::size_t end) {
+  for (std::size_t i = begin; i < end && i < text.size(); ++i) {
+    if (text[i] != '\n') text[i] = ' ';
+  }
+}
+
+// Text between <tag ...> and </tag> (first occurrence), or npos-range if absent.
+bool inner_of(const std::string& text, const std::string& tag, std::string& inner) {
+  const std::size_t open = text.find("<" + tag);
+  if (open == std::string::npos) return false;
+  const std::size_t open_end = text.find('>', open);
+  if (open_end == std::string::npos) return false;
+  if (text[open_end - 1] == '/') { inner.clear(); return true; } // <tag/>
+  const std::size_t close = text.find("</" + tag + ">", open_end);
+  if (close == std::string::npos) return false;
+  inner = text.substr(open_end + 1, close - open_end - 1);
+  return true;
+}
+
+std::string one_line(std::string s) {
+  for (char& c : s) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  return s;
+}
+
+// Relative load paths: as given (working directory), then the source tree.
+std::string resolve_load_path(const std::string& path) {
+  namespace fs = std::filesystem;
+  if (path.empty()) {
+    throw std::invalid_argument("MJCF load: empty file name");
+  }
+  if (fs::path(path).is_relative() && !fs::exists(path)) {
+    const fs::path in_tree = fs::path(default_module_model_path()).parent_path().parent_path() / path;
+    if (fs::exists(in_tree)) return in_tree.string();
+  }
+  return path;
+}
+
+struct MjcfParts {
+  std::string assets; // extra <asset> content
+  std::string body;   // content for the flange body
+};
+
+// Reads and validates an MJCF load file. Two forms: a bare <body> fragment
+// (it may use the module's materials), or a <mujoco> document whose
+// worldbody holds the load. Validation compiles the file alone, laid out so
+// that MuJoCo's line numbers are the file's.
+MjcfParts mjcf_load_parts(const MjcfLoad& l, const std::string& module_assets) {
+  const std::string path = resolve_load_path(l.path);
+  std::string text = read_text_file(path);
+  if (const std::size_t decl = text.find("<?xml"); decl != std::string::npos) {
+    blank_out(text, decl, text.find("?>", decl) + 2);
+  }
+  // Comments may mention <mujoco> or <body>: blank them before looking.
+  for (std::size_t at = text.find("<!--"); at != std::string::npos; at = text.find("<!--", at)) {
+    const std::size_t end = text.find("-->", at);
+    if (end == std::string::npos) break; // left for MuJoCo's parser to report
+    blank_out(text, at, end + 3);
+  }
+  const std::string base_assets = "<asset>" + one_line(module_assets) + "</asset>";
+  MjcfParts parts;
+  std::string validation;
+  if (const std::size_t root = text.find("<mujoco"); root != std::string::npos) {
+    if (text.find("angle=\"radian\"") == std::string::npos) {
+      throw std::invalid_argument(path + ": a <mujoco> load file must declare <compiler angle=\"radian\"/> (style.md 6)");
+    }
+    if (text.find("<default") != std::string::npos) {
+      throw std::invalid_argument(path + ": <default> classes are not supported in load files; set attributes on the elements");
+    }
+    if (!inner_of(text, "worldbody", parts.body)) {
+      throw std::invalid_argument(path + ": a <mujoco> load file needs a <worldbody> holding the load's <body>");
+    }
+    std::string assets;
+    if (inner_of(text, "asset", assets)) parts.assets = assets;
+    const std::size_t root_end = text.find('>', root);
+    validation = text;
+    validation.insert(root_end + 1, base_assets);
+  } else {
+    if (text.find("<body") == std::string::npos) {
+      throw std::invalid_argument(path + ": no <body> element: a load file holds one <body> (or a <mujoco> document with one)");
+    }
+    parts.body = text;
+    validation = "<mujoco model=\"load\"><compiler angle=\"radian\" autolimits=\"true\"/>" + base_assets +
+                 "<worldbody>" + text + "\n</worldbody></mujoco>";
+  }
+  compile_mjcf(validation, path); // throws with MuJoCo's message and the file's line
+  return parts;
+}
+
+void replace_marker(std::string& xml, const char* marker, const std::string& content, const std::string& module_path) {
+  const std::size_t at = xml.find(marker);
+  if (at == std::string::npos) {
+    throw std::invalid_argument(module_path + ": marker " + marker + " missing");
+  }
+  xml.replace(at, std::string(marker).size(), content);
+}
+
+std::string hard_stops_xml(const std::vector<HardStop>& stops) {
+  // Geometry of the flange's stop_lug in models/sreh50.xml and the stop
+  // post: lug tangential half width 3 mm, post 4 mm. The post lies beyond the
+  // stop angle as seen from 0 deg, so the lug's face meets it flush exactly
+  // at angle_deg (positive motion stops there for angle_deg >= 0, negative
+  // motion for angle_deg < 0). Flange joint axis is -z: a flange angle q is a
+  // rotation by -q about world z.
+  constexpr double kLugHalfWidth_m = 0.003;
+  constexpr double kPostHalfWidth_m = 0.004;
+  std::string xml;
+  for (std::size_t i = 0; i < stops.size(); ++i) {
+    const double q = deg_to_rad(stops[i].angle_deg);
+    if (!std::isfinite(q)) {
+      throw std::invalid_argument("hard stop " + std::to_string(i) + ": angle_deg must be finite");
+    }
+    const double side = stops[i].angle_deg >= 0 ? -1.0 : 1.0;
+    const std::string name = "hard_stop_" + std::to_string(i);
+    xml += "<body name=\"" + name + "\" euler=\"0 0 " + num(-q) + "\"><geom name=\"" + name +
+           "\" type=\"box\" size=\"0.006 " + num(kPostHalfWidth_m) + " 0.032\" pos=\"0.040 " +
+           num(side * (kLugHalfWidth_m + kPostHalfWidth_m)) + " 0.032\" conaffinity=\"2\" material=\"stop\"/></body>";
+  }
+  return xml;
+}
+
+} // namespace
+
+std::string default_module_model_path() { return std::string(SREH_MODELS_DIR) + "/sreh50.xml"; }
+
+std::string describe_load(const LoadSpec& load) {
+  struct Describe {
+    std::string operator()(const NoLoad&) const { return "no load"; }
+    std::string operator()(const DiskLoad& l) const {
+      return "disk load (mass_kg " + num(l.mass_kg) + ", radius_m " + num(l.radius_m) + ", thickness_m " + num(l.thickness_m) + ")";
+    }
+    std::string operator()(const RingLoad& l) const {
+      return "ring load (mass_kg " + num(l.mass_kg) + ", inner_radius_m " + num(l.inner_radius_m) + ", outer_radius_m " +
+             num(l.outer_radius_m) + ", thickness_m " + num(l.thickness_m) + ")";
+    }
+    std::string operator()(const BoxLoad& l) const {
+      return "box load (mass_kg " + num(l.mass_kg) + ", x_m " + num(l.x_m) + ", y_m " + num(l.y_m) + ", z_m " + num(l.z_m) + ")";
+    }
+    std::string operator()(const ArmLoad& l) const {
+      return "arm load (mass_kg " + num(l.mass_kg) + ", radius_m " + num(l.radius_m) + ", arm_mass_kg " + num(l.arm_mass_kg) + ")";
+    }
+    std::string operator()(const InertiaLoad& l) const { return "inertia load (" + num(l.inertia_gcm2) + " g cm^2)"; }
+    std::string operator()(const MjcfLoad& l) const { return l.path; }
+  };
+  return std::visit(Describe{}, load);
+}
+
+std::string compose_model_xml(const LoadSpec& load, const std::vector<HardStop>& hard_stops,
+                              const std::string& module_model_path) {
+  std::string xml = read_text_file(module_model_path);
+  std::string module_assets;
+  if (!inner_of(xml, "asset", module_assets)) {
+    throw std::invalid_argument(module_model_path + ": no <asset> section");
+  }
+  const std::string origin = describe_load(load);
+  std::string body;
+  std::string assets;
+  if (const auto* l = std::get_if<DiskLoad>(&load)) body = disk_xml(*l, origin);
+  else if (const auto* r = std::get_if<RingLoad>(&load)) body = ring_xml(*r, origin);
+  else if (const auto* b = std::get_if<BoxLoad>(&load)) body = box_xml(*b, origin);
+  else if (const auto* a = std::get_if<ArmLoad>(&load)) body = arm_xml(*a, origin);
+  else if (const auto* i = std::get_if<InertiaLoad>(&load)) body = inertia_xml(*i, origin);
+  else if (const auto* f = std::get_if<MjcfLoad>(&load)) {
+    MjcfParts parts = mjcf_load_parts(*f, module_assets);
+    body = std::move(parts.body);
+    assets = std::move(parts.assets);
+  }
+  replace_marker(xml, kAssetMarker, assets, module_model_path);
+  replace_marker(xml, kLoadMarker, body, module_model_path);
+  replace_marker(xml, kWorldMarker, hard_stops_xml(hard_stops), module_model_path);
+  return xml;
+}
+
+double flange_axis_inertia_kgm2(const mjModel* model, mjData* data) {
+  mj_forward(model, data);
+  const int joint = mj_name2id(model, mjOBJ_JOINT, "flange");
+  if (joint < 0) {
+    throw std::invalid_argument("MuJoCo model has no joint named \"flange\"");
+  }
+  const int dof = model->jnt_dofadr[joint];
+  return data->qM[model->dof_Madr[dof]];
+}
+
+BuiltModel build_model(const LoadSpec& load, const std::vector<HardStop>& hard_stops, double physics_dt_s,
+                       const std::string& module_model_path) {
+  if (!(physics_dt_s > 0.0) || !std::isfinite(physics_dt_s)) {
+    throw std::invalid_argument("physics_dt_s must be positive, got " + num(physics_dt_s));
+  }
+  const std::string origin = describe_load(load);
+  BuiltModel built;
+  built.model = compile_mjcf(compose_model_xml(load, hard_stops, module_model_path), origin);
+  mjModel* m = built.model.get();
+  m->opt.timestep = physics_dt_s;
+  if (hard_stops.empty()) {
+    m->opt.disableflags |= mjDSBL_CONTACT; // nothing can touch: skip collision detection
+  }
+  if (m->njnt != 1) {
+    throw std::invalid_argument(origin + ": a load must be rigid, but it adds " + std::to_string(m->njnt - 1) +
+                                " joint(s) of its own");
+  }
+  MjDataPtr data(mj_makeData(m));
+  const int joint = mj_name2id(m, mjOBJ_JOINT, "flange");
+  built.axis_inertia_kgm2 = flange_axis_inertia_kgm2(m, data.get());
+  // The flange's own (placeholder) inertia belongs to J_intern, not to the load.
+  const int flange = m->jnt_bodyid[joint];
+  const double* ipos = m->body_ipos + 3 * flange;
+  const double flange_own = m->body_inertia[3 * flange + 2] + m->body_mass[flange] * (ipos[0] * ipos[0] + ipos[1] * ipos[1]);
+  built.load_inertia_kgm2 = built.axis_inertia_kgm2 - m->dof_armature[m->jnt_dofadr[joint]] - flange_own;
+  const double load_gcm2 = kgm2_to_gcm2(built.load_inertia_kgm2);
+  if (load_gcm2 > kMaxLoad_gcm2 + kLoadInertiaTolerance_gcm2) {
+    throw std::invalid_argument(origin + ": load inertia about the axis is " + num(load_gcm2) +
+                                " g cm^2, above the module's limit of 15000 g cm^2 (manual 3.5.6, 6.2 index 64.4)");
+  }
+  return built;
+}
+
+} // namespace sreh

@@ -1,0 +1,44 @@
+// Builds the MuJoCo model of the module with one load and the world objects
+// (issue 5): generates MJCF for each LoadSpec family, splices it into
+// models/sreh50.xml at its "sreh:" markers and compiles it from memory.
+// Refuses loads the module cannot carry with std::invalid_argument.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "twin/mujoco_support.hpp"
+#include "twin/twin.hpp"
+
+namespace sreh {
+
+// Manual 6.2, index 64..71 subindex 4: load range 0 .. 15'000 g cm^2.
+inline constexpr double kMaxLoad_gcm2 = 15000.0;
+
+// models/sreh50.xml of this source tree.
+std::string default_module_model_path();
+
+// A short human-readable description, used in error messages.
+std::string describe_load(const LoadSpec& load);
+
+// The MJCF text of the module with the load and world objects (deterministic).
+// Throws std::invalid_argument for bad dimensions or a bad/missing load file.
+std::string compose_model_xml(const LoadSpec& load, const std::vector<HardStop>& hard_stops,
+                              const std::string& module_model_path = default_module_model_path());
+
+struct BuiltModel {
+  MjModelPtr model;
+  double load_inertia_kgm2 = 0;   // about the flange axis, from MuJoCo's mass matrix
+  double axis_inertia_kgm2 = 0;   // including J_intern (the joint armature)
+};
+
+// Composes, compiles (timestep = physics_dt_s, contacts only with hard stops)
+// and checks the load: inertia about the axis <= 15'000 g cm^2, rigid (no
+// joints of its own). Throws std::invalid_argument naming the load or file.
+BuiltModel build_model(const LoadSpec& load, const std::vector<HardStop>& hard_stops, double physics_dt_s,
+                       const std::string& module_model_path = default_module_model_path());
+
+// Inertia about the flange joint's axis incl. armature: qM at its dof after
+// mj_forward (mujoco.md). Runs mj_forward on `data`.
+double flange_axis_inertia_kgm2(const mjModel* model, mjData* data);
+
+} // namespace sreh

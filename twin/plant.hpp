@@ -1,0 +1,105 @@
+// The plant: everything outside the device's firmware that the twin
+// simulates (issue 5): the MuJoCo flange with its load and world objects,
+// the motor's physical torque limit, the supply and the thermal model.
+// step(cmd) advances one physics step and returns the sensor readings the
+// device sees next (encoder 2^19 counts/rev, multiturn, physical frame:
+// positive = clockwise seen from above, the joint angle of "flange").
+#pragma once
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "device_logic/device_types.hpp"
+#include "device_logic/motor_model.hpp"
+#include "twin/load_builder.hpp"
+#include "twin/mujoco_support.hpp"
+#include "twin/supply.hpp"
+#include "twin/thermal.hpp"
+#include "twin/twin.hpp"
+
+namespace sreh {
+
+struct PlantConfig {
+  LoadSpec load = NoLoad{};
+  std::vector<HardStop> hard_stops;
+  SupplySpec supply;
+  ThermalSpec thermal;
+  double physics_dt_s = 1e-4;
+  MotorModel motor;
+  std::string module_model_path = default_module_model_path();
+};
+
+class Plant {
+ public:
+  explicit Plant(const PlantConfig& config); // throws std::invalid_argument on a bad load
+  Plant(const Plant&) = delete;
+  Plant& operator=(const Plant&) = delete;
+
+  // One physics step: clamps the torque to the motor's capability at the
+  // present speed and bus voltage (physics limits it even if a controller
+  // did not), steps MuJoCo, updates supply and thermal. A MuJoCo instability
+  // (bad qpos/qvel/qacc, singular inertia) throws std::runtime_error and
+  // the plant stays failed.
+  const SensorReadings& step(const MotorCommand& cmd);
+  const SensorReadings& sensors() const { return sensors_; }
+
+  void set_external_torque(double torque_Nm) { external_torque_Nm_ = torque_Nm; } // physical frame
+  double external_torque_Nm() const { return external_torque_Nm_; }
+  void set_supply_voltage(double volts) { supply_.set_source_voltage(volts); sensors_.supply_V = supply_.bus_voltage_V(); }
+
+  // State, physical frame.
+  double angle_rad() const;
+  double velocity_rad_s() const;
+  double applied_torque_Nm() const { return applied_torque_Nm_; }   // motor torque after the plant's clamp
+  double torque_limit_Nm() const { return torque_limit_Nm_; }       // capability in the commanded direction
+  double electrical_power_W() const { return electrical_power_W_; } // drawn from the bus (< 0 regenerating)
+  double copper_loss_W() const { return copper_loss_W_; }
+  uint64_t steps() const { return steps_; }
+  double time_s() const { return static_cast<double>(steps_) * dt_s_; } // integer clock, not d->time
+  double physics_dt_s() const { return dt_s_; }
+
+  double load_inertia_kgm2() const { return load_inertia_kgm2_; } // about the axis, from qM
+  double axis_inertia_kgm2() const { return axis_inertia_kgm2_; } // incl. J_intern
+
+  const Supply& supply() const { return supply_; }
+  const Thermal& thermal() const { return thermal_; }
+  const MotorModel& motor() const { return motor_; }
+
+  // For renderers (renders/): the model and data; and the two visual hooks.
+  const mjModel* model() const { return model_.get(); }
+  mjData* data() { return data_.get(); }
+  const mjData* data() const { return data_.get(); }
+  void set_led_rgba(const std::array<float, 4>& rgba);   // geom "led_band"
+  void set_ghost_angle(double angle_rad);                // mocap "setpoint_ghost", physical frame
+
+ private:
+  void check_warnings();
+
+  MjModelPtr model_;
+  MjDataPtr data_;
+  MotorModel motor_;
+  Supply supply_;
+  Thermal thermal_;
+  double dt_s_;
+  int qpos_adr_ = 0;
+  int dof_adr_ = 0;
+  int actuator_ = 0;
+  int led_geom_ = 0;
+  int ghost_mocap_ = 0;
+  double load_inertia_kgm2_ = 0;
+  double axis_inertia_kgm2_ = 0;
+  double external_torque_Nm_ = 0;
+  double applied_torque_Nm_ = 0;
+  double torque_limit_Nm_ = 0;
+  double electrical_power_W_ = 0;
+  double copper_loss_W_ = 0;
+  uint64_t steps_ = 0;
+  bool failed_ = false;
+  SensorReadings sensors_;
+};
+
+// LED band colour as RGBA for renderers (manual 3.1 colours).
+std::array<float, 4> led_rgba(LedColor color);
+
+} // namespace sreh

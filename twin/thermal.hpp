@@ -1,0 +1,43 @@
+// Module temperature (index 112; warning >= 70 degC 115.1, error >= 75 degC
+// 114.3): a lumped two-node model, winding -> housing -> ambient, heated by
+// copper losses and a small speed-dependent loss. Every constant is an
+// assumption (docs/assumptions/twin.md A-TWIN-THERMAL-*).
+#pragma once
+#include "twin/twin.hpp"
+
+namespace sreh {
+
+struct ThermalConstants {
+  double winding_capacity_J_per_K = 20.0;   // motor winding + stator + power stage
+  double housing_capacity_J_per_K = 100.0;  // aluminium housing + flange
+  double winding_to_housing_K_per_W = 1.5;
+  double housing_to_ambient_K_per_W = 3.5;  // free convection, module on a plate
+  double speed_loss_W_per_rad_s = 0.004;    // iron + bearing losses: 0.3 W at 4300 deg/s
+};
+
+class Thermal {
+ public:
+  explicit Thermal(const ThermalSpec& spec, const ThermalConstants& constants = {});
+
+  // Advances dt_s (scaled by ThermalSpec::time_scale) with `loss_W` into the winding.
+  void step(double dt_s, double loss_W);
+
+  // Speed-dependent loss at this flange speed.
+  double speed_loss_W(double velocity_rad_s) const;
+
+  double winding_C() const { return winding_C_; }
+  double housing_C() const { return housing_C_; }
+  double sensor_C() const { return winding_C_; } // A-TWIN-THERMAL-4: the sensor reads the winding node
+  double ambient_C() const { return spec_.ambient_C; }
+  // Steady state for a constant loss: ambient + P (R_wh + R_ha) at the winding.
+  double steady_winding_C(double loss_W) const;
+  const ThermalConstants& constants() const { return constants_; }
+
+ private:
+  ThermalSpec spec_;
+  ThermalConstants constants_;
+  double winding_C_;
+  double housing_C_;
+};
+
+} // namespace sreh

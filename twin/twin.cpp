@@ -1,0 +1,188 @@
+#include "twin/twin.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "device_logic/units.hpp"
+#include "twin/plant.hpp"
+
+namespace sreh {
+namespace {
+
+int steps_per_cycle(const TwinConfig& c) {
+  if (!(c.physics_dt_s > 0) || !(c.cycle_s > 0)) {
+    throw std::invalid_argument("twin: physics_dt_s and cycle_s must be positive");
+  }
+  const double ratio = c.cycle_s / c.physics_dt_s;
+  const double rounded = std::round(ratio);
+  if (rounded < 1 || std::abs(ratio - rounded) > 1e-9 * ratio) {
+    throw std::invalid_argument("twin: cycle_s (" + std::to_string(c.cycle_s) +
+                                ") must be an integer multiple of physics_dt_s (" + std::to_string(c.physics_dt_s) + ")");
+  }
+  return static_cast<int>(rounded);
+}
+
+PlantConfig plant_config(const TwinConfig& c) {
+  PlantConfig p;
+  p.load = c.load;
+  p.hard_stops = c.hard_stops;
+  p.supply = c.supply;
+  p.thermal = c.thermal;
+  p.physics_dt_s = c.physics_dt_s;
+  return p;
+}
+
+Device make_device(const TwinConfig& c) { return c.nvm_image ? Device(*c.nvm_image) : Device(); }
+
+} // namespace
+
+struct Twin::Impl {
+  explicit Impl(const TwinConfig& c)
+      : config(c), steps(steps_per_cycle(c)), plant(plant_config(c)), device(make_device(c)) {}
+
+  // Manual 4.2 (index 82): process-data degrees run against the physical
+  // frame when the positive direction is counterclockwise. Only the ghost
+  // marker needs this (the planned setpoint is in process-data degrees).
+  void refresh_direction() {
+    const IsduResult r = device.isdu_read(82, 0);
+    direction = (r.ok() && !r.data.empty() && r.data[0] == 1) ? -1.0 : 1.0;
+  }
+
+  // Move records (interfaces.md `moves`, manual 3.5.2), evaluated every
+  // control step on the tick time t_s.
+  void track_move(double t_s) {
+    const Telemetry tel = device.telemetry();
+    if (tel.moving && !was_moving) {
+      MoveRecord rec;
+      rec.start_s = t_s;
+      rec.settling_s = -1;
+      rec.positioning_s = -1;
+      moves.push_back(rec);
+      move_open = true;
+      travel_done = false;
+    }
+    was_moving = tel.moving;
+    if (!move_open) return;
+    MoveRecord& rec = moves.back();
+    rec.max_tracking_error_deg = std::max(rec.max_tracking_error_deg, std::abs(tel.tracking_error_deg));
+    if (!travel_done && (!tel.moving || tel.state != State::Busy)) {
+      travel_done = true;
+      rec.travel_s = t_s - rec.start_s;
+      rec.target_deg = tel.setpoint_deg;
+    }
+    if (tel.state == State::Done && travel_done) {
+      rec.positioning_s = t_s - rec.start_s;
+      rec.settling_s = rec.positioning_s - rec.travel_s;
+      rec.completed = true;
+      move_open = false;
+    } else if (tel.state != State::Busy) {
+      move_open = false; // stopped, motor off or an error: never completed
+    }
+  }
+
+  void record_row(const PdOutFrame& out_frame) {
+    const Telemetry tel = device.telemetry();
+    TraceRow row;
+    row.t_s = static_cast<double>(cycles) * config.cycle_s;
+    row.state = tel.state;
+    row.setpoint_deg = tel.setpoint_deg;
+    row.position_deg = tel.position_deg;
+    row.tracking_error_deg = tel.tracking_error_deg;
+    row.velocity_dps = tel.velocity_dps;
+    row.torque_Nm = plant.applied_torque_Nm();
+    row.torque_limit_Nm = tel.torque_limit_Nm;
+    row.external_torque_Nm = plant.external_torque_Nm();
+    row.supply_V = plant.sensors().supply_V;
+    row.temperature_C = plant.sensors().temperature_C;
+    row.error_code = tel.error_code;
+    row.warning_code = tel.warning_code;
+    row.pd_out = out_frame;
+    row.pd_in = last_pd_in;
+    row.led = tel.led;
+    trace.push_back(row);
+  }
+
+  void update_visuals() {
+    const Telemetry tel = device.telemetry();
+    plant.set_led_rgba(led_rgba(device.powered() ? tel.led : LedColor::Off));
+    plant.set_ghost_angle(plant.angle_rad() + direction * deg_to_rad(tel.setpoint_deg - tel.position_deg));
+  }
+
+  TwinConfig config;
+  int steps;
+  Plant plant;
+  Device device;
+  ProcessDataOut pd_out{};
+  bool outputs_valid = true;
+  bool link_up = true;
+  PdInFrame last_pd_in{};
+  uint64_t cycles = 0;
+  double direction = 1.0;
+  std::vector<TraceRow> trace;
+  std::vector<MoveRecord> moves;
+  bool was_moving = false;
+  bool move_open = false;
+  bool travel_done = false;
+};
+
+Twin::Twin(const TwinConfig& config) : impl_(std::make_unique<Impl>(config)) {
+  impl_->refresh_direction();
+  impl_->update_visuals();
+}
+
+Twin::~Twin() = default;
+
+void Twin::set_pd_out(const ProcessDataOut& out) { impl_->pd_out = out; }
+const ProcessDataOut& Twin::pd_out() const { return impl_->pd_out; }
+void Twin::set_outputs_valid(bool valid) { impl_->outputs_valid = valid; }
+void Twin::set_link_up(bool up) { impl_->link_up = up; }
+ProcessDataIn Twin::pd_in() const { return decode_in(impl_->last_pd_in); }
+
+IsduResult Twin::isdu_read(uint16_t index, uint8_t subindex) { return impl_->device.isdu_read(index, subindex); }
+
+IsduResult Twin::isdu_write(uint16_t index, uint8_t subindex, std::span<const uint8_t> data) {
+  IsduResult r = impl_->device.isdu_write(index, subindex, data);
+  impl_->refresh_direction(); // index 82, or a reset to factory settings
+  return r;
+}
+
+void Twin::set_external_torque(double torque_Nm) { impl_->plant.set_external_torque(torque_Nm); }
+void Twin::set_supply_voltage(double volts) { impl_->plant.set_supply_voltage(volts); }
+
+void Twin::power_cycle() {
+  impl_->device.power_off();
+  impl_->device.power_on(impl_->plant.sensors());
+  impl_->refresh_direction();
+}
+
+void Twin::run_cycle() {
+  Impl& s = *impl_;
+  const PdOutFrame out_frame = encode(s.pd_out);
+  if (s.link_up && s.device.powered()) {
+    if (const auto in = s.device.exchange(out_frame, s.outputs_valid)) {
+      s.last_pd_in = *in;
+    }
+  }
+  const double dt = s.config.physics_dt_s;
+  for (int i = 0; i < s.steps; ++i) {
+    const double t_s = s.plant.time_s();
+    const MotorCommand cmd = s.device.tick(dt, s.plant.sensors());
+    s.plant.step(cmd);
+    s.track_move(t_s);
+  }
+  ++s.cycles;
+  s.update_visuals();
+  if (s.config.record_trace) s.record_row(out_frame);
+}
+
+uint64_t Twin::cycles() const { return impl_->cycles; }
+double Twin::time_s() const { return static_cast<double>(impl_->cycles) * impl_->config.cycle_s; }
+Telemetry Twin::telemetry() const { return impl_->device.telemetry(); }
+const std::vector<TraceRow>& Twin::trace() const { return impl_->trace; }
+const std::vector<MoveRecord>& Twin::moves() const { return impl_->moves; }
+double Twin::load_inertia_gcm2() const { return kgm2_to_gcm2(impl_->plant.load_inertia_kgm2()); }
+const Device& Twin::device() const { return impl_->device; }
+const Plant& Twin::plant() const { return impl_->plant; }
+std::vector<uint8_t> Twin::save_nvm() const { return impl_->device.save_nvm(); }
+
+} // namespace sreh
