@@ -109,7 +109,15 @@ struct OffscreenRenderer::Impl {
     const double aspect = static_cast<double>(options.width_px) / options.height_px;
     // Fit the bounding sphere into the narrower of the two fields of view.
     const double half_fit = std::min(half_fov, std::atan(std::tan(half_fov) * aspect));
-    const double fit_distance = 1.1 * f.radius / std::sin(half_fit); // A-RENDERS-1 margin
+    const double fit_distance = 0.95 * f.radius / std::sin(half_fit); // A-RENDERS-1 margin
+    if (!spec.model_camera.empty()) {
+      const int id = mj_name2id(m, mjOBJ_CAMERA, spec.model_camera.c_str());
+      if (id < 0) throw std::invalid_argument("the model has no camera named '" + spec.model_camera + "'");
+      cam.type = mjCAMERA_FIXED;
+      cam.fixedcamid = id;
+      framed = true;
+      return;
+    }
     const bool top = spec.preset == CameraSpec::Preset::Top;
     cam.type = mjCAMERA_FREE;
     cam.azimuth = spec.azimuth_deg.value_or(top ? 90.0 : 135.0);

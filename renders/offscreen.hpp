@@ -26,6 +26,7 @@ struct CameraSpec {
   std::optional<double> elevation_deg;
   std::optional<double> distance_m;
   std::optional<std::array<double, 3>> lookat_m;
+  std::string model_camera; // non-empty: a fixed <camera> of the model by name (overrides the rest)
 
   static CameraSpec top() { CameraSpec c; c.preset = Preset::Top; return c; }
 };

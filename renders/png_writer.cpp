@@ -10,7 +10,7 @@
 
 namespace sreh {
 
-void write_png(const std::filesystem::path& path, const uint8_t* rgb, int width, int height, int zlib_level) {
+void write_png(const std::filesystem::path& path, const uint8_t* rgb, int width, int height, bool bottom_up, int zlib_level) {
   std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(path.c_str(), "wb"), &std::fclose);
   if (!file) throw std::runtime_error("cannot write " + path.string());
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
@@ -21,7 +21,10 @@ void write_png(const std::filesystem::path& path, const uint8_t* rgb, int width,
   }
   std::vector<png_bytep> rows(static_cast<std::size_t>(height));
   const std::size_t stride = static_cast<std::size_t>(width) * 3;
-  for (int y = 0; y < height; ++y) rows[static_cast<std::size_t>(y)] = const_cast<png_bytep>(rgb + static_cast<std::size_t>(y) * stride);
+  for (int y = 0; y < height; ++y) {
+    const int src = bottom_up ? height - 1 - y : y;
+    rows[static_cast<std::size_t>(y)] = const_cast<png_bytep>(rgb + static_cast<std::size_t>(src) * stride);
+  }
   // libpng reports errors by longjmp; nothing with a destructor lives
   // between here and the calls below.
   if (setjmp(png_jmpbuf(png))) {

@@ -1,0 +1,263 @@
+#include "renders/video.hpp"
+
+#include <mujoco/mujoco.h>
+
+#include <cmath>
+#include <condition_variable>
+#include <deque>
+#include <exception>
+#include <mutex>
+#include <numbers>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "renders/ffmpeg_encoder.hpp"
+#include "renders/png_writer.hpp"
+
+namespace sreh {
+
+namespace fs = std::filesystem;
+
+std::vector<std::pair<std::string, std::string>> overlay_lines(const FrameInfo& f, double slowmo) {
+  auto code = [](uint8_t c) { return c == 0 ? std::string("none") : fmt::format("0x{:02X}", c); };
+  std::vector<std::pair<std::string, std::string>> lines = {
+      {"t", fmt::format("{:.3f} s", f.t_s)},
+      {"state", std::string(state_name(f.state))},
+      {"position", fmt::format("{:.3f} deg", f.position_deg)},
+      {"setpoint", fmt::format("{:.3f} deg", f.setpoint_deg)},
+      {"tracking error", fmt::format("{:+.4f} deg", f.tracking_error_deg)},
+      {"error", code(f.error_code)},
+      {"warning", code(f.warning_code)},
+      {"LED", std::string(led_name(f.led))},
+  };
+  if (slowmo != 1.0) lines.emplace_back("slow motion", fmt::format("{:g}x", slowmo));
+  return lines;
+}
+
+namespace {
+
+struct Job {
+  std::size_t buffer = 0;
+  uint64_t first_frame = 0;
+  uint64_t count = 0;
+};
+
+fs::path with_suffix(const fs::path& p, const char* suffix) { return fs::path(p.string() + suffix); }
+
+} // namespace
+
+struct VideoRecorder::Impl {
+  VideoOptions options;
+  double frame_rate_sim = 0; // frames per simulated second
+  std::unique_ptr<OffscreenRenderer> renderer;
+  std::unique_ptr<FfmpegEncoder> encoder;
+  fs::path video_tmp, frames_tmp;
+  int flange_qpos = -1;
+  uint64_t next_frame = 0;
+  bool finished = false;
+
+  // Writer thread: buffers cycle free -> rendered (jobs) -> free.
+  std::vector<std::vector<uint8_t>> buffers;
+  std::deque<std::size_t> free_buffers;
+  std::deque<Job> jobs;
+  std::mutex mutex;
+  std::condition_variable cv;
+  bool closing = false;
+  std::exception_ptr error;
+  std::thread writer;
+
+  void emit(const Job& job) {
+    const std::vector<uint8_t>& rgb = buffers[job.buffer];
+    for (uint64_t i = 0; i < job.count; ++i) {
+      if (encoder) encoder->write_frame(rgb.data());
+      if (!frames_tmp.empty()) {
+        write_png(frames_tmp / fmt::format("frame_{:06d}.png", job.first_frame + i), rgb.data(), options.width_px,
+                  options.height_px, true);
+      }
+    }
+  }
+
+  void writer_loop() {
+    for (;;) {
+      Job job;
+      {
+        std::unique_lock lock(mutex);
+        cv.wait(lock, [&] { return closing || !jobs.empty(); });
+        if (jobs.empty()) return;
+        job = jobs.front();
+        jobs.pop_front();
+      }
+      try {
+        emit(job);
+      } catch (...) {
+        std::lock_guard lock(mutex);
+        error = std::current_exception();
+        free_buffers.push_back(job.buffer);
+        cv.notify_all();
+        return;
+      }
+      std::lock_guard lock(mutex);
+      free_buffers.push_back(job.buffer);
+      cv.notify_all();
+    }
+  }
+
+  void stop_writer() {
+    if (!writer.joinable()) return;
+    {
+      std::lock_guard lock(mutex);
+      closing = true;
+    }
+    cv.notify_all();
+    writer.join();
+  }
+
+  void discard_output() {
+    encoder.reset();
+    std::error_code ignored;
+    if (!video_tmp.empty()) fs::remove(video_tmp, ignored);
+    if (!frames_tmp.empty()) fs::remove_all(frames_tmp, ignored);
+  }
+};
+
+VideoRecorder::VideoRecorder(const mjModel* m, const VideoOptions& o) : impl_(std::make_unique<Impl>()) {
+  Impl& s = *impl_;
+  if (o.path.empty() && o.frames_dir.empty()) throw std::invalid_argument("video: neither a video file nor a frames directory given");
+  if (!(o.fps > 0) || !(o.slowmo > 0)) throw std::invalid_argument("video: fps and slow motion factor must be positive");
+  if (o.width_px % 2 || o.height_px % 2 || o.width_px < 16 || o.height_px < 16) {
+    throw std::invalid_argument(fmt::format("video: size {}x{} must be even and at least 16x16", o.width_px, o.height_px));
+  }
+  auto check_parent = [](const fs::path& p) {
+    const fs::path parent = fs::absolute(p).parent_path();
+    if (!fs::is_directory(parent)) throw std::invalid_argument("video: directory " + parent.string() + " does not exist");
+  };
+  s.options = o;
+  s.frame_rate_sim = o.fps * o.slowmo;
+  if (!o.frames_dir.empty()) {
+    check_parent(o.frames_dir);
+    if (fs::exists(o.frames_dir) && !(fs::is_directory(o.frames_dir) && fs::is_empty(o.frames_dir))) {
+      throw std::invalid_argument("video: frames directory " + o.frames_dir.string() + " exists and is not empty");
+    }
+    s.frames_tmp = with_suffix(o.frames_dir, ".tmp");
+    fs::remove_all(s.frames_tmp);
+    fs::create_directory(s.frames_tmp);
+  }
+
+  RenderOptions ro;
+  ro.width_px = o.width_px;
+  ro.height_px = o.height_px;
+  ro.msaa_samples = o.msaa_samples;
+  ro.shadows = o.shadows;
+  ro.shadow_size = o.shadow_size;
+  try {
+    s.renderer = std::make_unique<OffscreenRenderer>(m, ro, o.camera);
+    if (!o.path.empty()) {
+      check_parent(o.path);
+      s.video_tmp = with_suffix(o.path, ".tmp");
+      EncoderOptions eo;
+      eo.width_px = o.width_px;
+      eo.height_px = o.height_px;
+      eo.fps = o.fps;
+      eo.x264_preset = o.x264_preset;
+      eo.crf = o.crf;
+      eo.bottom_up = true;
+      s.encoder = std::make_unique<FfmpegEncoder>(s.video_tmp, eo);
+    }
+  } catch (...) {
+    s.discard_output();
+    throw;
+  }
+  const int jnt = mj_name2id(m, mjOBJ_JOINT, "flange");
+  if (jnt >= 0) s.flange_qpos = m->jnt_qposadr[jnt];
+
+  // Three buffers: one rendering, one being written, one spare (A-RENDERS-8).
+  const std::size_t frame_bytes = static_cast<std::size_t>(o.width_px) * static_cast<std::size_t>(o.height_px) * 3;
+  const std::size_t n_buffers = o.threaded ? 3 : 1;
+  for (std::size_t i = 0; i < n_buffers; ++i) {
+    s.buffers.emplace_back(frame_bytes);
+    s.free_buffers.push_back(i);
+  }
+  if (o.threaded) s.writer = std::thread([&s] { s.writer_loop(); });
+}
+
+VideoRecorder::~VideoRecorder() {
+  Impl& s = *impl_;
+  s.stop_writer();
+  if (!s.finished) s.discard_output();
+}
+
+double VideoRecorder::frame_time_s(uint64_t k) const { return static_cast<double>(k) / impl_->frame_rate_sim; }
+uint64_t VideoRecorder::frames_emitted() const { return impl_->next_frame; }
+
+bool VideoRecorder::wants_frame(double t_s) const { return t_s + 1e-9 >= frame_time_s(impl_->next_frame); }
+
+void VideoRecorder::add_frame(const mjModel* m, mjData* d, const FrameInfo& info) {
+  Impl& s = *impl_;
+  if (s.finished) throw std::logic_error("VideoRecorder: add_frame after finish");
+  uint64_t count = 0;
+  while (wants_frame(info.t_s)) {
+    ++count;
+    ++s.next_frame;
+  }
+  if (count == 0) return;
+  const uint64_t first = s.next_frame - count;
+
+  SceneState scene;
+  scene.led = info.led;
+  if (info.ghost_joint_rad) {
+    scene.ghost_joint_rad = info.ghost_joint_rad;
+  } else if (s.flange_qpos >= 0) {
+    scene.ghost_joint_rad = d->qpos[s.flange_qpos] + (info.setpoint_deg - info.position_deg) * std::numbers::pi / 180.0;
+  }
+  if (s.options.overlay) scene.overlay = overlay_lines(info, s.options.slowmo);
+
+  std::size_t buffer = 0;
+  {
+    std::unique_lock lock(s.mutex);
+    s.cv.wait(lock, [&] { return s.error || !s.free_buffers.empty(); });
+    if (s.error) std::rethrow_exception(s.error);
+    buffer = s.free_buffers.front();
+    s.free_buffers.pop_front();
+  }
+  s.renderer->render_into(m, d, scene, s.buffers[buffer].data(), false);
+  const Job job{buffer, first, count};
+  if (!s.options.threaded) {
+    s.emit(job);
+    s.free_buffers.push_back(buffer);
+    return;
+  }
+  {
+    std::lock_guard lock(s.mutex);
+    s.jobs.push_back(job);
+  }
+  s.cv.notify_all();
+}
+
+void VideoRecorder::finish() {
+  Impl& s = *impl_;
+  if (s.finished) throw std::logic_error("VideoRecorder: finish twice");
+  s.stop_writer();
+  try {
+    if (s.error) std::rethrow_exception(s.error);
+    if (s.next_frame == 0) throw std::runtime_error("video: no frame was recorded");
+    if (s.encoder) {
+      s.encoder->finish();
+      s.encoder.reset();
+      fs::rename(s.video_tmp, s.options.path);
+    }
+    if (!s.frames_tmp.empty()) {
+      if (fs::exists(s.options.frames_dir)) fs::remove(s.options.frames_dir); // checked empty at start
+      fs::rename(s.frames_tmp, s.options.frames_dir);
+    }
+  } catch (...) {
+    s.discard_output();
+    s.finished = true;
+    throw;
+  }
+  s.finished = true;
+}
+
+} // namespace sreh

@@ -1,0 +1,88 @@
+// Video of a twin run (issue 7): the twin hands over its MuJoCo state on
+// IO-Link cycle boundaries; frames are due by integer index (frame k at
+// t = k / fps / slowmo), rendered off-screen and encoded by ffmpeg to an
+// H.264 MP4 and/or written as PNG frames. The caller's thread only renders;
+// a writer thread feeds ffmpeg and libpng (docs/performance-renders.md).
+// Output appears atomically: F.tmp (and DIR.tmp) renamed on finish().
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "device_logic/device_types.hpp"
+#include "renders/offscreen.hpp"
+
+struct mjModel_;
+struct mjData_;
+
+namespace sreh {
+
+struct VideoOptions {
+  std::filesystem::path path;       // MP4 to write; empty: no video
+  double fps = 30.0;
+  int width_px = 1280;              // even
+  int height_px = 720;              // even
+  double slowmo = 1.0;              // video plays this many times slower than simulated time
+  CameraSpec camera;
+  std::filesystem::path frames_dir; // non-empty: PNG frames frame_000000.png ... here
+  // Quality/speed (A-RENDERS-3, A-RENDERS-5).
+  int msaa_samples = 4;
+  bool shadows = true;
+  int shadow_size = 1024;
+  std::string x264_preset = "fast";
+  int crf = 20;
+  bool threaded = true;             // false: render and write on the caller's thread (the reference loop)
+  bool overlay = true;
+};
+
+// What the frame shows besides the MuJoCo state.
+struct FrameInfo {
+  double t_s = 0;
+  State state = State::MotorOff;
+  double position_deg = 0;
+  double setpoint_deg = 0;
+  double tracking_error_deg = 0;
+  uint8_t error_code = 0;
+  uint8_t warning_code = 0;
+  LedColor led = LedColor::Off;
+  // Flange joint angle of the planned setpoint (qpos sense, rad). Unset:
+  // the flange joint angle + (setpoint - position), factory direction
+  // (A-RENDERS-7).
+  std::optional<double> ghost_joint_rad;
+};
+
+class VideoRecorder {
+ public:
+  // Throws std::invalid_argument on bad options (nothing to write, odd size,
+  // non-positive fps or slowmo, frames_dir not empty), std::runtime_error
+  // if the renderer or ffmpeg cannot start.
+  VideoRecorder(const mjModel_* m, const VideoOptions& options);
+  ~VideoRecorder(); // without finish(): stops, leaves no output behind
+  VideoRecorder(const VideoRecorder&) = delete;
+  VideoRecorder& operator=(const VideoRecorder&) = delete;
+
+  // True when frame k is due: t_s >= k / fps / slowmo (1 ns slack for the
+  // caller's cycles * cycle_s time).
+  bool wants_frame(double t_s) const;
+  // Renders the state once and emits every frame due up to info.t_s (more
+  // than one when frames are denser than the caller's cycles). Rethrows a
+  // writer-thread failure.
+  void add_frame(const mjModel_* m, mjData_* d, const FrameInfo& info);
+  // Flushes, waits for ffmpeg, renames F.tmp -> F and DIR.tmp -> DIR.
+  // Throws std::runtime_error (and removes the partial output) on failure.
+  void finish();
+
+  uint64_t frames_emitted() const; // video frames (index of the next due frame)
+  double frame_time_s(uint64_t k) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// The overlay lines a frame shows (also used by tests and the report).
+std::vector<std::pair<std::string, std::string>> overlay_lines(const FrameInfo& info, double slowmo);
+
+} // namespace sreh

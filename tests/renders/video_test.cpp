@@ -1,0 +1,166 @@
+// Video recording (issue 7): H.264 MP4 through ffmpeg and PNG frames, frames
+// due by integer index, output written atomically (F.tmp renamed).
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "render_fixture.hpp"
+#include "renders/video.hpp"
+#include "temp_dir.hpp"
+
+namespace sreh {
+namespace {
+
+namespace fs = std::filesystem;
+
+class VideoTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!test::on_path("ffmpeg")) GTEST_SKIP() << "ffmpeg not installed";
+  }
+  VideoOptions small(const fs::path& path) const {
+    VideoOptions o;
+    o.path = path;
+    o.width_px = 160;
+    o.height_px = 120;
+    o.msaa_samples = 0;
+    return o;
+  }
+  // Drives the recorder like the twin does: on 2 ms IO-Link cycle
+  // boundaries, time from the integer cycle count.
+  static void drive(VideoRecorder& rec, test::ModelData& md, int cycles) {
+    for (int c = 0; c <= cycles; ++c) {
+      const double t_s = c * 0.002;
+      md.set_flange(t_s * 3.0);
+      if (!rec.wants_frame(t_s)) continue;
+      FrameInfo f;
+      f.t_s = t_s;
+      f.state = State::Busy;
+      f.led = LedColor::Green;
+      rec.add_frame(md.m, md.d, f);
+    }
+  }
+  test::ModelData md_;
+  test::TempDir dir_;
+};
+
+int probe_frames(const fs::path& mp4) {
+  const std::string out = test::run_capture("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+                                            "stream=nb_read_frames,codec_name,pix_fmt,width -of csv=p=0 '" +
+                                            mp4.string() + "'");
+  // "h264,160,yuv420p,N"
+  EXPECT_NE(out.find("h264,160,yuv420p,"), std::string::npos) << out;
+  return std::atoi(out.substr(out.rfind(',') + 1).c_str());
+}
+
+TEST_F(VideoTest, WritesH264Mp4AtomicallyWithOneFramePerDueIndex) {
+  const fs::path mp4 = dir_ / "run.mp4";
+  VideoRecorder rec(md_.m, small(mp4));
+  drive(rec, md_, 500); // 1.0 s at 30 fps: frames 0..30
+  EXPECT_EQ(rec.frames_emitted(), 31u);
+  EXPECT_FALSE(fs::exists(mp4)) << "nothing under the final name before finish";
+  rec.finish();
+  EXPECT_TRUE(fs::exists(mp4));
+  EXPECT_FALSE(fs::exists(dir_ / "run.mp4.tmp"));
+  EXPECT_FALSE(fs::exists(dir_ / "run.mp4.tmp.log"));
+  EXPECT_EQ(probe_frames(mp4), 31);
+}
+
+TEST_F(VideoTest, FrameTimesComeFromTheIndexNotAccumulatedTime) {
+  VideoOptions o = small(dir_ / "a.mp4");
+  o.slowmo = 4.0;
+  VideoRecorder rec(md_.m, o);
+  EXPECT_DOUBLE_EQ(rec.frame_time_s(3), 3.0 / 30.0 / 4.0);
+  EXPECT_TRUE(rec.wants_frame(0.0));
+  // 3000 frames later the due time is still exact: k / fps / slowmo.
+  EXPECT_DOUBLE_EQ(rec.frame_time_s(3000), 25.0);
+}
+
+TEST_F(VideoTest, SlowMotionEmitsSeveralFramesPerCycleWhenDenser) {
+  VideoOptions o = small(dir_ / "slow.mp4");
+  o.slowmo = 100.0; // 3000 frames per simulated second, 6 per 2 ms cycle
+  VideoRecorder rec(md_.m, o);
+  drive(rec, md_, 5); // t = 0 .. 10 ms
+  EXPECT_EQ(rec.frames_emitted(), 31u); // frames 0..30 have t <= 10 ms
+  rec.finish();
+  EXPECT_EQ(probe_frames(o.path), 31);
+}
+
+TEST_F(VideoTest, PngFramesGoToTheirDirectory) {
+  VideoOptions o = small({});
+  o.frames_dir = dir_ / "frames";
+  VideoRecorder rec(md_.m, o);
+  drive(rec, md_, 50); // 0.1 s: frames 0..3
+  rec.finish();
+  EXPECT_FALSE(fs::exists(dir_ / "frames.tmp"));
+  ASSERT_TRUE(fs::exists(o.frames_dir / "frame_000003.png"));
+  EXPECT_FALSE(fs::exists(o.frames_dir / "frame_000004.png"));
+  std::ifstream png(o.frames_dir / "frame_000000.png", std::ios::binary);
+  char sig[8] = {};
+  png.read(sig, 8);
+  EXPECT_EQ(std::string(sig + 1, 3), "PNG");
+}
+
+TEST_F(VideoTest, DestroyedWithoutFinishLeavesNothing) {
+  VideoOptions o = small(dir_ / "gone.mp4");
+  o.frames_dir = dir_ / "frames";
+  {
+    VideoRecorder rec(md_.m, o);
+    drive(rec, md_, 50);
+  }
+  EXPECT_TRUE(fs::is_empty(dir_.path()));
+}
+
+TEST_F(VideoTest, FfmpegFailureThrowsAndLeavesNothing) {
+  VideoOptions o = small(dir_ / "bad.mp4");
+  o.x264_preset = "no-such-preset"; // ffmpeg refuses to open the encoder
+  EXPECT_THROW(
+      {
+        VideoRecorder rec(md_.m, o);
+        drive(rec, md_, 500);
+        rec.finish();
+      },
+      std::runtime_error);
+  EXPECT_TRUE(fs::is_empty(dir_.path()));
+}
+
+TEST_F(VideoTest, RejectsBadOptions) {
+  VideoOptions o = small(dir_ / "x.mp4");
+  o.width_px = 161;
+  EXPECT_THROW(VideoRecorder(md_.m, o), std::invalid_argument);
+  o = small({});
+  EXPECT_THROW(VideoRecorder(md_.m, o), std::invalid_argument);
+  o = small(dir_ / "no_such_dir" / "x.mp4");
+  EXPECT_THROW(VideoRecorder(md_.m, o), std::invalid_argument);
+  o = small(dir_ / "x.mp4");
+  o.slowmo = 0;
+  EXPECT_THROW(VideoRecorder(md_.m, o), std::invalid_argument);
+  fs::create_directory(dir_ / "full");
+  std::ofstream(dir_ / "full" / "keep.txt") << "x";
+  o = small({});
+  o.frames_dir = dir_ / "full";
+  EXPECT_THROW(VideoRecorder(md_.m, o), std::invalid_argument);
+  EXPECT_TRUE(fs::exists(dir_ / "full" / "keep.txt"));
+}
+
+TEST(OverlayLines, ShowStateCodesAndSlowMotion) {
+  FrameInfo f;
+  f.t_s = 1.5;
+  f.state = State::ErrorOn;
+  f.error_code = 0x08;
+  const auto lines = overlay_lines(f, 10.0);
+  auto value = [&](const std::string& label) {
+    for (const auto& [l, v] : lines)
+      if (l == label) return v;
+    return std::string("<missing>");
+  };
+  EXPECT_EQ(value("t"), "1.500 s");
+  EXPECT_EQ(value("state"), "ErrorOn");
+  EXPECT_EQ(value("error"), "0x08");
+  EXPECT_EQ(value("warning"), "none");
+  EXPECT_EQ(value("slow motion"), "10x");
+  EXPECT_EQ(overlay_lines(f, 1.0).size(), lines.size() - 1);
+}
+
+} // namespace
+} // namespace sreh
