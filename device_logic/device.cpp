@@ -55,9 +55,8 @@ void Device::Impl::process_outputs(const ProcessDataOut& next) {
 
   const bool move_rose = rose(prev.move, next.move);
   const bool origin_rose = rose(prev.set_origin, next.set_origin);
-  const bool in_error = state == State::ErrorOn || state == State::ErrorOff;
   if ((move_rose || origin_rose) && next.move && next.set_origin) {
-    if (!in_error) raise_error(ErrorBit::InvalidCommand, cause::kMoveAndSetOrigin); // 114.6/6
+    raise_error(ErrorBit::InvalidCommand, cause::kMoveAndSetOrigin); // 114.6/6
   } else if (move_rose) {
     if (state == State::Ready) {
       uint8_t code = 0;
@@ -277,6 +276,11 @@ void Device::Impl::run_diagnostics(int64_t dt_ns) {
 
 MotorCommand Device::Impl::control(double dt_s) {
   const double measured = counts_to_rad(encoder);
+  if (!motor_on()) { // no setpoint: the flange turns freely (manual 3.1 Motor Off)
+    setpoint = KinematicState{measured, 0, 0, 0};
+    torque_Nm = 0;
+    return {};
+  }
   switch (phase) {
     case MotionPhase::Travel: {
       profile_t_s += dt_s;
@@ -324,7 +328,7 @@ MotorCommand Device::Impl::control(double dt_s) {
   if (positioned && std::abs(counts_to_rad(hold_phys) - measured) > settle.tolerance_rad) {
     set_warning(WarningBit::Positioning, cause::kLeftToleranceWindow);
   }
-  if (!motor_on()) return {};
+  if (!motor_on()) return {}; // an error above switched it off
 
   const double vel = velocity_rad_s;
   const double lim_pos = motor.max_torque_Nm(vel, supply_V, +1.0);

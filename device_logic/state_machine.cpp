@@ -26,14 +26,13 @@ constexpr std::array kTable{
     Transition{kErrOn, SwitchOff, State::ErrorOff, {}, 0, "T9"},
     Transition{kReady, MoveStart, State::Busy, {}, 0, "T3"},
     Transition{kReady, MoveStartStopped, State::Done, {}, 0, "T3 (Stop set)"},
-    // Move from any other state (manual 7.2, 114.6 code 4). In the error states a
-    // command is refused without a further error (A-SM-3).
-    Transition{kOff | kBusy | kDone, MoveStart, State::ErrorOff, E::InvalidCommand, cause::kMoveFromInvalidState, "7.2 114.6/4"},
-    Transition{kOff | kBusy | kDone, MoveStartStopped, State::ErrorOff, E::InvalidCommand, cause::kMoveFromInvalidState, "7.2 114.6/4"},
+    // Move from any other state, the error states included (manual 7.2, 114.6 code 4).
+    Transition{kOff | kBusy | kDone | kErrOn | kErrOff, MoveStart, State::ErrorOff, E::InvalidCommand, cause::kMoveFromInvalidState, "7.2 114.6/4"},
+    Transition{kOff | kBusy | kDone | kErrOn | kErrOff, MoveStartStopped, State::ErrorOff, E::InvalidCommand, cause::kMoveFromInvalidState, "7.2 114.6/4"},
     Transition{kBusy, StopMove, State::Busy, {}, 0, "T4"},
     Transition{kBusy, MotionComplete, State::Done, {}, 0, "T5"},
     Transition{kReady, SetOrigin, State::Done, {}, 0, "T6"},
-    Transition{kOff | kBusy | kDone, SetOrigin, State::ErrorOff, E::InvalidCommand, cause::kSetOriginFromInvalidState, "7.2 114.6/5"},
+    Transition{kOff | kBusy | kDone | kErrOn | kErrOff, SetOrigin, State::ErrorOff, E::InvalidCommand, cause::kSetOriginFromInvalidState, "7.2 114.6/5"},
     Transition{kDone, MoveReleased, State::Ready, {}, 0, "T7"},
     Transition{kDone, SetOriginReleased, State::Ready, {}, 0, "T7"},
     // Move released before Done (manual 7.2, 114.6 code 2).
