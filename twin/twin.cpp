@@ -105,7 +105,9 @@ struct Twin::Impl {
   void update_visuals() {
     const Telemetry tel = device.telemetry();
     plant.set_led_rgba(led_rgba(device.powered() ? tel.led : LedColor::Off));
-    plant.set_ghost_angle(plant.angle_rad() + direction * deg_to_rad(tel.setpoint_deg - tel.position_deg));
+    // Telemetry positions come from the encoder reading of the last tick.
+    plant.set_ghost_angle(internal_counts_to_rad(ticked_counts) +
+                          direction * deg_to_rad(tel.setpoint_deg - tel.position_deg));
   }
 
   TwinConfig config;
@@ -120,6 +122,7 @@ struct Twin::Impl {
   double direction = 1.0;
   std::vector<TraceRow> trace;
   std::vector<MoveRecord> moves;
+  int64_t ticked_counts = 0; // encoder reading the device saw last
   bool was_moving = false;
   bool move_open = false;
   bool travel_done = false;
@@ -166,6 +169,7 @@ void Twin::run_cycle() {
   const double dt = s.config.physics_dt_s;
   for (int i = 0; i < s.steps; ++i) {
     const double t_s = s.plant.time_s();
+    s.ticked_counts = s.plant.sensors().encoder_counts;
     const MotorCommand cmd = s.device.tick(dt, s.plant.sensors());
     s.plant.step(cmd);
     s.track_move(t_s);

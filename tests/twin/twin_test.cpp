@@ -1,0 +1,187 @@
+// The twin (issue 5): the device logic coupled to the MuJoCo plant on
+// integer clocks. A PLC's view: process data per IO-Link cycle.
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+
+#include "device_logic/units.hpp"
+#include "twin/plant.hpp"
+#include "twin/twin.hpp"
+
+namespace sreh {
+namespace {
+
+// Runs cycles until pred holds; returns the number of cycles or -1.
+template <class Pred>
+int run_until(Twin& twin, Pred pred, int max_cycles) {
+  for (int i = 0; i < max_cycles; ++i) {
+    twin.run_cycle();
+    if (pred()) return i + 1;
+  }
+  return -1;
+}
+
+void write_u16(Twin& twin, uint16_t index, uint8_t sub, uint16_t value) {
+  const uint8_t bytes[2] = {static_cast<uint8_t>(value >> 8), static_cast<uint8_t>(value & 0xFF)};
+  ASSERT_TRUE(twin.isdu_write(index, sub, bytes).ok()) << index << "." << int{sub};
+}
+
+// Manual 3.2 T1, 3.4: motor on, then an absolute move of 90 deg with
+// parameter set 1 configured for the actual load.
+void switch_on_and_move(Twin& twin, double target_deg) {
+  ProcessDataOut pd;
+  pd.motor_on = true;
+  twin.set_pd_out(pd);
+  ASSERT_GT(run_until(twin, [&] { return twin.pd_in().ready; }, 100), 0);
+  pd.target_position = static_cast<int32_t>(deg_to_wire_counts(target_deg));
+  pd.parameter_set = 1;
+  pd.move = true;
+  twin.set_pd_out(pd);
+}
+
+TwinConfig config_with(LoadSpec load) {
+  TwinConfig c;
+  c.load = std::move(load);
+  return c;
+}
+
+TwinConfig config_2000() {
+  TwinConfig c;
+  c.load = InertiaLoad{2000};
+  return c;
+}
+
+TEST(Twin, ReportsActualLoadInertia) {
+  Twin twin(config_with(DiskLoad{0.3, 0.08, 0.01}));
+  EXPECT_NEAR(twin.load_inertia_gcm2(), 9600.0, 1e-6);
+}
+
+TEST(Twin, RefusesLoadBeyondModuleLimit_Manual6_2) {
+  EXPECT_THROW({ Twin t(config_with(InertiaLoad{20000})); }, std::invalid_argument);
+}
+
+TEST(Twin, RefusesCycleNotAMultipleOfPhysicsStep) {
+  TwinConfig c;
+  c.cycle_s = 0.00215;
+  EXPECT_THROW({ Twin t(c); }, std::invalid_argument);
+}
+
+TEST(Twin, ClocksAreIntegerCycles) {
+  Twin twin(TwinConfig{});
+  for (int i = 0; i < 500; ++i) twin.run_cycle();
+  EXPECT_EQ(twin.cycles(), 500u);
+  EXPECT_EQ(twin.time_s(), 500 * 0.002);
+  EXPECT_EQ(twin.plant().steps(), 500u * 20u);
+  EXPECT_EQ(twin.trace().size(), 500u);
+}
+
+TEST(Twin, NinetyDegreeMoveCompletes_Manual3_5_2) {
+  Twin twin(config_2000());
+  write_u16(twin, 65, 4, 2000); // parameter set 1: configured load = actual load
+  switch_on_and_move(twin, 90.0);
+  ASSERT_GT(run_until(twin, [&] { return twin.pd_in().done; }, 1000), 0);
+  const Telemetry t = twin.telemetry();
+  EXPECT_EQ(t.state, State::Done);
+  EXPECT_NEAR(t.position_deg, 90.0, 0.1); // default tolerance 0.1 deg (index 64.5)
+  EXPECT_EQ(t.error_code, 0);
+  EXPECT_EQ(t.warning_code, 0);
+  EXPECT_NEAR(rad_to_deg(twin.plant().angle_rad()), 90.0, 0.1); // clockwise = physical positive (manual 4.2)
+  const ProcessDataIn in = twin.pd_in();
+  EXPECT_NEAR(wire_counts_to_deg(in.actual_position), 90.0, 0.1);
+
+  ASSERT_EQ(twin.moves().size(), 1u);
+  const MoveRecord& m = twin.moves()[0];
+  EXPECT_TRUE(m.completed);
+  EXPECT_GT(m.travel_s, 0.02);
+  EXPECT_GE(m.settling_s, 0.0);
+  EXPECT_DOUBLE_EQ(m.positioning_s, m.travel_s + m.settling_s);
+  EXPECT_NEAR(m.target_deg, 90.0, 1e-6);
+  EXPECT_GT(m.max_tracking_error_deg, 0.0);
+  EXPECT_LT(m.max_tracking_error_deg, 1.0); // below the default 87.1 limit
+}
+
+TEST(Twin, SameRunTwiceGivesIdenticalTraceBytes) {
+  auto run_once = [] {
+    Twin twin(config_2000());
+    write_u16(twin, 65, 4, 2000);
+    switch_on_and_move(twin, 90.0);
+    for (int i = 0; i < 200; ++i) twin.run_cycle();
+    std::ostringstream csv;
+    write_trace_csv(csv, twin.trace());
+    return csv.str();
+  };
+  const std::string a = run_once();
+  EXPECT_EQ(a, run_once());
+  EXPECT_EQ(a.substr(0, a.find('\n')),
+            "t_s,state,setpoint_deg,position_deg,tracking_error_deg,velocity_dps,torque_Nm,supply_V,temperature_C,"
+            "error_code,warning_code,pd_out_hex,pd_in_hex,led,torque_limit_Nm,external_torque_Nm");
+  EXPECT_NE(a.find("Done"), std::string::npos);
+}
+
+TEST(Twin, HardStopCausesTrackingError_Manual7_2_114_5) {
+  TwinConfig c = config_2000();
+  c.hard_stops = {HardStop{45.0}};
+  Twin twin(c);
+  write_u16(twin, 65, 4, 2000);
+  switch_on_and_move(twin, 90.0);
+  ASSERT_GT(run_until(twin, [&] { return twin.pd_in().error; }, 1000), 0);
+  EXPECT_NE(twin.telemetry().error_code & 0x08, 0); // bit 3: position tracking error (manual 2.4)
+  EXPECT_NEAR(rad_to_deg(twin.plant().angle_rad()), 45.0, 0.5);
+  ASSERT_EQ(twin.moves().size(), 1u);
+  EXPECT_FALSE(twin.moves()[0].completed);
+  EXPECT_LT(twin.moves()[0].positioning_s, 0.0);
+}
+
+TEST(Twin, LinkDownWhileMotorOnIsAnError_Manual5) {
+  Twin twin(TwinConfig{});
+  ProcessDataOut pd;
+  pd.motor_on = true;
+  twin.set_pd_out(pd);
+  ASSERT_GT(run_until(twin, [&] { return twin.pd_in().ready; }, 100), 0);
+  twin.set_link_up(false);
+  const ProcessDataIn before = twin.pd_in();
+  for (int i = 0; i < 100; ++i) twin.run_cycle();
+  EXPECT_EQ(twin.pd_in(), before); // the master receives nothing while the link is down
+  EXPECT_NE(twin.telemetry().error_code & 0x04, 0); // bit 2: communication
+}
+
+TEST(Twin, PowerCycleKeepsAbsolutePosition_Manual4_1) {
+  Twin twin(config_2000());
+  write_u16(twin, 65, 4, 2000);
+  switch_on_and_move(twin, 90.0);
+  ASSERT_GT(run_until(twin, [&] { return twin.pd_in().done; }, 1000), 0);
+  twin.set_pd_out(ProcessDataOut{});
+  for (int i = 0; i < 10; ++i) twin.run_cycle();
+  twin.power_cycle();
+  for (int i = 0; i < 10; ++i) twin.run_cycle();
+  EXPECT_EQ(twin.telemetry().state, State::MotorOff);
+  EXPECT_NEAR(twin.telemetry().position_deg, 90.0, 0.1);
+}
+
+TEST(Twin, ExternalTorqueIsResistedWhileHolding) {
+  Twin twin(config_2000());
+  write_u16(twin, 65, 4, 2000);
+  switch_on_and_move(twin, 90.0);
+  ASSERT_GT(run_until(twin, [&] { return twin.pd_in().done; }, 1000), 0);
+  twin.set_external_torque(0.2);
+  for (int i = 0; i < 100; ++i) twin.run_cycle();
+  EXPECT_NEAR(twin.telemetry().position_deg, 90.0, 1.0);
+  EXPECT_NEAR(twin.trace().back().external_torque_Nm, 0.2, 1e-12);
+  EXPECT_LT(twin.trace().back().torque_Nm, -0.1); // the motor holds against it
+}
+
+TEST(Twin, GhostShowsThePlannedSetpoint) {
+  Twin twin(config_2000());
+  write_u16(twin, 65, 4, 2000);
+  switch_on_and_move(twin, 90.0);
+  for (int i = 0; i < 20; ++i) twin.run_cycle(); // mid-move
+  const Plant& plant = twin.plant();
+  const int mocap = plant.model()->body_mocapid[mj_name2id(plant.model(), mjOBJ_BODY, "setpoint_ghost")];
+  const double* q = plant.data()->mocap_quat + 4 * mocap;
+  const double ghost_rad = -2 * std::atan2(q[3], q[0]); // rotation about -z
+  EXPECT_NEAR(rad_to_deg(ghost_rad), twin.telemetry().setpoint_deg, 0.01);
+}
+
+} // namespace
+} // namespace sreh
