@@ -1,0 +1,86 @@
+// Manual 2.2 (6 bytes out), 2.3 (7 bytes in), 2.5 (position coding): every
+// field's bit position, round trips, wrong lengths.
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <vector>
+
+#include "device_logic/process_data.hpp"
+
+namespace sreh {
+namespace {
+
+TEST(ProcessDataOut, FieldBitPositions_2_2) {
+  struct Case { ProcessDataOut pd; PdOutFrame frame; };
+  auto with = [](auto f) { ProcessDataOut p; f(p); return p; };
+  const std::vector<Case> cases = {
+      {with([](auto& p) { p.motor_on = true; }), {0, 0, 0, 0, 0, 0x01}},
+      {with([](auto& p) { p.move = true; }), {0, 0, 0, 0, 0, 0x02}},
+      {with([](auto& p) { p.stop = true; }), {0, 0, 0, 0, 0, 0x04}},
+      {with([](auto& p) { p.reset_error = true; }), {0, 0, 0, 0, 0, 0x08}},
+      {with([](auto& p) { p.set_origin = true; }), {0, 0, 0, 0, 0, 0x10}},
+      {with([](auto& p) { p.relative = true; }), {0, 0, 0, 0, 0, 0x20}},
+      {with([](auto& p) { p.shortest_path = true; }), {0, 0, 0, 0, 0, 0x40}},
+      {with([](auto& p) { p.parameter_set = 7; }), {0, 0, 0, 0, 7, 0}},
+      {with([](auto& p) { p.target_position = 0x12345678; }), {0x12, 0x34, 0x56, 0x78, 0, 0}}, // bits 47..16, big-endian
+      {with([](auto& p) { p.target_position = -1; }), {0xFF, 0xFF, 0xFF, 0xFF, 0, 0}},
+  };
+  for (const auto& c : cases) {
+    EXPECT_EQ(encode(c.pd), c.frame);
+    EXPECT_EQ(decode_out(c.frame), c.pd);
+  }
+  // Bit 7 of the last byte is not used: ignored on decode.
+  EXPECT_EQ(decode_out(PdOutFrame{0, 0, 0, 0, 0, 0x80}), ProcessDataOut{});
+}
+
+TEST(ProcessDataIn, FieldBitPositions_2_3) {
+  struct Case { ProcessDataIn pd; PdInFrame frame; };
+  auto with = [](auto f) { ProcessDataIn p; f(p); return p; };
+  const std::vector<Case> cases = {
+      {with([](auto& p) { p.motor_off = true; }), {0, 0, 0, 0, 0, 0, 0x01}},
+      {with([](auto& p) { p.ready = true; }), {0, 0, 0, 0, 0, 0, 0x02}},
+      {with([](auto& p) { p.busy = true; }), {0, 0, 0, 0, 0, 0, 0x04}},
+      {with([](auto& p) { p.done = true; }), {0, 0, 0, 0, 0, 0, 0x08}},
+      {with([](auto& p) { p.warning = true; }), {0, 0, 0, 0, 0, 0, 0x10}},
+      {with([](auto& p) { p.error = true; }), {0, 0, 0, 0, 0, 0, 0x20}},
+      {with([](auto& p) { p.warning_code = 0xA0; }), {0, 0, 0, 0, 0, 0xA0, 0}}, // bits 15..8
+      {with([](auto& p) { p.error_code = 0x81; }), {0, 0, 0, 0, 0x81, 0, 0}},   // bits 23..16
+      {with([](auto& p) { p.actual_position = -65536; }), {0xFF, 0xFF, 0x00, 0x00, 0, 0, 0}}, // -360 deg
+  };
+  for (const auto& c : cases) {
+    EXPECT_EQ(encode(c.pd), c.frame);
+    EXPECT_EQ(decode_in(c.frame), c.pd);
+  }
+}
+
+TEST(ProcessData, RoundTripAllFields_2_2_2_3) {
+  ProcessDataOut out{-123456789, 5, true, false, true, false, true, false, true};
+  EXPECT_EQ(decode_out(encode(out)), out);
+  ProcessDataIn in{2147483647, 0x55, 0xE0, true, true, false, true, false, false};
+  EXPECT_EQ(decode_in(encode(in)), in);
+}
+
+TEST(ProcessData, WrongLengthIsRefusedWithClearError_2_2) {
+  const std::vector<uint8_t> five(5, 0), eight(8, 0);
+  try {
+    decode_out(std::span<const uint8_t>(five));
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "process data out frame must be 6 bytes, got 5");
+  }
+  EXPECT_THROW(decode_in(std::span<const uint8_t>(eight)), std::invalid_argument);
+  EXPECT_NO_THROW(decode_in(std::span<const uint8_t>(std::vector<uint8_t>(7, 0))));
+}
+
+TEST(PositionCoding, ExamplesOfTheTable_2_5) {
+  EXPECT_EQ(wrap_wire_position(0), 0);
+  EXPECT_EQ(wrap_wire_position(65536), 65536);                  // 360 deg
+  EXPECT_EQ(wrap_wire_position(-65536), -65536);                // -360 deg
+  EXPECT_EQ(wrap_wire_position(-1), -1);                        // approx -0.0055 deg
+  EXPECT_EQ(wrap_wire_position(int64_t{1} << 31), INT32_MIN);   // +2^15 rev overflows to -2^15 rev
+  EXPECT_EQ(wrap_wire_position((int64_t{1} << 31) + 65536), INT32_MIN + 65536);
+  EXPECT_EQ(wrap_wire_position(-(int64_t{1} << 31) - 1), INT32_MAX);
+}
+
+} // namespace
+} // namespace sreh
