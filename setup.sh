@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Installs everything sreh-twin needs from Debian 12 packages, as root on a
+# fresh machine (README "Quick start"). Safe to run again.
+set -euo pipefail
+if [ "$(id -u)" -ne 0 ]; then
+  echo "setup.sh: run as root (it installs Debian packages with apt-get)" >&2
+  exit 2
+fi
+export DEBIAN_FRONTEND=noninteractive
+packages=(
+  build-essential cmake pkg-config git ca-certificates   # compiler, build
+  libmujoco-dev libqhull-dev                              # physics (mujocoConfig.cmake needs the qhull headers)
+  libeigen3-dev libyaml-cpp-dev                           # linear algebra, scenario files
+  libcli11-dev libfmt-dev nlohmann-json3-dev              # command line, formatting, JSON output
+  libgtest-dev libgmock-dev libbenchmark-dev              # tests, benchmarks
+  libosmesa6-dev libpng-dev ffmpeg                        # off-screen rendering, PNG frames, H.264 video
+)
+if [ "${SREH_WITH_BROWSER:-0}" = 1 ]; then
+  packages+=(chromium) # only for the report-in-a-browser test
+fi
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
