@@ -1,0 +1,77 @@
+// Dependency-free SVG line plots (issue 7; design/mujoco.md "Plots": no C++
+// plotting library is packaged in Debian 12). Axes with "nice" ticks, units,
+// a legend, horizontal limit lines, vertical markers and shaded bands.
+// Long series are decimated to min/max per pixel column, so a plot stays a
+// few tens of kB whatever the trace length, and spikes survive.
+#pragma once
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace sreh::svg {
+
+struct Series {
+  std::string label;
+  std::vector<double> x;
+  std::vector<double> y;
+  std::string color = "#1f77b4";
+  double width_px = 1.5;
+  bool dashed = false;
+};
+
+struct HLine {
+  double y = 0;
+  std::string label; // empty: not in the legend
+  std::string color = "#d62728";
+  bool dashed = true;
+};
+
+struct VLine {
+  double x = 0;
+  std::string label; // written next to the line, at the top
+  std::string color = "#555555";
+};
+
+// A shaded rectangle; an unset edge extends to the plot area's edge.
+struct Band {
+  std::optional<double> x_lo, x_hi, y_lo, y_hi;
+  std::string label;
+  std::string color = "#2ca02c";
+  double opacity = 0.15;
+};
+
+struct Axis {
+  std::string label;
+  std::string unit;
+  std::optional<double> min, max; // unset: from the data
+};
+
+struct Plot {
+  std::string id = "plot"; // unique within one HTML page (clip path id)
+  std::string title;
+  Axis x, y;
+  std::vector<Series> series;
+  std::vector<HLine> hlines;
+  std::vector<VLine> vlines;
+  std::vector<Band> bands;
+  int width_px = 760;
+  int height_px = 280;
+};
+
+// The SVG element (no XML prolog), ready to inline in HTML.
+std::string to_svg(const Plot& plot);
+
+// About `max_ticks` (>= 2) tick values at 1/2/2.5/5 x 10^n covering [lo, hi].
+std::vector<double> nice_ticks(double lo, double hi, int max_ticks = 6);
+
+// Indices of the points kept when `x` (ascending) is drawn into `columns`
+// pixel columns over [x_lo, x_hi]: per column the first, min, max and last
+// point, in order; plus one point either side of the range.
+std::vector<std::size_t> decimate_min_max(const std::vector<double>& x, const std::vector<double>& y, double x_lo,
+                                          double x_hi, int columns);
+
+std::string xml_escape(std::string_view text);
+
+} // namespace sreh::svg

@@ -1,0 +1,80 @@
+// SVG plots (issue 7): nice ticks, min/max decimation keeps spikes and bounds
+// the size, markup is escaped.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "renders/svg_plot.hpp"
+
+namespace sreh::svg {
+namespace {
+
+std::size_t count(const std::string& s, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t p = s.find(what); p != std::string::npos; p = s.find(what, p + 1)) ++n;
+  return n;
+}
+
+TEST(NiceTicks, CoverTheRangeWithRoundSteps) {
+  EXPECT_EQ(nice_ticks(0.0, 1.0, 6), (std::vector<double>{0.0, 0.2, 0.4, 0.6, 0.8, 1.0}));
+  const auto t = nice_ticks(-0.013, 0.047, 5);
+  ASSERT_GE(t.size(), 3u);
+  EXPECT_NEAR(t[1] - t[0], 0.02, 1e-12);
+  EXPECT_GE(t.front(), -0.013);
+  EXPECT_LE(t.back(), 0.047);
+  EXPECT_TRUE(nice_ticks(1.0, 1.0).empty());
+}
+
+TEST(Decimation, KeepsSpikesAndBoundsThePointCount) {
+  std::vector<double> x(200000), y(200000);
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    x[i] = static_cast<double>(i) * 1e-4;
+    y[i] = std::sin(x[i]);
+  }
+  y[123457] = 50.0; // a one-sample spike must survive
+  const auto keep = decimate_min_max(x, y, 0.0, x.back(), 700);
+  EXPECT_LE(keep.size(), 4u * 700u + 2u);
+  EXPECT_NE(std::find(keep.begin(), keep.end(), std::size_t{123457}), keep.end());
+  EXPECT_TRUE(std::is_sorted(keep.begin(), keep.end()));
+}
+
+TEST(Decimation, ShortSeriesAreKeptWholeWithOneNeighbourOutsideTheRange) {
+  const std::vector<double> x{0, 1, 2, 3, 4}, y{0, 1, 0, 1, 0};
+  EXPECT_EQ(decimate_min_max(x, y, 1.5, 3.5, 100), (std::vector<std::size_t>{1, 2, 3, 4}));
+}
+
+TEST(SvgPlot, HasAxesLegendLimitLinesBandsAndEscapedText) {
+  Plot p;
+  p.id = "t1";
+  p.title = "a < b & c";
+  p.x = {"time", "s", {}, {}};
+  p.y = {"torque", "N m", {}, {}};
+  p.series = {{"motor torque", {0, 1, 2}, {0, 0.3, -0.2}, "#f00", 1.5, false}};
+  p.hlines = {{0.485, "motor limit", "#d62728", true}};
+  p.bands = {{{}, {}, -0.1, 0.1, "window", "#0a0", 0.2}};
+  p.vlines = {{1.0, "(b)", "#555"}};
+  const std::string s = to_svg(p);
+  EXPECT_EQ(s.rfind("<svg", 0), 0u);
+  EXPECT_NE(s.find("a &lt; b &amp; c"), std::string::npos);
+  EXPECT_NE(s.find("time [s]"), std::string::npos);
+  EXPECT_NE(s.find("torque [N m]"), std::string::npos);
+  EXPECT_EQ(count(s, "class=\"series\""), 1u);
+  EXPECT_EQ(count(s, "class=\"limit\""), 1u);
+  EXPECT_EQ(count(s, "class=\"band\""), 1u);
+  EXPECT_NE(s.find(">motor limit<"), std::string::npos);
+  EXPECT_NE(s.find(">(b)<"), std::string::npos);
+  EXPECT_NE(s.find("clip-path=\"url(#t1-clip)\""), std::string::npos);
+  EXPECT_GE(count(s, "<text"), 8u); // title, ticks, axis titles, legend
+}
+
+TEST(SvgPlot, ConstantAndEmptySeriesStillDraw) {
+  Plot p;
+  p.series = {{"flat", {0, 1}, {24, 24}, "#000", 1, false}, {"empty", {}, {}, "#000", 1, false}};
+  const std::string s = to_svg(p);
+  EXPECT_EQ(s.find("nan"), std::string::npos);
+  EXPECT_EQ(s.find("inf"), std::string::npos);
+  EXPECT_NE(s.find("</svg>"), std::string::npos);
+}
+
+} // namespace
+} // namespace sreh::svg
