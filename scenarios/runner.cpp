@@ -39,9 +39,12 @@ class ScenarioRun {
     try {
       twin_ = std::make_unique<Twin>(config);
     } catch (const std::invalid_argument& e) {
+      // One line on stderr (interfaces.md): MuJoCo's messages span several.
+      std::string why = e.what();
+      std::replace(why.begin(), why.end(), '\n', ' ');
       const bool has_load = !std::holds_alternative<NoLoad>(s_.load);
       throw ScenarioError(has_load ? s_.load_loc : SourceLoc{s_.file, 0, 0},
-                          fmt::format("{}the twin rejects this setup: {}", has_load ? "load: " : "", e.what()));
+                          fmt::format("{}the twin rejects this setup: {}", has_load ? "load: " : "", why));
     }
     r_.name = s_.name;
     const Snapshot first = take_snapshot(*twin_);
