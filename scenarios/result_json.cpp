@@ -7,6 +7,8 @@ namespace {
 
 // JSON has no infinity / NaN: such values become null.
 nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+// Simulated times are whole cycles; rounding hides float noise (0.10400000000000001).
+nlohmann::json time_s(double v) { return number(std::round(v * 1e9) / 1e9); }
 
 } // namespace
 
@@ -27,7 +29,7 @@ nlohmann::json to_json(const RunResult& r) {
                       {"line", c.line},
                       {"description", c.description},
                       {"passed", c.passed},
-                      {"t_s", number(c.t_s)},
+                      {"t_s", time_s(c.t_s)},
                       {"actual", c.actual}});
   }
   return {
@@ -43,7 +45,7 @@ nlohmann::json to_json(const RunResult& r) {
         {"warning_code", r.final_state.warning_code},
         {"led", std::string(led_name(r.final_state.led))}}},
       {"checks", checks},
-      {"sim_time_s", number(r.sim_time_s)},
+      {"sim_time_s", time_s(r.sim_time_s)},
       {"cycles", r.cycles},
       {"max_tracking_error_deg", number(r.max_tracking_error_deg)},
       {"max_temperature_C", number(r.max_temperature_C)},

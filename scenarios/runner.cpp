@@ -54,7 +54,7 @@ class ScenarioRun {
       for (std::size_t i = 0; i < s_.device.isdu.size(); ++i) {
         isdu_write(s_.device.isdu[i], fmt::format("device.isdu[{}]", i + 1));
       }
-      run_steps(s_.steps, "");
+      run_steps(s_.steps);
     } catch (const StopRun&) {
       r_.stopped_early = true;
     }
@@ -90,19 +90,20 @@ class ScenarioRun {
     r_.checks.push_back(CheckRecord{step, loc.line, description, passed, twin_->time_s(), actual});
     if (passed) return;
     r_.passed = false;
-    r_.failures.push_back(fmt::format("step {} (line {}): {}: {} at t={:.3f} s", step, loc.line, description, why,
-                                      twin_->time_s()));
+    // The module's own view at that moment helps to see why (e.g. an error state).
+    const Snapshot now = take_snapshot(*twin_);
+    r_.failures.push_back(fmt::format("step {} (line {}{}): {}: {} at t={:.3f} s [{}, {:.3f} deg, error_code {}, warning_code {}]",
+                                      step, loc.line, pass_, description, why, twin_->time_s(),
+                                      state_name(now.state), now.position_deg, now.in.error_code,
+                                      now.in.warning_code));
     if (s_.stop_on_failure) throw StopRun{};
   }
 
   // ---- steps ----
-  void run_steps(const std::vector<Step>& steps, const std::string& pass) {
-    for (const Step& step : steps) run_step(step, pass);
-  }
-
-  void run_step(const Step& step, const std::string& pass) {
-    const std::string id = step.number + pass;
-    std::visit([&](const auto& a) { execute(step, id, a); }, step.action);
+  void run_steps(const std::vector<Step>& steps) {
+    for (const Step& step : steps) {
+      std::visit([&](const auto& a) { execute(step, step.number, a); }, step.action);
+    }
   }
 
   void execute(const Step&, const std::string&, const PdStep& a) {
@@ -204,8 +205,13 @@ class ScenarioRun {
   void execute(const Step&, const std::string&, const PowerCycleStep&) { twin_->power_cycle(); }
   void execute(const Step&, const std::string&, const CommentStep&) {}
 
-  void execute(const Step&, const std::string& id, const RepeatStep& a) {
-    for (int i = 0; i < a.times; ++i) run_steps(a.steps, fmt::format(" (pass {} of step {})", i + 1, id));
+  void execute(const Step&, const std::string&, const RepeatStep& a) {
+    const std::string outer = pass_;
+    for (int i = 0; i < a.times; ++i) {
+      pass_ = fmt::format("{}, pass {}/{}", outer, i + 1, a.times);
+      run_steps(a.steps);
+    }
+    pass_ = outer;
   }
 
   static std::string describe(const Conditions& c) {
@@ -268,6 +274,7 @@ class ScenarioRun {
   std::unique_ptr<Twin> twin_;
   ProcessDataOut pd_{}; // the PLC's outputs; kept across power cycles like a real PLC's
   RunResult r_;
+  std::string pass_; // ", pass 2/5" inside a repeat
 };
 
 std::vector<uint8_t> read_bytes(const std::string& path, const SourceLoc& loc) {
