@@ -118,11 +118,13 @@ TEST_F(OffscreenTest, OverlayTextIsDrawnTopLeft) {
 // Manual 3.1 / index 83: the LED band shows the state colour. The band's
 // pixels are found as those that change between two distinct colours; their
 // mean colour must then point the way the set colour points.
-TEST_F(OffscreenTest, LedBandPixelsTakeTheSetColour) {
-  SceneState red, blue;
-  red.led = LedColor::Red;
-  blue.led = LedColor::Blue;
-  const RgbImage ir = render(red), ib = render(blue);
+void expect_led_band_takes_the_set_colour(OffscreenRenderer& r, const mjModel* m, mjData* d) {
+  auto render = [&](LedColor c) {
+    SceneState s;
+    s.led = c;
+    return r.render(m, d, s);
+  };
+  const RgbImage ir = render(LedColor::Red), ib = render(LedColor::Blue);
   std::vector<std::pair<int, int>> band;
   for (int y = 0; y < ir.height; ++y)
     for (int x = 0; x < ir.width; ++x) {
@@ -132,31 +134,61 @@ TEST_F(OffscreenTest, LedBandPixelsTakeTheSetColour) {
   ASSERT_GT(band.size(), 30u) << "LED band not visible";
 
   auto mean_colour = [&](LedColor c) {
-    SceneState s;
-    s.led = c;
-    const RgbImage img = render(s);
-    std::array<double, 3> m{};
+    const RgbImage img = render(c);
+    std::array<double, 3> mean{};
     for (auto [x, y] : band)
-      for (int k = 0; k < 3; ++k) m[static_cast<std::size_t>(k)] += img.at(x, y)[static_cast<std::size_t>(k)];
-    for (double& v : m) v /= static_cast<double>(band.size());
-    return m;
+      for (std::size_t k = 0; k < 3; ++k) mean[k] += img.at(x, y)[k];
+    for (double& v : mean) v /= static_cast<double>(band.size());
+    return mean;
   };
   for (LedColor c : {LedColor::Green, LedColor::Yellow, LedColor::Blue, LedColor::Red, LedColor::Orange,
                      LedColor::White, LedColor::Violet}) {
-    const auto m = mean_colour(c);
+    const auto mean = mean_colour(c);
     const auto want = led_look(c).rgba;
     double dot = 0, nm = 0, nw = 0;
     for (std::size_t k = 0; k < 3; ++k) {
-      dot += m[k] * want[k];
-      nm += m[k] * m[k];
+      dot += mean[k] * want[k];
+      nm += mean[k] * mean[k];
       nw += double(want[k]) * want[k];
     }
-    EXPECT_GT(dot / std::sqrt(nm * nw), 0.97) << led_name(c) << " rendered " << m[0] << "," << m[1] << "," << m[2];
+    EXPECT_GT(dot / std::sqrt(nm * nw), 0.97) << led_name(c) << " rendered " << mean[0] << "," << mean[1] << "," << mean[2];
   }
   const auto off = mean_colour(LedColor::Off);
   const auto white = mean_colour(LedColor::White);
   EXPECT_LT(off[0] + off[1] + off[2], 0.4 * (white[0] + white[1] + white[2])) << "off must look dark";
   EXPECT_NEAR(off[0], off[2], 20.0) << "off must look grey, not coloured";
+}
+
+TEST_F(OffscreenTest, LedBandPixelsTakeTheSetColour) { expect_led_band_takes_the_set_colour(*renderer_, md_->m, md_->d); }
+
+// The module model the twin uses (models/sreh50.xml): frames well, LED band
+// visible from the default camera, ghost and flange move the picture.
+TEST(OffscreenModuleModel, RendersTheRealModuleWithItsLedBandAndGhost) {
+  const std::string path = std::string(SREH_SOURCE_DIR) + "/models/sreh50.xml";
+  char error[1000] = "";
+  mjModel* m = mj_loadXML(path.c_str(), nullptr, error, sizeof error);
+  if (!m) GTEST_SKIP() << "models/sreh50.xml not loadable: " << error;
+  mjData* d = mj_makeData(m);
+  mj_forward(m, d);
+  {
+    RenderOptions o;
+    o.width_px = 320;
+    o.height_px = 180;
+    OffscreenRenderer r(m, o);
+    const RgbImage a = r.render(m, d, {});
+    EXPECT_GT(luminance_variance(a), 100.0);
+    expect_led_band_takes_the_set_colour(r, m, d);
+    SceneState ghost;
+    ghost.ghost_joint_rad = 2.0;
+    EXPECT_GT(differing_pixels(a, r.render(m, d, ghost)), 20u);
+    d->qpos[m->jnt_qposadr[mj_name2id(m, mjOBJ_JOINT, "flange")]] = 1.0;
+    mj_forward(m, d);
+    EXPECT_GT(differing_pixels(a, r.render(m, d, {})), 20u);
+    r.set_camera([] { CameraSpec c; c.model_camera = "front"; return c; }());
+    EXPECT_GT(luminance_variance(r.render(m, d, {})), 100.0);
+  }
+  mj_deleteData(d);
+  mj_deleteModel(m);
 }
 
 } // namespace
