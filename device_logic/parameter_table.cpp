@@ -105,8 +105,9 @@ constexpr std::array kHead = {
         "Data Storage", "per entry 2 index + 1 subindex + 1 length + data octets (A-PARAM-7)"),
     num(3, 4, "Parameter_Checksum", PT::UInt32, AC::R, ST::Volatile, "-", "", 1.0, 0, kU32Max, 0, "8",
         "Data Storage", "CRC-32 over the Data Storage set (A-PARAM-7)"),
-    text(3, 5, "Index_List", PT::OctetString, AC::R, ST::Volatile, "", kIsduMaxOctets, "8", "OctetString",
-         "entries index(2) + subindex(1), ended by index 0 (2 octets)"),
+    ParameterEntry{3, 5, "Index_List", PT::OctetString, AC::R, ST::Volatile, "", "", 1.0, 0, 0, 0, "", "8",
+                   kIsduMaxOctets, "Data Storage", "OctetString",
+                   "entries index(2) + subindex(1), ended by index 0 (2 octets)"},
     // 6.5 identification data.
     text(13, 0, "Profile characteristics", PT::OctetString, AC::R, ST::Identification, kProfiles, 6, "6.5, 1",
          "uint16[]", "0x4000 Common Profile, 0x8101 Locator, 0x0031 Firmware Update"),
@@ -164,7 +165,8 @@ constexpr std::array kTail = {
     num(87, 2, "Position tracking error monitoring active", PT::UInt8, AC::RW, ST::Config, "-", "", 1.0, 0, 1,
         1, "6.2", "Position tracking error monitoring", "0: inactive, 1: active"),
     // 6.3 persistent diagnostics (read-only; counters updated by the Device).
-    num(96, 0, "Number of rotations", PT::UInt32, AC::R, ST::PersistentDiag, "1", "1", 1.0, 0, kU32Max, 0,
+    // DE original "Anzahl Drehbewegungen": moves, not revolutions (EN says "rotations").
+    num(96, 0, "Number of rotary movements", PT::UInt32, AC::R, ST::PersistentDiag, "1", "1", 1.0, 0, kU32Max, 0,
         "6.3"),
     num(97, 1, "Total operating time", PT::UInt32, AC::R, ST::PersistentDiag, "min", "h", kHoursPerMinute, 0,
         kU32Max, 0, "6.3", "Operating hours counter"),
