@@ -2,6 +2,7 @@
 // physical motor limit, renderer hooks.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "device_logic/units.hpp"
@@ -99,6 +100,30 @@ TEST(Plant, HardStopBlocksTheFlangeAtItsAngle) {
   EXPECT_NEAR(plant.velocity_rad_s(), 0.0, 1e-3);
   run(plant, MotorCommand{-0.485, true}, 8000);
   EXPECT_NEAR(rad_to_deg(plant.angle_rad()), -45.0, 0.1);
+}
+
+// Regression: with MuJoCo's default Newton solver this went unstable (bad
+// qacc) after ~1 s of peak torque into a stop with no load; PGS holds.
+TEST(Plant, HardStopHoldsPeakTorqueWithoutLoad) {
+  PlantConfig c;
+  c.hard_stops = {HardStop{30.0}};
+  Plant plant(c);
+  double max_deg = 0;
+  for (int i = 0; i < 20000; ++i) {
+    plant.step(MotorCommand{0.6, true});
+    max_deg = std::max(max_deg, rad_to_deg(plant.angle_rad()));
+  }
+  EXPECT_LT(max_deg, 30.2); // impact at ~70 rad/s
+  EXPECT_NEAR(rad_to_deg(plant.angle_rad()), 30.0, 0.01);
+}
+
+// Bearing friction holds a torque below it without visible creep (mujoco.md:
+// default friction solref creeps; A-TWIN-2).
+TEST(Plant, BearingFrictionHoldsWithoutCreep) {
+  Plant plant(PlantConfig{});
+  plant.set_external_torque(0.5 * plant.model()->dof_frictionloss[0]);
+  for (int i = 0; i < 10000; ++i) plant.step(MotorCommand{}); // 1 s
+  EXPECT_LT(std::abs(plant.angle_rad()), 2 * kPi / 524288.0); // below one encoder count
 }
 
 TEST(Plant, WithoutHardStopsTheFlangeTurnsFreely) {

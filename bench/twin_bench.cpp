@@ -1,0 +1,122 @@
+// The twin's step (device tick + plant step + move tracking) against a bare
+// mj_step of the same model, in one run (issue 5). One iteration = one
+// IO-Link cycle = 20 physics steps of 0.1 ms. Prints the ratio and the
+// real-time factor at the end. Figures: docs/performance-twin.md.
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <map>
+#include <string>
+
+#include "device_logic/units.hpp"
+#include "twin/load_builder.hpp"
+#include "twin/plant.hpp"
+#include "twin/twin.hpp"
+
+namespace sreh {
+namespace {
+
+constexpr double kLoad_gcm2 = 2000;
+constexpr int kStepsPerCycle = 20;
+
+void BM_BareMjStep(benchmark::State& state) {
+  BuiltModel built = build_model(InertiaLoad{kLoad_gcm2}, {}, 1e-4);
+  MjDataPtr data(mj_makeData(built.model.get()));
+  int64_t k = 0;
+  for (auto _ : state) {
+    for (int i = 0; i < kStepsPerCycle; ++i, ++k) {
+      data->ctrl[0] = (k / 2000) % 2 == 0 ? 0.3 : -0.3; // a torque square wave, 0.2 s period
+      mj_step(built.model.get(), data.get());
+    }
+  }
+  benchmark::DoNotOptimize(data->qpos[0]);
+  state.counters["realtime_x"] = benchmark::Counter(2e-3 * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+
+void BM_PlantStep(benchmark::State& state) {
+  PlantConfig c;
+  c.load = InertiaLoad{kLoad_gcm2};
+  Plant plant(c);
+  int64_t k = 0;
+  for (auto _ : state) {
+    for (int i = 0; i < kStepsPerCycle; ++i, ++k) {
+      plant.step(MotorCommand{(k / 2000) % 2 == 0 ? 0.3 : -0.3, true});
+    }
+  }
+  benchmark::DoNotOptimize(plant.angle_rad());
+  state.counters["realtime_x"] = benchmark::Counter(2e-3 * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+
+// A PLC program: motor on, then moves between 0 and 90 deg, each started
+// when the previous one is Done (manual 3.4 handshake: Move back to 0 first).
+void BM_TwinCycle(benchmark::State& state) {
+  TwinConfig c;
+  c.load = InertiaLoad{kLoad_gcm2};
+  c.record_trace = state.range(0) != 0;
+  Twin twin(c);
+  const uint8_t load_raw[2] = {static_cast<uint8_t>(2000 >> 8), static_cast<uint8_t>(2000 & 0xFF)};
+  twin.isdu_write(65, 4, load_raw);
+  ProcessDataOut pd;
+  pd.motor_on = true;
+  pd.parameter_set = 1;
+  twin.set_pd_out(pd);
+  bool at_90 = false;
+  for (auto _ : state) {
+    const ProcessDataIn in = twin.pd_in();
+    if (in.ready && !pd.move) {
+      pd.target_position = at_90 ? 0 : static_cast<int32_t>(deg_to_wire_counts(90));
+      pd.move = true;
+      at_90 = !at_90;
+    } else if (in.done && pd.move) {
+      pd.move = false;
+    }
+    twin.set_pd_out(pd);
+    twin.run_cycle();
+  }
+  state.counters["moves"] = static_cast<double>(twin.moves().size());
+  state.counters["realtime_x"] = benchmark::Counter(2e-3 * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+
+BENCHMARK(BM_BareMjStep)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_PlantStep)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_TwinCycle)->Arg(0)->Arg(1)->ArgName("trace")->Unit(benchmark::kMicrosecond);
+
+// Console output plus the ratio twin / bare at the end.
+class RatioReporter : public benchmark::ConsoleReporter {
+ public:
+  void ReportRuns(const std::vector<Run>& runs) override {
+    ConsoleReporter::ReportRuns(runs);
+    // CPU time: on a shared 2-core machine wall time mostly measures the
+    // neighbours. With --benchmark_repetitions the median is kept.
+    for (const Run& r : runs) {
+      if (r.run_type == Run::RT_Iteration && !us_per_cycle_.count(r.run_name.str())) {
+        us_per_cycle_[r.run_name.str()] = r.GetAdjustedCPUTime();
+      } else if (r.run_type == Run::RT_Aggregate && r.aggregate_name == "median") {
+        us_per_cycle_[r.run_name.str()] = r.GetAdjustedCPUTime();
+      }
+    }
+  }
+  void Finalize() override {
+    ConsoleReporter::Finalize();
+    const auto bare = us_per_cycle_.find("BM_BareMjStep");
+    if (bare == us_per_cycle_.end()) return;
+    for (const auto& [name, us] : us_per_cycle_) {
+      std::printf("%-24s %7.2f us/cycle (CPU)  %6.3f us/step  %7.1fx real time  %5.2fx bare mj_step\n", name.c_str(), us,
+                  us / kStepsPerCycle, 2000.0 / us, us / bare->second);
+    }
+  }
+
+ private:
+  std::map<std::string, double> us_per_cycle_;
+};
+
+} // namespace
+} // namespace sreh
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  sreh::RatioReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  benchmark::Shutdown();
+  return 0;
+}
