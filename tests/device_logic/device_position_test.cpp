@@ -7,7 +7,6 @@
 namespace sreh::test {
 namespace {
 
-int32_t wire(double deg) { return static_cast<int32_t>(deg_to_wire_counts(deg)); }
 
 TEST(PositionModes, Absolute_3_4) {
   Rig r;
