@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "device_logic/planner.hpp"
+#include "device_logic/position_controller.hpp"
 #include "device_logic/units.hpp"
 
 namespace {
@@ -94,6 +95,24 @@ void BM_SampleRandomTime(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_SampleRandomTime);
+
+// One position-controller step (the other per-step cost of the device),
+// following a profile through a perfect plant so all terms are live.
+void BM_ControllerUpdate(benchmark::State& state) {
+  const Profile p = Profile::rest_to_rest(sreh::deg_to_rad(360.0), sreh::limits_from_parameter_set(3000, 100, 100, 2000));
+  sreh::PositionController c;
+  c.reset(0.0);
+  const double dt = 1e-4;
+  double t = 0;
+  for (auto _ : state) {
+    const KinematicState s = p.at(t);
+    double torque = c.update(s, s.pos * 0.999, 3.15e-4, 0.6, 0.6, dt);
+    benchmark::DoNotOptimize(torque);
+    t += dt;
+    if (t > p.duration_s()) t = 0;
+  }
+}
+BENCHMARK(BM_ControllerUpdate);
 
 } // namespace
 
