@@ -210,6 +210,7 @@ class ScenarioRun {
     for (int i = 0; i < a.times; ++i) {
       pass_ = fmt::format("{}, pass {}/{}", outer, i + 1, a.times);
       run_steps(a.steps);
+      if (a.until && evaluate(*a.until, take_snapshot(*twin_)).passed) break;
     }
     pass_ = outer;
   }

@@ -112,7 +112,8 @@ struct CommentStep { std::string text; };
 
 struct Step;
 struct RepeatStep {
-  int times = 1;
+  int times = 1;                  // at most this many passes
+  std::optional<Conditions> until; // checked after each pass: holds -> stop repeating (not a check)
   std::vector<Step> steps;
 };
 

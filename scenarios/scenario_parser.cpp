@@ -254,9 +254,14 @@ class Parser {
       step.action = PowerCycleStep{};
     } else if (k == "comment") step.action = CommentStep{r_.text(v, kw)};
     else { // repeat
-      r_.check_map(v, kw, {"times", "steps"});
+      r_.check_map(v, kw, {"times", "until", "steps"});
       RepeatStep rep;
       rep.times = static_cast<int>(r_.integer(r_.require(v, "times", kw), kw + ".times", 1, kMaxRepeat));
+      if (const YAML::Node u = v["until"]) {
+        r_.check_map(u, kw + ".until", kConditionKeys);
+        rep.until = parse_conditions(u, kw + ".until");
+        if (rep.until->empty()) r_.fail(u, kw + ".until: no condition");
+      }
       rep.steps = parse_steps(r_.require(v, "steps", kw), number + ".", kw + ".steps");
       step.action = std::move(rep);
     }

@@ -93,6 +93,14 @@ TEST(ScenarioRunner, RepeatRunsItsStepsTimes) {
   EXPECT_EQ(r.checks.size(), 4u);
 }
 
+TEST(ScenarioRunner, RepeatUntilStopsEarly) {
+  // Pass 1 switches the motor on; `until` (Ready) then holds and ends the loop.
+  const RunResult r = run("name: x\nsteps:\n  - repeat: {times: 50, until: {state: Ready}, steps: [{pd: {motor_on: 1}}, "
+                          "{wait_s: 0.01}]}\n");
+  EXPECT_EQ(r.cycles, 6u);
+  EXPECT_TRUE(r.passed);
+}
+
 TEST(ScenarioRunner, JsonHoldsTheInterfaceKeys) {
   const RunResult r = run("name: x\nsteps:\n  - wait_s: 0.01\n");
   const nlohmann::json j = to_json(r);
