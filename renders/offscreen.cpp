@@ -218,6 +218,7 @@ OffscreenRenderer::OffscreenRenderer(const mjModel* m, const RenderOptions& opti
   mjv_defaultOption(&s.opt);
   mjv_defaultCamera(&s.cam);
   s.scn.flags[mjRND_SHADOW] = options.shadows ? 1 : 0;
+  s.scn.flags[mjRND_REFLECTION] = options.reflections ? 1 : 0;
 
   s.flange_jnt = mj_name2id(m, mjOBJ_JOINT, "flange");
   s.led_geom = mj_name2id(m, mjOBJ_GEOM, "led_band");

@@ -34,9 +34,10 @@ struct CameraSpec {
 struct RenderOptions {
   int width_px = 1280;   // must be even (yuv420p video)
   int height_px = 720;
-  int msaa_samples = 4;  // m->vis.quality.offsamples (A-RENDERS-3)
-  bool shadows = true;
-  int shadow_size = 2048; // shadow map texture size
+  int msaa_samples = 4;    // m->vis.quality.offsamples (A-RENDERS-3)
+  bool shadows = false;    // off by default: 3x the render cost, jagged at 1024 (A-RENDERS-3)
+  int shadow_size = 2048;  // shadow map texture size when shadows are on
+  bool reflections = false; // reflective materials (e.g. the table) mirror the module
 };
 
 // What changes per frame besides the physics state.

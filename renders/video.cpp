@@ -152,6 +152,7 @@ VideoRecorder::VideoRecorder(const mjModel* m, const VideoOptions& o) : impl_(st
   ro.msaa_samples = o.msaa_samples;
   ro.shadows = o.shadows;
   ro.shadow_size = o.shadow_size;
+  ro.reflections = o.reflections;
   try {
     s.renderer = std::make_unique<OffscreenRenderer>(m, ro, o.camera);
     if (!o.path.empty()) {

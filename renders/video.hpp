@@ -29,8 +29,9 @@ struct VideoOptions {
   std::filesystem::path frames_dir; // non-empty: PNG frames frame_000000.png ... here
   // Quality/speed (A-RENDERS-3, A-RENDERS-5).
   int msaa_samples = 4;
-  bool shadows = true;
-  int shadow_size = 1024;
+  bool shadows = false;
+  int shadow_size = 2048;
+  bool reflections = false;
   std::string x264_preset = "fast";
   int crf = 20;
   bool threaded = true;             // false: render and write on the caller's thread (the reference loop)
