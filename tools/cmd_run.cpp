@@ -134,7 +134,7 @@ SREH_REGISTER_COMMAND(10, [](CLI::App& app, int& exit_code) {
   CLI::App* cmd = app.add_subcommand("run", "Simulate a scenario and check its expectations (exit 0 held, 1 failed, 2 bad input)");
   cmd->add_option("scenario", args->scenario, "Scenario file (YAML, see scenarios/README.md)")->required();
   cmd->add_option("--trace", args->trace, "Write a CSV trace, one row per IO-Link cycle");
-  cmd->add_option("--trace-every", args->trace_every, "Keep every Nth cycle in the trace")->check(CLI::PositiveNumber);
+  cmd->add_option("--trace-every", args->trace_every, "Keep every Nth cycle in the trace")->check(CLI::Range(1, 1000000));
   cmd->add_flag("--json", args->json, "Print one JSON object with the results on stdout");
   cmd->add_option("--video", args->video, "Render an MP4 video of the run");
   cmd->add_option("--fps", args->fps, "Video frames per second")->check(CLI::Range(1, 240));

@@ -2,6 +2,8 @@
 // boundaries, checks recorded with step and line, bounded waits.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <fstream>
 #include <string>
 
 #include "scenarios/result_json.hpp"
@@ -99,6 +101,22 @@ TEST(ScenarioRunner, RepeatUntilStopsEarly) {
                           "{wait_s: 0.01}]}\n");
   EXPECT_EQ(r.cycles, 6u);
   EXPECT_TRUE(r.passed);
+}
+
+TEST(ScenarioRunner, NvmImageCarriesConfigurationIntoTheNextRun) {
+  // interfaces.md: each run starts factory-new unless it names a saved image.
+  const RunResult first = run("name: x\nsteps:\n  - isdu_write: {index: 82, value: 1}\n");
+  const std::string path = ::testing::TempDir() + "scenarios_runner_test.nvm";
+  {
+    std::ofstream out(path, std::ios::binary);
+    out.write(reinterpret_cast<const char*>(first.nvm_image.data()), static_cast<std::streamsize>(first.nvm_image.size()));
+  }
+  const RunResult second =
+      run("name: x\ndevice: {nvm_image: " + path + "}\nsteps:\n  - isdu_read: {index: 82, expect: 1}\n");
+  EXPECT_TRUE(second.passed) << (second.failures.empty() ? "" : second.failures[0]);
+  const RunResult fresh = run("name: x\nsteps:\n  - isdu_read: {index: 82, expect: 0}\n");
+  EXPECT_TRUE(fresh.passed);
+  std::remove(path.c_str());
 }
 
 TEST(ScenarioRunner, JsonHoldsTheInterfaceKeys) {
