@@ -185,3 +185,81 @@ TEST(Twin, GhostShowsThePlannedSetpoint) {
 
 } // namespace
 } // namespace sreh
+
+namespace sreh {
+namespace {
+
+// Runs a PLC program that moves between 0 and `angle_deg` with parameter set
+// 1, `dwell_cycles` IO-Link cycles at each end, until `pred` or max_cycles.
+template <class Pred>
+int cycle_moves(Twin& twin, double angle_deg, int dwell_cycles, int max_cycles, Pred pred) {
+  ProcessDataOut pd;
+  pd.motor_on = true;
+  pd.parameter_set = 1;
+  bool at_far_end = false;
+  int wait = 0;
+  for (int k = 0; k < max_cycles; ++k) {
+    const ProcessDataIn in = twin.pd_in();
+    if (in.ready && !pd.move && wait-- <= 0) {
+      pd.target_position = at_far_end ? 0 : static_cast<int32_t>(deg_to_wire_counts(angle_deg));
+      pd.move = true;
+      at_far_end = !at_far_end;
+    } else if (in.done && pd.move) {
+      pd.move = false;
+      wait = dwell_cycles;
+    }
+    twin.set_pd_out(pd);
+    twin.run_cycle();
+    if (pred()) return k + 1;
+  }
+  return -1;
+}
+
+TwinConfig heavy_config(double time_scale) {
+  TwinConfig c;
+  c.load = InertiaLoad{15000};
+  c.thermal.time_scale = time_scale;
+  c.record_trace = false;
+  return c;
+}
+
+// A-TWIN-THERMAL: sustained fast cycling with the heaviest load reaches the
+// temperature warning (manual 2.4 warning bit 7, 115.1) and then the
+// temperature error (error bit 5, 114.3) within minutes of thermal time.
+// time_scale 20: 30 s simulated = 10 min thermal.
+TEST(Twin, HeavyFastCyclingOverheats_Manual7_2_114_3) {
+  Twin twin(heavy_config(20.0));
+  const uint8_t load[2] = {static_cast<uint8_t>(15000 >> 8), static_cast<uint8_t>(15000 & 0xFF)};
+  ASSERT_TRUE(twin.isdu_write(65, 4, load).ok());
+  int warn = -1;
+  double warn_C = 0;
+  const int error = cycle_moves(twin, 180.0, 0, 30000, [&] {
+    if (warn < 0 && (twin.telemetry().warning_code & 0x80) != 0) {
+      warn = static_cast<int>(twin.cycles());
+      warn_C = twin.telemetry().temperature_C;
+    }
+    return (twin.telemetry().error_code & 0x20) != 0;
+  });
+  ASSERT_GT(warn, 0);
+  EXPECT_GE(warn_C, 70.0);
+  EXPECT_GT(warn * 0.002 * 20.0, 60.0); // not within the first minute
+  ASSERT_GT(error, warn);
+  EXPECT_GT(twin.telemetry().temperature_C, 74.9); // cooling since the error tick
+  EXPECT_LT(error * 0.002 * 20.0, 600.0); // within 10 min
+  EXPECT_EQ(twin.telemetry().state, State::ErrorOff); // manual 2.4: the motor is switched off
+}
+
+// Normal duty: 90 deg moves with 2000 g cm^2 and 0.5 s pauses stay far below.
+TEST(Twin, NormalDutyStaysCool) {
+  TwinConfig c = heavy_config(20.0);
+  c.load = InertiaLoad{2000};
+  Twin twin(c);
+  const uint8_t load[2] = {static_cast<uint8_t>(2000 >> 8), static_cast<uint8_t>(2000 & 0xFF)};
+  ASSERT_TRUE(twin.isdu_write(65, 4, load).ok());
+  cycle_moves(twin, 90.0, 250, 15000, [] { return false; }); // 10 min thermal time
+  EXPECT_LT(twin.telemetry().temperature_C, 40.0);
+  EXPECT_EQ(twin.telemetry().warning_code, 0);
+}
+
+} // namespace
+} // namespace sreh
