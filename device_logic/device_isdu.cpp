@@ -116,9 +116,10 @@ IsduResult Device::Impl::write(uint16_t index, uint8_t sub, std::span<const uint
   }
   const int64_t zero_before = store.raw(86, 0);
   IsduResult r = store.write(index, sub, data);
-  // Manual 4.3.2 / 4.3.3: writing index 86 stores the zero offset and applies it.
-  if (r.ok() && index == 86 && !store.download_open()) init_origin();
-  (void)zero_before;
+  // Manual 4.3.2 / 4.3.3: writing index 86 stores the zero offset and applies
+  // it, also when it arrives through a Data Storage download (index 3).
+  const bool zero_written = index == 86 && !store.download_open();
+  if (r.ok() && (zero_written || store.raw(86, 0) != zero_before)) init_origin();
   return r;
 }
 
