@@ -127,7 +127,10 @@ struct OffscreenRenderer::Impl {
     framed = true;
   }
 
-  void place_ghost(const mjModel* m, mjData* d, double angle_rad) {
+  // The ghost is the mocap body turned about the flange axis by angle_rad
+  // from its model pose (A-RENDERS-7). Posed in the scene only: d stays the
+  // twin's, untouched, and no kinematics are recomputed.
+  void place_ghost(const mjModel* m, const mjData* d, double angle_rad) {
     if (ghost_mocap < 0 || flange_jnt < 0) return;
     const double* a = d->xanchor + 3 * flange_jnt;
     const double* u = d->xaxis + 3 * flange_jnt;
@@ -137,12 +140,9 @@ struct OffscreenRenderer::Impl {
     const double rel[3] = {body_pos[0] - a[0], body_pos[1] - a[1], body_pos[2] - a[2]};
     double rel_rot[3];
     mju_rotVecQuat(rel_rot, rel, q_rot);
-    double* pos = d->mocap_pos + 3 * ghost_mocap;
-    double* quat = d->mocap_quat + 4 * ghost_mocap;
+    double pos[3], quat[4];
     for (int i = 0; i < 3; ++i) pos[i] = a[i] + rel_rot[i];
     mju_mulQuat(quat, q_rot, m->body_quat + 4 * ghost_body);
-    // The kinematics of d still hold the old ghost pose: move its scene
-    // geoms here instead of recomputing the kinematics of the whole model.
     for (int i = 0; i < scn.ngeom; ++i) {
       mjvGeom& g = scn.geoms[i];
       if (g.objtype != mjOBJ_GEOM || m->geom_bodyid[g.objid] != ghost_body) continue;
@@ -242,12 +242,13 @@ void OffscreenRenderer::set_camera(const CameraSpec& camera) {
 int OffscreenRenderer::width() const { return impl_->options.width_px; }
 int OffscreenRenderer::height() const { return impl_->options.height_px; }
 
-void OffscreenRenderer::render_into(const mjModel* m, mjData* d, const SceneState& state, uint8_t* rgb, bool flip) {
+void OffscreenRenderer::render_into(const mjModel* m, const mjData* d, const SceneState& state, uint8_t* rgb, bool flip) {
   Impl& s = *impl_;
   s.make_current();
   mjr_setBuffer(mjFB_OFFSCREEN, &s.con);
   if (!s.framed) s.frame_camera(m, d);
-  mjv_updateScene(m, d, &s.opt, nullptr, &s.cam, mjCAT_ALL, &s.scn);
+  // 2.2.2's mjv_updateScene takes mjData* but only reads it.
+  mjv_updateScene(m, const_cast<mjData*>(d), &s.opt, nullptr, &s.cam, mjCAT_ALL, &s.scn);
   if (state.ghost_joint_rad) s.place_ghost(m, d, *state.ghost_joint_rad);
   s.paint_led(state.led);
   const mjrRect viewport{0, 0, s.options.width_px, s.options.height_px};
@@ -257,7 +258,7 @@ void OffscreenRenderer::render_into(const mjModel* m, mjData* d, const SceneStat
   if (flip) flip_rows(rgb, s.options.width_px, s.options.height_px);
 }
 
-RgbImage OffscreenRenderer::render(const mjModel* m, mjData* d, const SceneState& state) {
+RgbImage OffscreenRenderer::render(const mjModel* m, const mjData* d, const SceneState& state) {
   RgbImage img;
   img.width = impl_->options.width_px;
   img.height = impl_->options.height_px;

@@ -78,11 +78,11 @@ class OffscreenRenderer {
   void set_camera(const CameraSpec& camera);
 
   // Renders the current state of `d` (kinematics as the last step left it).
-  // Writes d->mocap_quat of the ghost when state.ghost_joint_rad is set.
-  RgbImage render(const mjModel_* m, mjData_* d, const SceneState& state);
+  // `d` is only read: the ghost is posed in the scene, not in d->mocap_*.
+  RgbImage render(const mjModel_* m, const mjData_* d, const SceneState& state);
   // Same, into a caller-owned buffer of width*height*3 bytes. With
   // `flip` false the rows stay bottom-up as OpenGL reads them.
-  void render_into(const mjModel_* m, mjData_* d, const SceneState& state, uint8_t* rgb, bool flip = true);
+  void render_into(const mjModel_* m, const mjData_* d, const SceneState& state, uint8_t* rgb, bool flip = true);
 
   int width() const;
   int height() const;

@@ -195,7 +195,7 @@ uint64_t VideoRecorder::frames_emitted() const { return impl_->next_frame; }
 
 bool VideoRecorder::wants_frame(double t_s) const { return t_s + 1e-9 >= frame_time_s(impl_->next_frame); }
 
-void VideoRecorder::add_frame(const mjModel* m, mjData* d, const FrameInfo& info) {
+void VideoRecorder::add_frame(const mjModel* m, const mjData* d, const FrameInfo& info) {
   Impl& s = *impl_;
   if (s.finished) throw std::logic_error("VideoRecorder: add_frame after finish");
   uint64_t count = 0;

@@ -68,9 +68,9 @@ class VideoRecorder {
   // caller's cycles * cycle_s time).
   bool wants_frame(double t_s) const;
   // Renders the state once and emits every frame due up to info.t_s (more
-  // than one when frames are denser than the caller's cycles). Rethrows a
-  // writer-thread failure.
-  void add_frame(const mjModel_* m, mjData_* d, const FrameInfo& info);
+  // than one when frames are denser than the caller's cycles). `d` is only
+  // read (e.g. twin.plant().data()). Rethrows a writer-thread failure.
+  void add_frame(const mjModel_* m, const mjData_* d, const FrameInfo& info);
   // Flushes, waits for ffmpeg, renames F.tmp -> F and DIR.tmp -> DIR.
   // Throws std::runtime_error (and removes the partial output) on failure.
   void finish();
