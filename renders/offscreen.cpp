@@ -127,31 +127,75 @@ struct OffscreenRenderer::Impl {
     framed = true;
   }
 
-  // The ghost is the mocap body turned about the flange axis by angle_rad
-  // from its model pose (A-RENDERS-7). Posed in the scene only: d stays the
-  // twin's, untouched, and no kinematics are recomputed.
-  void place_ghost(const mjModel* m, const mjData* d, double angle_rad) {
+  // Height along the module's up direction (the flange axis, pointing away
+  // from the table) of the top of everything that turns with the flange.
+  static double axial_half_extent(const mjModel* m, const mjData* d, int g, const double* up) {
+    const double* x = d->geom_xmat + 9 * g;
+    const double* size = m->geom_size + 3 * g;
+    const double c[3][3] = {{x[0], x[3], x[6]}, {x[1], x[4], x[7]}, {x[2], x[5], x[8]}}; // geom axes in world
+    const double along_z = std::abs(mju_dot3(up, c[2]));
+    switch (m->geom_type[g]) {
+      case mjGEOM_BOX: return std::abs(mju_dot3(up, c[0])) * size[0] + std::abs(mju_dot3(up, c[1])) * size[1] + along_z * size[2];
+      case mjGEOM_CYLINDER: return along_z * size[1] + std::sqrt(std::max(0.0, 1 - along_z * along_z)) * size[0];
+      case mjGEOM_CAPSULE: return along_z * size[1] + size[0];
+      case mjGEOM_SPHERE: return size[0];
+      default: return m->geom_rbound[g];
+    }
+  }
+
+  // The setpoint ghost and the actual-position pointer (A-RENDERS-7): the
+  // ghost body's geoms turned about the flange axis from their model pose,
+  // lifted onto the top of the load so a load never hides them. Posed in
+  // the scene only: d stays the twin's, untouched.
+  void place_pointers(const mjModel* m, const mjData* d, std::optional<double> ghost_rad) {
     if (ghost_mocap < 0 || flange_jnt < 0) return;
     const double* a = d->xanchor + 3 * flange_jnt;
     const double* u = d->xaxis + 3 * flange_jnt;
-    double q_rot[4];
-    mju_axisAngle2Quat(q_rot, u, angle_rad);
+    const double sign = u[2] >= 0 ? 1.0 : -1.0;
+    const double up[3] = {sign * u[0], sign * u[1], sign * u[2]};
+    const int root = m->body_rootid[m->jnt_bodyid[flange_jnt]];
+    double top = -std::numeric_limits<double>::max();
+    for (int g = 0; g < m->ngeom; ++g) {
+      if (m->body_rootid[m->geom_bodyid[g]] != root || m->geom_group[g] > 2) continue;
+      const double* p = d->geom_xpos + 3 * g;
+      const double rel[3] = {p[0] - a[0], p[1] - a[1], p[2] - a[2]};
+      top = std::max(top, mju_dot3(rel, up) + axial_half_extent(m, d, g, up));
+    }
     const double* body_pos = m->body_pos + 3 * ghost_body;
-    const double rel[3] = {body_pos[0] - a[0], body_pos[1] - a[1], body_pos[2] - a[2]};
-    double rel_rot[3];
-    mju_rotVecQuat(rel_rot, rel, q_rot);
-    double pos[3], quat[4];
-    for (int i = 0; i < 3; ++i) pos[i] = a[i] + rel_rot[i];
-    mju_mulQuat(quat, q_rot, m->body_quat + 4 * ghost_body);
-    for (int i = 0; i < scn.ngeom; ++i) {
-      mjvGeom& g = scn.geoms[i];
-      if (g.objtype != mjOBJ_GEOM || m->geom_bodyid[g.objid] != ghost_body) continue;
-      double gpos[3], gquat[4], gmat[9];
+    const double body_rel[3] = {body_pos[0] - a[0], body_pos[1] - a[1], body_pos[2] - a[2]};
+    const double lift = std::max(0.0, top - mju_dot3(body_rel, up));
+
+    auto pose = [&](double angle, double extra_lift, mjvGeom& g) {
+      double q_rot[4], rel_rot[3], quat[4], gpos[3], gquat[4], gmat[9];
+      mju_axisAngle2Quat(q_rot, u, angle);
+      mju_rotVecQuat(rel_rot, body_rel, q_rot);
+      mju_mulQuat(quat, q_rot, m->body_quat + 4 * ghost_body);
       mju_rotVecQuat(gpos, m->geom_pos + 3 * g.objid, quat);
       mju_mulQuat(gquat, quat, m->geom_quat + 4 * g.objid);
       mju_quat2Mat(gmat, gquat);
-      for (int k = 0; k < 3; ++k) g.pos[k] = static_cast<float>(pos[k] + gpos[k]);
+      for (int k = 0; k < 3; ++k) g.pos[k] = static_cast<float>(a[k] + rel_rot[k] + gpos[k] + (lift + extra_lift) * up[k]);
       for (int k = 0; k < 9; ++k) g.mat[k] = static_cast<float>(gmat[k]);
+    };
+    const int n = scn.ngeom;
+    const double flange_rad = d->qpos[m->jnt_qposadr[flange_jnt]];
+    for (int i = 0; i < n; ++i) {
+      if (scn.geoms[i].objtype != mjOBJ_GEOM || m->geom_bodyid[scn.geoms[i].objid] != ghost_body) continue;
+      // The actual-position pointer: an opaque dark copy at the flange angle
+      // (manual 3.5.2 Fig. 3 draws the actual position black).
+      if (scn.ngeom < scn.maxgeom) {
+        mjvGeom& actual = scn.geoms[scn.ngeom++];
+        actual = scn.geoms[i];
+        pose(flange_rad, 0.0005, actual); // reads the model geom through objid
+        actual.objtype = mjOBJ_UNKNOWN;   // then a decor geom, not the ghost
+        actual.objid = -1;
+        actual.segid = -1;
+        const float dark[4] = {0.08f, 0.08f, 0.09f, 1.0f};
+        std::copy(dark, dark + 4, actual.rgba);
+        actual.transparent = 0;
+        actual.emission = 0;
+      }
+      // The ghost sits just above the pointer so both stay visible.
+      pose(ghost_rad.value_or(flange_rad), 0.0015, scn.geoms[i]);
     }
   }
 
@@ -249,7 +293,7 @@ void OffscreenRenderer::render_into(const mjModel* m, const mjData* d, const Sce
   if (!s.framed) s.frame_camera(m, d);
   // 2.2.2's mjv_updateScene takes mjData* but only reads it.
   mjv_updateScene(m, const_cast<mjData*>(d), &s.opt, nullptr, &s.cam, mjCAT_ALL, &s.scn);
-  if (state.ghost_joint_rad) s.place_ghost(m, d, *state.ghost_joint_rad);
+  s.place_pointers(m, d, state.ghost_joint_rad);
   s.paint_led(state.led);
   const mjrRect viewport{0, 0, s.options.width_px, s.options.height_px};
   mjr_render(viewport, &s.scn, &s.con);

@@ -44,7 +44,8 @@ struct RenderOptions {
 struct SceneState {
   LedColor led = LedColor::Off;
   // Flange joint angle (MuJoCo qpos sense, rad) the setpoint ghost shows;
-  // unset: the ghost is left where the model data has it.
+  // unset: the flange's own angle. Ghost and an opaque actual-position
+  // pointer are drawn on top of the load (A-RENDERS-7).
   std::optional<double> ghost_joint_rad;
   // Text lines drawn in the top-left corner: label column, value column.
   std::vector<std::pair<std::string, std::string>> overlay;
