@@ -275,6 +275,8 @@ OffscreenRenderer::~OffscreenRenderer() {
   OSMesaMakeCurrent(s.osmesa, s.osmesa_buffer.data(), GL_UNSIGNED_BYTE, s.options.width_px, s.options.height_px);
   mjv_freeScene(&s.scn);
   mjr_freeContext(&s.con);
+  // Unbind first: Mesa frees the framebuffer MakeCurrent made only on unbind.
+  OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);
   OSMesaDestroyContext(s.osmesa);
 }
 
