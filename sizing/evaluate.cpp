@@ -1,0 +1,258 @@
+// One parameter set in the twin, as a PLC would run it (interfaces.md: the
+// device only sees process data and ISDU): the set written to 64+n over
+// ISDU, Motor On, then 0 -> A -> 0 moves with the dwell after each Done.
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "device_logic/faults.hpp"
+#include "device_logic/motor_model.hpp"
+#include "device_logic/parameter_table.hpp"
+#include "device_logic/planner.hpp"
+#include "device_logic/units.hpp"
+#include "sizing/sizing.hpp"
+#include "sizing/thermal_estimate.hpp"
+#include "sizing/twin_factory.hpp"
+#include "twin/thermal.hpp"
+
+namespace sreh::sizing {
+namespace {
+
+// A-SIZE-3: how long a move may take beyond travel + settling timeout
+// before the run gives up on it (a stuck move always ends in an error first).
+constexpr double kMoveSlack_s = 0.5;
+constexpr int kSwitchOnCycles = 100; // T1 takes one IO-Link cycle; generous
+// A-SIZE-9: a dwell longer than this is simulated only this long; the rest
+// is accounted for with the loss and torque of the simulated hold.
+constexpr double kMaxSimulatedDwell_s = 0.2;
+
+std::string error_text(uint8_t code) {
+  static constexpr const char* kNames[8] = {
+      "settling timeout (114.8)",        "invalid parameter (114.7)", "invalid command (114.6)",
+      "position tracking error (114.5)", "motor voltage (114.4)",     "overtemperature (114.3)",
+      "output stage (114.2)",            "device error (114.1)"};
+  std::string s;
+  for (int bit = 0; bit < 8; ++bit) {
+    if (code & (1u << bit)) s += (s.empty() ? "" : ", ") + std::string(kNames[bit]);
+  }
+  return fmt::format("error 0x{:02X}: {}", code, s);
+}
+
+std::string warning_text(uint8_t code) {
+  std::string s;
+  if (code & (1u << static_cast<int>(WarningBit::Positioning))) s += "left the tolerance window after Done (115.3)";
+  if (code & (1u << static_cast<int>(WarningBit::MotorVoltage))) s += std::string(s.empty() ? "" : ", ") + "motor voltage (115.2)";
+  if (code & (1u << static_cast<int>(WarningBit::Temperature))) s += std::string(s.empty() ? "" : ", ") + "temperature (115.1)";
+  return fmt::format("warning 0x{:02X}: {}", code, s);
+}
+
+void write_all(Twin& twin, const std::vector<IsduWrite>& writes) {
+  for (const IsduWrite& w : writes) {
+    const ParameterEntry* row = find_parameter(w.index, w.subindex);
+    if (row == nullptr) throw std::logic_error(fmt::format("sizing: no parameter {}.{}", w.index, w.subindex));
+    const IsduResult r = twin.isdu_write(w.index, w.subindex, encode_number(row->type, w.value));
+    if (!r.ok()) {
+      throw std::logic_error(fmt::format("sizing: the device refused {}.{} = {} (0x{:04X})", w.index, w.subindex,
+                                         w.value, r.error));
+    }
+  }
+}
+
+double read_tracking_limit_deg(Twin& twin) {
+  const ParameterEntry* row = find_parameter(87, 1);
+  const IsduResult r = twin.isdu_read(87, 1);
+  if (!r.ok() || row == nullptr || r.data.size() != wire_size(row->type)) return 0;
+  return static_cast<double>(decode_number(row->type, r.data)) * row->display_scale;
+}
+
+template <class Pred>
+bool run_until(Twin& twin, Pred done, int max_cycles) {
+  for (int i = 0; i < max_cycles; ++i) {
+    twin.run_cycle();
+    if (done()) return true;
+  }
+  return false;
+}
+
+int cycles_for(double seconds, double cycle_s) {
+  return static_cast<int>(std::ceil(seconds / cycle_s - 1e-9));
+}
+
+} // namespace
+
+Evaluation evaluate(const SizingRequest& rq, const ParameterSetValues& set, bool keep_trace) {
+  TwinConfig cfg;
+  cfg.load = rq.load;
+  cfg.supply.voltage_V = rq.voltage_V;
+  cfg.thermal.ambient_C = rq.ambient_C;
+  cfg.record_trace = true;
+  const std::unique_ptr<Twin> twin_owner = make_twin(cfg);
+  Twin& twin = *twin_owner;
+  const MotorModel motor;
+  const Thermal thermal(cfg.thermal);
+
+  Evaluation ev;
+  ev.set = set;
+  ev.load_gcm2 = std::max(0.0, twin.load_inertia_gcm2()); // no load reads -1e-12
+  ev.torque_capability_Nm = motor.peak_torque_Nm();
+  write_all(twin, set.writes);
+  ev.tracking_limit_deg = read_tracking_limit_deg(twin);
+
+  // Travel time (manual 3.5.2 (1)): the device's own plan for that distance
+  // and those limits, i.e. the time-optimal S-curve (device.cpp, T3).
+  const int32_t target_wire = static_cast<int32_t>(deg_to_wire_counts(rq.angle_deg));
+  const MotionLimits limits = limits_from_parameter_set(set.setting.speed_dps, set.setting.accel_pct,
+                                                        set.setting.jerk_pct, set.load_gcm2);
+  ev.travel_s = Profile::rest_to_rest(internal_counts_to_rad(int64_t{target_wire} * kInternalPerWireCount), limits)
+                    .duration_s();
+
+  std::vector<std::string> reasons;
+  ProcessDataOut pd;
+  pd.motor_on = true;
+  pd.parameter_set = static_cast<uint8_t>(set.set);
+  twin.set_pd_out(pd);
+  if (!run_until(twin, [&] { return twin.pd_in().ready || twin.pd_in().error; }, kSwitchOnCycles) ||
+      !twin.pd_in().ready) {
+    reasons.push_back("motor did not switch on: " + error_text(twin.pd_in().error_code));
+  }
+
+  const double cycle_s = cfg.cycle_s;
+  const int move_cycles = cycles_for(ev.travel_s + set.timeout_ms * 1e-3 + kMoveSlack_s, cycle_s);
+  const double simulated_dwell_s = std::min(rq.dwell_s, kMaxSimulatedDwell_s);
+  const int dwell_cycles = std::max(1, cycles_for(simulated_dwell_s, cycle_s)); // Move must fall for one cycle (T7)
+  const int moves = 2 * std::max(1, rq.cycles);
+  std::size_t last_cycle_row = 0; // trace row where the last full cycle starts
+  const std::size_t first_move_row = twin.trace().size();
+  std::size_t last_dwell_row = 0; // trace row where the last dwell starts
+  for (int i = 0; i < moves && reasons.empty(); ++i) {
+    if (i == moves - 2) last_cycle_row = twin.trace().size();
+    const bool out = (i % 2) == 0;
+    MoveResult mr;
+    mr.target_deg = out ? wire_counts_to_deg(target_wire) : 0.0;
+    mr.travel_s = ev.travel_s;
+    const std::size_t records_before = twin.moves().size();
+    pd.target_position = out ? target_wire : 0;
+    pd.move = true;
+    twin.set_pd_out(pd);
+    const bool ended = run_until(twin, [&] { const auto in = twin.pd_in(); return in.done || in.error; }, move_cycles);
+    const ProcessDataIn in = twin.pd_in();
+    if (twin.moves().size() > records_before) {
+      const MoveRecord& rec = twin.moves().back();
+      mr.max_tracking_error_deg = rec.max_tracking_error_deg;
+      mr.simulated_travel_s = rec.travel_s;
+      mr.completed = rec.completed && in.done && !in.error;
+      if (mr.completed) {
+        // A-SIZE-7: positioning as simulated; settling = positioning - planned travel.
+        mr.positioning_s = rec.positioning_s;
+        mr.settling_s = rec.positioning_s - ev.travel_s;
+      }
+    }
+    ev.moves.push_back(mr);
+    if (in.error) {
+      reasons.push_back(fmt::format("move {} to {} deg failed: {}", i + 1, mr.target_deg, error_text(in.error_code)));
+      break;
+    }
+    if (!ended || !mr.completed) {
+      reasons.push_back(fmt::format("move {} to {} deg did not complete within {:.3f} s", i + 1, mr.target_deg,
+                                    move_cycles * cycle_s));
+      break;
+    }
+    pd.move = false;
+    twin.set_pd_out(pd);
+    last_dwell_row = twin.trace().size();
+    if (run_until(twin, [&] { return twin.pd_in().error; }, dwell_cycles)) {
+      reasons.push_back(fmt::format("after move {}: {}", i + 1, error_text(twin.pd_in().error_code)));
+    }
+  }
+  ev.sim_time_s = twin.time_s();
+
+  // Worst move (A-SIZE-7).
+  for (const MoveResult& m : ev.moves) {
+    ev.settling_s = std::max(ev.settling_s, m.settling_s);
+    ev.positioning_s = std::max(ev.positioning_s, m.positioning_s);
+    ev.max_tracking_error_deg = std::max(ev.max_tracking_error_deg, m.max_tracking_error_deg);
+  }
+  ev.cycle_s = 2.0 * ev.positioning_s + 2.0 * rq.dwell_s;
+  ev.cycles_per_min = ev.cycle_s > 0 ? 60.0 / ev.cycle_s : 0.0;
+
+  // Torque and losses from the trace (one sample per IO-Link cycle, A-SIZE-8).
+  const std::vector<TraceRow>& rows = twin.trace();
+  uint8_t warnings = 0;
+  double worst_headroom_speed_dps = 0;
+  for (std::size_t r = first_move_row; r < rows.size(); ++r) {
+    const TraceRow& row = rows[r];
+    const double tq = std::abs(row.torque_Nm);
+    ev.peak_torque_Nm = std::max(ev.peak_torque_Nm, tq);
+    if (row.torque_limit_Nm > 0) {
+      const double headroom = 1.0 - tq / row.torque_limit_Nm;
+      if (headroom < ev.min_torque_headroom) {
+        ev.min_torque_headroom = headroom;
+        worst_headroom_speed_dps = std::abs(row.velocity_dps);
+      }
+    }
+    warnings |= row.warning_code;
+  }
+  // Means over the last cycle; the unsimulated part of the dwells (A-SIZE-9)
+  // counts with the mean of the last simulated dwell.
+  struct Sums { double torque_sq = 0, loss = 0; std::size_t n = 0; };
+  auto sums = [&](std::size_t from) {
+    Sums s;
+    for (std::size_t r = from; r < rows.size(); ++r) {
+      s.torque_sq += rows[r].torque_Nm * rows[r].torque_Nm;
+      s.loss += motor.copper_loss_W(rows[r].torque_Nm) + thermal.speed_loss_W(deg_to_rad(rows[r].velocity_dps));
+      ++s.n;
+    }
+    return s;
+  };
+  const bool all_moves_ran = reasons.empty() && static_cast<int>(ev.moves.size()) == moves;
+  ev.completed = all_moves_ran;
+  if (all_moves_ran) {
+    const Sums cycle = sums(last_cycle_row);
+    const Sums hold = sums(last_dwell_row);
+    const double extra_s = 2.0 * std::max(0.0, rq.dwell_s - simulated_dwell_s);
+    const double hold_sq = hold.n ? hold.torque_sq / static_cast<double>(hold.n) : 0.0;
+    const double hold_loss = hold.n ? hold.loss / static_cast<double>(hold.n) : 0.0;
+    const double sim_s = static_cast<double>(cycle.n) * cycle_s;
+    const double total_s = sim_s + extra_s;
+    if (total_s > 0) {
+      ev.rms_torque_Nm = std::sqrt((cycle.torque_sq * cycle_s + hold_sq * extra_s) / total_s);
+      ev.mean_loss_W = (cycle.loss * cycle_s + hold_loss * extra_s) / total_s;
+    }
+  }
+  const ThermalEstimate th = estimate_thermal(ev.mean_loss_W, rq.ambient_C);
+  ev.steady_temperature_C = th.steady_C;
+  ev.time_to_warning_s = th.time_to_warning_s;
+
+  // Feasible with margin (A-SIZE-5).
+  if (reasons.empty()) {
+    if (warnings != 0) reasons.push_back(warning_text(warnings));
+    if (ev.peak_torque_Nm > kTorqueMargin * ev.torque_capability_Nm) {
+      reasons.push_back(fmt::format("peak torque {:.3f} N m is above {:.0f} % of the motor's {:.3f} N m",
+                                    ev.peak_torque_Nm, 100 * kTorqueMargin, ev.torque_capability_Nm));
+    } else if (ev.min_torque_headroom < 1.0 - kTorqueMargin) {
+      reasons.push_back(fmt::format(
+          "torque within {:.0f} % of the motor's capability at {:.0f} deg/s and {:.1f} V (manual 3.5.3: "
+          "the reachable speed falls with the voltage)",
+          100 * (1.0 - kTorqueMargin), worst_headroom_speed_dps, rq.voltage_V));
+    }
+    if (ev.tracking_limit_deg > 0 && ev.max_tracking_error_deg > kTrackingMargin * ev.tracking_limit_deg) {
+      reasons.push_back(fmt::format("tracking error {:.3f} deg is above {:.0f} % of the {:.1f} deg limit (index 87.1)",
+                                    ev.max_tracking_error_deg, 100 * kTrackingMargin, ev.tracking_limit_deg));
+    }
+    if (ev.steady_temperature_C >= kTemperatureWarning_C) {
+      reasons.push_back(fmt::format("continuous cycling heats the module to {:.1f} degC (warning at 70 degC, 115.1){}",
+                                    ev.steady_temperature_C,
+                                    ev.time_to_warning_s ? fmt::format(" after {:.0f} s", *ev.time_to_warning_s) : ""));
+    }
+  }
+  ev.feasible = reasons.empty();
+  for (const std::string& r : reasons) ev.reason += (ev.reason.empty() ? "" : "; ") + r;
+  if (keep_trace) ev.trace = rows;
+  return ev;
+}
+
+} // namespace sreh::sizing

@@ -1,0 +1,107 @@
+#include "sizing/output.hpp"
+
+#include <fmt/format.h>
+
+namespace sreh::sizing {
+namespace {
+
+nlohmann::json optional_number(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(); }
+// Times of a run whose moves did not all complete are null (not meaningful).
+nlohmann::json time_if(bool completed, double v) { return completed ? nlohmann::json(v) : nlohmann::json(); }
+std::string time_text(bool completed, double v, const char* unit) {
+  return completed ? fmt::format("{:8.4f} {}", v, unit) : fmt::format("{:>8} {}", "-", unit);
+}
+
+std::string duration_text(const std::optional<double>& s) {
+  if (!s) return "never";
+  if (*s < 120) return fmt::format("{:.0f} s", *s);
+  if (*s < 7200) return fmt::format("{:.1f} min", *s / 60);
+  return fmt::format("{:.1f} h", *s / 3600);
+}
+
+} // namespace
+
+std::string isdu_write_line(const IsduWrite& w) {
+  return fmt::format("isdu_write index {} sub {} value {}  # {}", w.index, w.subindex, w.value, w.comment);
+}
+
+nlohmann::json to_json(const SizingRequest& rq, const SizingResult& r) {
+  const Evaluation& e = r.evaluation;
+  nlohmann::json j;
+  j["mode"] = r.recommended ? "recommend" : "evaluate";
+  j["request"] = {{"angle_deg", rq.angle_deg},   {"load_gcm2", e.load_gcm2},       {"voltage_V", rq.voltage_V},
+                  {"dwell_s", rq.dwell_s},       {"tolerance_deg", rq.tolerance_deg}, {"wait_ms", rq.wait_ms},
+                  {"ambient_C", rq.ambient_C},   {"parameter_set", rq.parameter_set}, {"cycles", rq.cycles}};
+  j["travel_s"] = e.travel_s;
+  j["completed"] = e.completed;
+  j["settling_s"] = time_if(e.completed, e.settling_s);
+  j["positioning_s"] = time_if(e.completed, e.positioning_s);
+  j["cycle_s"] = time_if(e.completed, e.cycle_s);
+  j["cycles_per_min"] = time_if(e.completed, e.cycles_per_min);
+  j["peak_torque_Nm"] = e.peak_torque_Nm;
+  j["rms_torque_Nm"] = e.rms_torque_Nm;
+  j["torque_capability_Nm"] = e.torque_capability_Nm;
+  j["min_torque_headroom"] = e.min_torque_headroom;
+  j["max_tracking_error_deg"] = e.max_tracking_error_deg;
+  j["tracking_limit_deg"] = e.tracking_limit_deg;
+  j["mean_loss_W"] = e.mean_loss_W;
+  j["steady_temperature_C"] = e.steady_temperature_C;
+  j["time_to_warning_s"] = optional_number(e.time_to_warning_s);
+  j["feasible"] = e.feasible;
+  j["reason"] = e.reason;
+  j["simulations"] = r.simulations;
+  nlohmann::json writes = nlohmann::json::array();
+  for (const IsduWrite& w : e.set.writes) {
+    writes.push_back({{"index", w.index}, {"subindex", w.subindex}, {"value", w.value}, {"comment", w.comment}});
+  }
+  j["recommended"] = {{"parameter_set", e.set.set},
+                      {"speed_dps", e.set.setting.speed_dps},
+                      {"accel_pct", e.set.setting.accel_pct},
+                      {"jerk_pct", e.set.setting.jerk_pct},
+                      {"load_gcm2", e.set.load_gcm2},
+                      {"tolerance_deg", e.set.tolerance_deg},
+                      {"wait_ms", e.set.wait_ms},
+                      {"timeout_ms", e.set.timeout_ms},
+                      {"isdu_writes", writes}};
+  nlohmann::json moves = nlohmann::json::array();
+  for (const MoveResult& m : e.moves) {
+    moves.push_back({{"target_deg", m.target_deg},
+                     {"travel_s", m.travel_s},
+                     {"settling_s", time_if(m.completed, m.settling_s)},
+                     {"positioning_s", time_if(m.completed, m.positioning_s)},
+                     {"max_tracking_error_deg", m.max_tracking_error_deg},
+                     {"completed", m.completed}});
+  }
+  j["moves"] = moves;
+  return j;
+}
+
+std::string summary_text(const SizingRequest& rq, const SizingResult& r) {
+  const Evaluation& e = r.evaluation;
+  std::string s;
+  s += fmt::format("Sizing: {} deg back and forth, load {:.1f} g cm^2, {:.1f} V, dwell {} s, ambient {} degC\n",
+                   rq.angle_deg, e.load_gcm2, rq.voltage_V, rq.dwell_s, rq.ambient_C);
+  s += fmt::format("{} parameter set {}: speed {:.1f} deg/s, acceleration {:.1f} %, jerk {:.1f} %\n",
+                   r.recommended ? (e.feasible ? "Recommended" : "No feasible set; last tried") : "Given",
+                   e.set.set, e.set.setting.speed_dps, e.set.setting.accel_pct, e.set.setting.jerk_pct);
+  s += fmt::format("  travel time       {:8.4f} s   (planned S-curve, manual 3.5.2 (1))\n", e.travel_s);
+  s += fmt::format("  settling time     {}   (incl. waiting time {:.1f} ms, simulated)\n",
+                   time_text(e.completed, e.settling_s, "s"), e.set.wait_ms);
+  s += fmt::format("  positioning time  {}   (worst of {} moves{})\n", time_text(e.completed, e.positioning_s, "s"),
+                   e.moves.size(), e.completed ? "" : "; not all completed");
+  s += fmt::format("  cycle             {}   = 2 moves + 2 dwells{}\n", time_text(e.completed, e.cycle_s, "s"),
+                   e.completed ? fmt::format(": {:.1f} cycles/min", e.cycles_per_min) : "");
+  s += fmt::format("  torque peak / rms {:8.3f} / {:.3f} N m of {:.3f} N m ({:.0f} %)\n", e.peak_torque_Nm,
+                   e.rms_torque_Nm, e.torque_capability_Nm,
+                   e.torque_capability_Nm > 0 ? 100 * e.peak_torque_Nm / e.torque_capability_Nm : 0.0);
+  s += fmt::format("  tracking error    {:8.3f} deg (limit {:.1f} deg, index 87.1)\n", e.max_tracking_error_deg,
+                   e.tracking_limit_deg);
+  s += fmt::format("  temperature       {:8.1f} degC steady under continuous cycling ({:.2f} W), 70 degC warning: {}\n",
+                   e.steady_temperature_C, e.mean_loss_W, duration_text(e.time_to_warning_s));
+  s += fmt::format("  feasible          {}{}\n", e.feasible ? "yes" : "NO", e.feasible ? "" : ": " + e.reason);
+  s += fmt::format("ISDU writes ({} simulation{}):\n", r.simulations, r.simulations == 1 ? "" : "s");
+  for (const IsduWrite& w : e.set.writes) s += "  " + isdu_write_line(w) + "\n";
+  return s;
+}
+
+} // namespace sreh::sizing

@@ -1,0 +1,274 @@
+#include "sizing/report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "sizing/output.hpp"
+
+#if SREH_SIZING_WITH_REPORT
+#include "renders/report.hpp"
+#include "renders/svg_plot.hpp"
+#endif
+
+namespace sreh::sizing {
+
+std::vector<double> default_targets_s(const SweepResult& result) {
+  double lo = INFINITY, hi = 0;
+  for (const SweepPoint& p : result.points) {
+    const Evaluation& e = p.result.evaluation;
+    if (!e.feasible) continue;
+    lo = std::min(lo, e.positioning_s);
+    hi = std::max(hi, e.positioning_s);
+  }
+  std::vector<double> targets;
+  if (!(hi > 0)) return targets;
+  constexpr int kTargets = 8;
+  for (int k = 0; k < kTargets; ++k) {
+    // Whole milliseconds, rounded up so that the smallest target meets a point.
+    const double t = std::ceil((lo + (hi - lo) * k / (kTargets - 1)) * 1000.0 - 1e-9) / 1000.0;
+    if (targets.empty() || t > targets.back()) targets.push_back(t);
+  }
+  return targets;
+}
+
+#if SREH_SIZING_WITH_REPORT
+namespace {
+
+using svg::xml_escape;
+
+constexpr const char* kCss = R"css(
+body{font-family:system-ui,-apple-system,"Segoe UI",sans-serif;margin:24px auto;max-width:1100px;color:#222;padding:0 16px}
+h1{font-size:22px;margin-bottom:4px}h2{font-size:17px;margin-top:28px;border-bottom:1px solid #ddd;padding-bottom:4px}
+.result{display:inline-block;padding:3px 12px;border-radius:4px;font-weight:bold;color:#fff}
+.ok{background:#2e7d32}.bad{background:#c62828}
+table{border-collapse:collapse;font-size:13px}td,th{border:1px solid #ccc;padding:3px 8px;text-align:right}
+th{background:#f2f2f2}td.l,th.l{text-align:left}
+pre{background:#f7f7f7;padding:8px;font-size:13px;overflow-x:auto}.note{color:#666;font-size:12px}
+)css";
+
+// A small fixed palette, one colour per angle / series.
+const char* colour(std::size_t i) {
+  static constexpr const char* kColours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
+                                             "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
+  return kColours[i % (sizeof kColours / sizeof kColours[0])];
+}
+
+std::string page_head(const std::string& title) {
+  return fmt::format("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>{}</title>\n"
+                     "<style>{}</style>\n</head>\n<body>\n<h1>{}</h1>\n",
+                     xml_escape(title), kCss, xml_escape(title));
+}
+
+std::string row(const std::string& name, const std::string& value) {
+  return fmt::format("<tr><td class=\"l\">{}</td><td>{}</td></tr>\n", xml_escape(name), xml_escape(value));
+}
+
+std::filesystem::path write_index(const std::filesystem::path& dir, const std::string& html) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir)) throw std::runtime_error("cannot create report directory " + dir.string());
+  const std::filesystem::path index = dir / "index.html";
+  write_file_atomically(index, html);
+  return index;
+}
+
+std::string numbers_table(const SizingRequest& rq, const SizingResult& r) {
+  const Evaluation& e = r.evaluation;
+  std::string o = "<table>\n";
+  o += row("move", fmt::format("{} deg back and forth, dwell {} s, {} cycles", rq.angle_deg, rq.dwell_s, rq.cycles));
+  o += row("load (actual, MuJoCo)", fmt::format("{:.1f} g cm^2", e.load_gcm2));
+  o += row("supply / ambient", fmt::format("{:.1f} V / {:.1f} degC", rq.voltage_V, rq.ambient_C));
+  o += row("speed / acceleration / jerk", fmt::format("{:.1f} deg/s / {:.1f} % / {:.1f} %", e.set.setting.speed_dps,
+                                                      e.set.setting.accel_pct, e.set.setting.jerk_pct));
+  o += row("travel time (1)", fmt::format("{:.4f} s", e.travel_s));
+  o += row("settling time (2)", fmt::format("{:.4f} s (waiting time {:.1f} ms)", e.settling_s, e.set.wait_ms));
+  o += row("positioning time (4)", fmt::format("{:.4f} s", e.positioning_s));
+  o += row("cycle", fmt::format("{:.4f} s, {:.1f} cycles/min", e.cycle_s, e.cycles_per_min));
+  o += row("peak / RMS torque", fmt::format("{:.3f} / {:.3f} N m (capability {:.3f} N m)", e.peak_torque_Nm,
+                                            e.rms_torque_Nm, e.torque_capability_Nm));
+  o += row("max tracking error", fmt::format("{:.3f} deg (limit {:.1f} deg)", e.max_tracking_error_deg, e.tracking_limit_deg));
+  o += row("steady temperature", fmt::format("{:.1f} degC ({:.2f} W mean loss)", e.steady_temperature_C, e.mean_loss_W));
+  o += row("time to 70 degC warning",
+           e.time_to_warning_s ? fmt::format("{:.0f} s", *e.time_to_warning_s) : std::string("never"));
+  o += row("simulations", fmt::format("{}", r.simulations));
+  return o + "</table>\n";
+}
+
+} // namespace
+
+bool reports_available() { return true; }
+
+std::string size_report_html(const SizingRequest& rq, const SizingResult& r) {
+  const Evaluation& e = r.evaluation;
+  std::string o = page_head(fmt::format("Sizing: {} deg, {:.0f} g cm^2, {:.1f} V", rq.angle_deg, e.load_gcm2, rq.voltage_V));
+  o += fmt::format("<p><span class=\"result {}\">{}</span> {}</p>\n", e.feasible ? "ok" : "bad",
+                   e.feasible ? "FEASIBLE" : "NOT FEASIBLE", xml_escape(e.reason));
+  o += "<h2>Numbers (manual 3.5.2 terms)</h2>\n" + numbers_table(rq, r);
+  o += "<h2>ISDU writes</h2>\n<pre>";
+  for (const IsduWrite& w : e.set.writes) o += xml_escape(isdu_write_line(w)) + "\n";
+  o += "</pre>\n";
+
+  o += "<h2>Moves</h2>\n<table>\n<tr><th>#</th><th>target deg</th><th>travel s</th><th>settling s</th>"
+       "<th>positioning s</th><th>max tracking error deg</th><th>completed</th></tr>\n";
+  for (std::size_t i = 0; i < e.moves.size(); ++i) {
+    const MoveResult& m = e.moves[i];
+    o += fmt::format("<tr><td>{}</td><td>{}</td><td>{:.4f}</td><td>{:.4f}</td><td>{:.4f}</td><td>{:.4f}</td>"
+                     "<td>{}</td></tr>\n",
+                     i + 1, m.target_deg, m.travel_s, m.settling_s, m.positioning_s, m.max_tracking_error_deg,
+                     m.completed ? "yes" : "no");
+  }
+  o += "</table>\n";
+
+  if (!e.trace.empty()) {
+    std::vector<double> t, sp, pos, vel, tq, err;
+    for (const TraceRow& row_ : e.trace) {
+      t.push_back(row_.t_s);
+      sp.push_back(row_.setpoint_deg);
+      pos.push_back(row_.position_deg);
+      vel.push_back(row_.velocity_dps);
+      tq.push_back(row_.torque_Nm);
+      err.push_back(row_.tracking_error_deg);
+    }
+    o += "<h2>Trace (one sample per 2 ms IO-Link cycle)</h2>\n";
+    svg::Plot p;
+    p.id = "position";
+    p.title = "Position";
+    p.x = {"time", "s", {}, {}};
+    p.y = {"position", "deg", {}, {}};
+    p.series = {{"setpoint", t, sp, "#2ca02c", 1.5, true}, {"actual", t, pos, "#1f77b4", 1.5, false}};
+    o += svg::to_svg(p) + "\n";
+    svg::Plot v;
+    v.id = "velocity";
+    v.title = "Velocity";
+    v.x = p.x;
+    v.y = {"velocity", "deg/s", {}, {}};
+    v.series = {{"velocity", t, vel, "#1f77b4", 1.5, false}};
+    v.hlines = {{e.set.setting.speed_dps, "set speed", "#d62728", true}, {-e.set.setting.speed_dps, "", "#d62728", true}};
+    o += svg::to_svg(v) + "\n";
+    svg::Plot q;
+    q.id = "torque";
+    q.title = "Motor torque";
+    q.x = p.x;
+    q.y = {"torque", "N m", {}, {}};
+    q.series = {{"torque", t, tq, "#ff7f0e", 1.5, false}};
+    const double cap = e.torque_capability_Nm, margin = kTorqueMargin * cap;
+    q.hlines = {{cap, "capability", "#d62728", false},  {-cap, "", "#d62728", false},
+                {margin, fmt::format("{:.0f} % margin", 100 * kTorqueMargin), "#9467bd", true},
+                {-margin, "", "#9467bd", true}};
+    o += svg::to_svg(q) + "\n";
+    svg::Plot te;
+    te.id = "tracking";
+    te.title = "Tracking error";
+    te.x = p.x;
+    te.y = {"tracking error", "deg", {}, {}};
+    te.series = {{"setpoint - actual", t, err, "#8c564b", 1.5, false}};
+    te.bands = {{{}, {}, -e.set.tolerance_deg, e.set.tolerance_deg, "tolerance window", "#2ca02c", 0.15}};
+    o += svg::to_svg(te) + "\n";
+  }
+  o += "<p class=\"note\">Travel time from the device's planner; settling and positioning simulated; torque "
+       "sampled per IO-Link cycle; temperature from the twin's lumped thermal model at the cycle's mean loss "
+       "(docs/assumptions/sizing.md).</p>\n</body>\n</html>\n";
+  return o;
+}
+
+std::filesystem::path write_size_report(const std::filesystem::path& dir, const SizingRequest& rq,
+                                        const SizingResult& r) {
+  return write_index(dir, size_report_html(rq, r));
+}
+
+std::string sweep_report_html(const SweepRequest& rq, const SweepResult& result, const std::vector<double>& targets) {
+  std::string o = page_head(fmt::format("Sizing sweep: {} points", result.points.size()));
+  std::size_t feasible = 0;
+  for (const SweepPoint& p : result.points) feasible += p.result.evaluation.feasible ? 1 : 0;
+  o += fmt::format("<p>{} of {} points feasible; dwell {} s, ambient {} degC; {}.</p>\n", feasible,
+                   result.points.size(), rq.base.dwell_s, rq.base.ambient_C,
+                   rq.speeds_dps.empty() ? "recommended set per point"
+                                         : fmt::format("given acceleration {} %, jerk {} %", rq.accel_pct, rq.jerk_pct));
+  const std::vector<SweepGroup> groups = sweep_groups(result);
+  std::vector<double> angles;
+  for (const SweepPoint& p : result.points) {
+    if (std::find(angles.begin(), angles.end(), p.angle_deg) == angles.end()) angles.push_back(p.angle_deg);
+  }
+  int plot_id = 0;
+  for (const SweepGroup& g : groups) {
+    const std::string label = fmt::format("{:.1f} V{}", g.voltage_V,
+                                          g.speed_dps ? fmt::format(", {} deg/s", *g.speed_dps) : std::string(", recommended"));
+    o += fmt::format("<h2>{}</h2>\n", xml_escape(label));
+    svg::Plot p;
+    p.id = fmt::format("positioning{}", plot_id);
+    p.title = "Positioning time vs load (feasible points)";
+    p.x = {"load", "g cm^2", {}, {}};
+    p.y = {"positioning time", "s", 0.0, {}};
+    for (std::size_t a = 0; a < angles.size(); ++a) {
+      svg::Series s;
+      s.label = fmt::format("{} deg", angles[a]);
+      s.color = colour(a);
+      for (const SweepPoint& pt : result.points) {
+        if (pt.angle_deg != angles[a] || pt.voltage_V != g.voltage_V || pt.speed_dps != g.speed_dps) continue;
+        if (!pt.result.evaluation.feasible) continue;
+        s.x.push_back(pt.load_gcm2);
+        s.y.push_back(pt.result.evaluation.positioning_s);
+      }
+      if (!s.x.empty()) p.series.push_back(std::move(s));
+    }
+    o += svg::to_svg(p) + "\n";
+
+    const std::vector<HeaviestLoad> inv = heaviest_loads(result, g, targets);
+    svg::Plot q;
+    q.id = fmt::format("heaviest{}", plot_id++);
+    q.title = "Heaviest load on the grid meeting a positioning time";
+    q.x = {"target positioning time", "s", {}, {}};
+    q.y = {"heaviest load", "g cm^2", 0.0, {}};
+    for (std::size_t a = 0; a < angles.size(); ++a) {
+      svg::Series s;
+      s.label = fmt::format("{} deg", angles[a]);
+      s.color = colour(a);
+      for (const HeaviestLoad& h : inv) {
+        if (h.angle_deg != angles[a] || !h.load_gcm2) continue;
+        s.x.push_back(h.target_s);
+        s.y.push_back(*h.load_gcm2);
+      }
+      if (!s.x.empty()) q.series.push_back(std::move(s));
+    }
+    o += svg::to_svg(q) + "\n";
+    o += "<table>\n<tr><th>angle deg</th>";
+    for (double t : targets) o += fmt::format("<th>&le; {} s</th>", t);
+    o += "</tr>\n";
+    for (double angle : angles) {
+      o += fmt::format("<tr><td>{}</td>", angle);
+      for (const HeaviestLoad& h : inv) {
+        if (h.angle_deg != angle) continue;
+        o += h.load_gcm2 ? fmt::format("<td>{}</td>", *h.load_gcm2) : std::string("<td>-</td>");
+      }
+      o += "</tr>\n";
+    }
+    o += "</table>\n<p class=\"note\">Cells: the heaviest grid load (g cm^2) whose positioning time meets the "
+         "target; '-': none on the grid.</p>\n";
+  }
+  o += "</body>\n</html>\n";
+  return o;
+}
+
+std::filesystem::path write_sweep_report(const std::filesystem::path& dir, const SweepRequest& rq,
+                                         const SweepResult& result, const std::vector<double>& targets) {
+  return write_index(dir, sweep_report_html(rq, result, targets));
+}
+
+#else  // built without renders
+
+bool reports_available() { return false; }
+namespace {
+[[noreturn]] void no_reports() { throw std::runtime_error("this build has no reports (SREH_WITH_RENDER=OFF)"); }
+} // namespace
+std::string size_report_html(const SizingRequest&, const SizingResult&) { no_reports(); }
+std::filesystem::path write_size_report(const std::filesystem::path&, const SizingRequest&, const SizingResult&) { no_reports(); }
+std::string sweep_report_html(const SweepRequest&, const SweepResult&, const std::vector<double>&) { no_reports(); }
+std::filesystem::path write_sweep_report(const std::filesystem::path&, const SweepRequest&, const SweepResult&,
+                                         const std::vector<double>&) { no_reports(); }
+
+#endif
+
+} // namespace sreh::sizing

@@ -1,0 +1,143 @@
+// PerfectCycle-style sizing (issue 8, manual 3.5.1): one move of A deg back
+// and forth with a dwell, evaluated by running the twin (a factory-new module
+// with the load, the parameter set written over ISDU, motor on, moves through
+// process data). Travel time comes from the planner, settling and
+// positioning from the simulation, torque from the trace, temperature from
+// the twin's thermal model fed with the cycle's mean loss.
+// Constants the manual does not give: docs/assumptions/sizing.md (A-SIZE-*).
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "twin/trace.hpp"
+#include "twin/twin.hpp"
+
+namespace sreh::sizing {
+
+// Input outside the module's limits (the CLI turns it into exit code 2).
+class SizingInputError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+// Speed, acceleration and jerk of a motion parameter set (manual 3.5.3-3.5.5),
+// display units.
+struct MotionSetting {
+  double speed_dps = 3000.0; // factory default of sets 1..7 (manual 6.2)
+  double accel_pct = 100.0;
+  double jerk_pct = 100.0;
+};
+
+struct SizingRequest {
+  double angle_deg = 90.0;       // move distance; the cycle goes 0 -> A -> 0
+  LoadSpec load = NoLoad{};
+  double voltage_V = 24.0;       // motor supply, 16..32 V (index 85 window, A-SIZE-2)
+  double dwell_s = 0.0;          // pause after each move (after Done)
+  double tolerance_deg = 0.1;    // 64+n.5, factory default
+  double wait_ms = 25.0;         // 64+n.6, factory default
+  std::optional<double> timeout_ms; // 64+n.7; unset: A-SIZE-4
+  double ambient_C = 25.0;
+  int parameter_set = 1;         // which of 64..71 the writes and moves use
+  std::optional<MotionSetting> setting; // given: evaluate it; unset: recommend one
+  int cycles = 2;                // back-and-forth cycles simulated (A-SIZE-3)
+  bool keep_trace = false;       // keep the chosen evaluation's trace (reports)
+};
+
+// One ISDU write of the parameter set, raw wire value (manual 6.2).
+struct IsduWrite {
+  uint16_t index = 0;
+  uint8_t subindex = 0;
+  int64_t value = 0;
+  std::string comment; // "speed 3000.0 deg/s"
+};
+
+// A complete parameter set as written to the device.
+struct ParameterSetValues {
+  int set = 1;
+  MotionSetting setting;    // display values as the device reads them back
+  double load_gcm2 = 0;     // configured load (64+n.4)
+  double tolerance_deg = 0; // after raw rounding
+  double wait_ms = 0;
+  double timeout_ms = 0;
+  double voltage_V = 24;    // only for the index 85 writes
+  std::vector<IsduWrite> writes; // 64+n.1..8, plus 85.x where the voltage needs it
+};
+
+struct MoveResult {
+  double target_deg = 0;
+  double travel_s = 0;      // planner (exact), manual 3.5.2 (1)
+  double simulated_travel_s = -1; // MoveRecord: on the 0.1 ms step clock, within one step of travel_s
+  double settling_s = -1;   // positioning - travel, (2); < 0: never completed
+  double positioning_s = -1;// simulated, (4)
+  double max_tracking_error_deg = 0;
+  bool completed = false;
+};
+
+struct Evaluation {
+  ParameterSetValues set;
+  double load_gcm2 = 0;            // actual load as MuJoCo computes it
+  double travel_s = 0;             // Profile::rest_to_rest duration for the set's limits
+  bool completed = false;          // every move reached Done; else the times below are not meaningful
+  double settling_s = 0;           // worst move
+  double positioning_s = 0;        // worst move
+  double cycle_s = 0;              // 2 positionings + 2 dwells
+  double cycles_per_min = 0;
+  double peak_torque_Nm = 0;       // max |motor torque| over all moves (trace samples)
+  double rms_torque_Nm = 0;        // over the last simulated cycle
+  double torque_capability_Nm = 0; // MotorModel::peak_torque_Nm
+  double min_torque_headroom = 1;  // min over samples of 1 - |torque| / instantaneous capability
+  double max_tracking_error_deg = 0;
+  double tracking_limit_deg = 0;   // index 87.1
+  double mean_loss_W = 0;          // copper + speed loss over the last cycle
+  double steady_temperature_C = 0; // lumped model, continuous cycling
+  std::optional<double> time_to_warning_s; // to 70 degC (115.1) from ambient; none if never
+  bool feasible = false;
+  std::string reason;              // why not feasible ("" when feasible)
+  std::vector<MoveResult> moves;
+  std::vector<TraceRow> trace;     // with SizingRequest::keep_trace
+  double sim_time_s = 0;
+};
+
+struct SizingResult {
+  bool recommended = false;  // searched (no explicit setting)
+  Evaluation evaluation;     // the given set, or the recommendation (or the last one tried)
+  int simulations = 0;       // twin runs made
+  std::vector<Evaluation> tried; // every evaluation of the search, in order (without traces)
+};
+
+// Limits (A-SIZE-1, A-SIZE-2; manual 6.2 ranges).
+inline constexpr double kMaxLoad_gcm2 = 15000.0;
+inline constexpr double kMinVoltage_V = 16.0;
+inline constexpr double kMaxVoltage_V = 32.0;
+inline constexpr double kMaxAngle_deg = 3600.0;
+inline constexpr double kMaxDwell_s = 60.0;
+inline constexpr double kMaxSpeed_dps = 4300.0;
+inline constexpr double kTemperatureWarning_C = 70.0; // manual 7.3 115.1
+
+// Margins for "feasible" (A-SIZE-5).
+inline constexpr double kTorqueMargin = 0.90;   // peak <= 90 % of capability
+inline constexpr double kTrackingMargin = 0.80; // max tracking error <= 80 % of index 87.1
+
+// Checks the request against the module's limits; throws SizingInputError
+// with a message naming the option. Builds the load once to learn its
+// inertia (MJCF loads); returns it in g cm^2.
+double validate(const SizingRequest& request);
+
+// Highest speed the motor reaches at this voltage (manual 3.5.3): 4300 x U / 24, at most 4300.
+double voltage_speed_limit_dps(double voltage_V);
+
+// The parameter set for a setting: raw values as written, read back as the
+// device reads them; the writes for index 64 + request.parameter_set.
+ParameterSetValues make_parameter_set(const SizingRequest& request, const MotionSetting& setting,
+                                      double load_gcm2);
+
+// Runs the twin for one parameter set (no validation).
+Evaluation evaluate(const SizingRequest& request, const ParameterSetValues& set, bool keep_trace);
+
+// validate + evaluate the given set, or search the fastest feasible one.
+SizingResult size(const SizingRequest& request);
+
+} // namespace sreh::sizing

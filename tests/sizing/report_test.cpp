@@ -1,0 +1,61 @@
+// Sizing and sweep reports (issue 8): self-contained HTML with the plots and
+// the numbers, written atomically (no .tmp left behind).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "sizing/report.hpp"
+
+namespace sreh::sizing {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(Report, SizeReportHasPlotsNumbersAndWrites) {
+  if (!reports_available()) GTEST_SKIP() << "built without renders";
+  SizingRequest rq;
+  rq.angle_deg = 30;
+  rq.load = InertiaLoad{1000};
+  rq.setting = MotionSetting{1000, 100, 100};
+  rq.cycles = 1;
+  rq.keep_trace = true;
+  const SizingResult r = size(rq);
+  ASSERT_FALSE(r.evaluation.trace.empty());
+  const std::string html = size_report_html(rq, r);
+  EXPECT_NE(html.find("<svg"), std::string::npos);
+  EXPECT_NE(html.find("Motor torque"), std::string::npos);
+  EXPECT_NE(html.find("Velocity"), std::string::npos);
+  EXPECT_NE(html.find("isdu_write index 65 sub 1 value 10000"), std::string::npos);
+  EXPECT_EQ(html.find("<script"), std::string::npos);
+
+  const fs::path dir = fs::path(testing::TempDir()) / "sreh_sizing_report_test";
+  fs::remove_all(dir);
+  const fs::path index = write_size_report(dir, rq, r);
+  EXPECT_TRUE(fs::exists(index));
+  EXPECT_FALSE(fs::exists(dir / "index.html.tmp"));
+  std::ifstream in(index);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_EQ(text.str(), html);
+  fs::remove_all(dir);
+}
+
+TEST(Report, SweepReportHasBothPlots) {
+  if (!reports_available()) GTEST_SKIP() << "built without renders";
+  SweepRequest rq;
+  rq.loads_gcm2 = {0, 3000};
+  rq.angles_deg = {30};
+  rq.speeds_dps = {1500};
+  rq.base.cycles = 1;
+  const SweepResult r = run_sweep(rq);
+  const std::vector<double> targets = default_targets_s(r);
+  ASSERT_FALSE(targets.empty());
+  const std::string html = sweep_report_html(rq, r, targets);
+  EXPECT_NE(html.find("Positioning time vs load"), std::string::npos);
+  EXPECT_NE(html.find("Heaviest load"), std::string::npos);
+}
+
+} // namespace
+} // namespace sreh::sizing
