@@ -268,6 +268,15 @@ class ScenarioRun {
     r_.cycles = twin_->cycles();
     if (o_.record_trace) r_.trace = twin_->trace();
     r_.nvm_image = twin_->save_nvm();
+    auto raw = [&](uint16_t index, uint8_t sub) -> double {
+      const IsduResult res = twin_->isdu_read(index, sub);
+      uint64_t v = 0;
+      for (uint8_t b : res.data) v = (v << 8) | b;
+      return res.ok() ? static_cast<double>(v) : 0.0;
+    };
+    r_.tracking_limit_deg = raw(87, 2) != 0 ? raw(87, 1) * 0.1 : 0.0; // 87.1 raw 0.1 deg (A-PARAM-1)
+    r_.tolerance_deg = raw(65, 5) * 360.0 / 524288.0;                 // 2^-19 rev
+    r_.wait_ms = raw(65, 6) * 0.1;
   }
 
   const Scenario& s_;

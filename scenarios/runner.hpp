@@ -47,6 +47,11 @@ struct RunResult {
   double max_supply_V = 0;
   std::vector<TraceRow> trace;        // with RunOptions::record_trace
   std::vector<uint8_t> nvm_image;     // non-volatile memory at the end (--save-nvm)
+  // Settings at the end of the run, for plots: the index-87 tracking limit (0
+  // when monitoring is off) and the tolerance / waiting time of parameter set 1.
+  double tracking_limit_deg = 0;
+  double tolerance_deg = 0;
+  double wait_ms = 0;
 };
 
 struct RunOptions {

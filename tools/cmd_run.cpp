@@ -17,7 +17,12 @@
 #include "scenarios/runner.hpp"
 #include "scenarios/scenario_parser.hpp"
 #include "tools/command.hpp"
+#include "twin/plant.hpp"
 #include "twin/trace.hpp"
+#ifdef SREH_WITH_RENDER
+#include "renders/report.hpp"
+#include "renders/video.hpp"
+#endif
 
 namespace sreh::tools {
 namespace {
@@ -29,7 +34,10 @@ struct RunArgs {
   bool json = false;
   std::string video;
   int fps = 30;
-  std::string size = "640x480";
+  std::string size = "1280x720";
+  double slowmo = 1.0;
+  std::string frames;
+  std::string camera = "default";
   std::string report;
   std::string save_nvm;
 };
@@ -96,29 +104,118 @@ void print_summary(const RunResult& r) {
                            r.final_state.warning_code);
 }
 
+#ifdef SREH_WITH_RENDER
+// Video frames are taken on IO-Link cycle boundaries (issue 7), by integer
+// frame index inside the recorder; the recorder is made when the twin exists.
+class VideoHook {
+ public:
+  explicit VideoHook(VideoOptions options) : options_(std::move(options)) {}
+  void on_cycle(const Twin& twin) {
+    const Plant& plant = twin.plant();
+    if (!recorder_) recorder_ = std::make_unique<VideoRecorder>(plant.model(), options_);
+    if (!recorder_->wants_frame(twin.time_s())) return;
+    const Telemetry t = twin.telemetry();
+    FrameInfo info;
+    info.t_s = twin.time_s();
+    info.state = t.state;
+    info.position_deg = t.position_deg;
+    info.setpoint_deg = t.setpoint_deg;
+    info.tracking_error_deg = t.tracking_error_deg;
+    info.error_code = t.error_code;
+    info.warning_code = t.warning_code;
+    info.led = t.led;
+    info.ghost_joint_rad = plant.ghost_angle_rad();
+    recorder_->add_frame(plant.model(), plant.data(), info);
+  }
+  void finish() {
+    if (recorder_) recorder_->finish();
+  }
+
+ private:
+  VideoOptions options_;
+  std::unique_ptr<VideoRecorder> recorder_;
+};
+
+VideoOptions video_options(const RunArgs& a) {
+  VideoOptions v;
+  v.path = a.video;
+  v.frames_dir = a.frames;
+  v.fps = a.fps;
+  v.slowmo = a.slowmo;
+  const auto x = a.size.find('x');
+  v.width_px = std::stoi(a.size.substr(0, x));
+  v.height_px = std::stoi(a.size.substr(x + 1));
+  if (v.width_px % 2 != 0 || v.height_px % 2 != 0) {
+    throw InputError(fmt::format("--size {}: width and height must be even (H.264, yuv420p)", a.size));
+  }
+  if (a.camera == "top") v.camera = CameraSpec::top();
+  return v;
+}
+
+void write_report_dir(const RunArgs& a, const RunResult& r) {
+  ReportInput in;
+  in.scenario_name = r.name;
+  in.passed = r.passed;
+  for (const auto& c : r.checks) in.checks.push_back({fmt::format("step {} (line {}): {}", c.step, c.line, c.description), c.passed});
+  in.trace = r.trace;
+  in.moves = r.moves;
+  in.tracking_limit_deg = r.tracking_limit_deg;
+  in.tolerance_deg = r.tolerance_deg;
+  in.wait_ms.assign(r.moves.size(), r.wait_ms);
+  if (!a.video.empty()) {
+    namespace fs = std::filesystem;
+    in.video_file = fs::relative(fs::absolute(a.video), fs::absolute(a.report)).generic_string();
+  }
+  try {
+    write_report(a.report, in);
+  } catch (const std::exception& e) {
+    throw InputError(fmt::format("--report {}: {}", a.report, e.what()));
+  }
+}
+#endif
+
 int run_command(const RunArgs& a) {
-  // Renders are wired in by the renders work (issue 7); until then the options
-  // exist but refuse, so that scripts fail loudly rather than silently.
-  if (!a.video.empty()) throw InputError("--video: not yet available");
-  if (!a.report.empty()) throw InputError("--report: not yet available");
+#ifndef SREH_WITH_RENDER
+  if (!a.video.empty() || !a.frames.empty()) throw InputError("--video: built without rendering (SREH_WITH_RENDER=OFF)");
+  if (!a.report.empty()) throw InputError("--report: built without rendering (SREH_WITH_RENDER=OFF)");
+#endif
   if (!std::regex_match(a.size, std::regex("[1-9][0-9]{1,4}x[1-9][0-9]{1,4}"))) {
-    throw InputError(fmt::format("--size {}: expected WIDTHxHEIGHT, e.g. 640x480", a.size));
+    throw InputError(fmt::format("--size {}: expected WIDTHxHEIGHT, e.g. 1280x720", a.size));
   }
   check_output(a.trace, "--trace");
   check_output(a.save_nvm, "--save-nvm");
+  check_output(a.video, "--video");
+  check_output(a.report, "--report");
+  if (a.camera != "default" && a.camera != "top") {
+    throw InputError(fmt::format("--camera {}: expected default or top", a.camera));
+  }
 
   RunResult result;
   try {
     const Scenario scenario = parse_scenario_file(a.scenario);
     Progress progress(isatty(STDERR_FILENO) != 0);
     RunOptions options;
-    options.record_trace = !a.trace.empty();
+    options.record_trace = !a.trace.empty() || !a.report.empty();
+#ifdef SREH_WITH_RENDER
+    std::optional<VideoHook> video;
+    if (!a.video.empty() || !a.frames.empty()) video.emplace(video_options(a));
+    options.on_cycle = [&](const Twin& twin) {
+      if (video) video->on_cycle(twin);
+      progress.update(twin.time_s());
+    };
+    result = run_scenario(scenario, options);
+    if (video) video->finish();
+#else
     options.on_cycle = [&](const Twin& twin) { progress.update(twin.time_s()); };
     result = run_scenario(scenario, options);
+#endif
   } catch (const ScenarioError& e) {
     throw InputError(e.what());
   }
   write_outputs(a, result);
+#ifdef SREH_WITH_RENDER
+  if (!a.report.empty()) write_report_dir(a, result);
+#endif
   if (a.json) {
     std::cout << to_json(result).dump(2) << "\n";
   } else {
@@ -138,7 +235,11 @@ SREH_REGISTER_COMMAND(10, [](CLI::App& app, int& exit_code) {
   cmd->add_flag("--json", args->json, "Print one JSON object with the results on stdout");
   cmd->add_option("--video", args->video, "Render an MP4 video of the run");
   cmd->add_option("--fps", args->fps, "Video frames per second")->check(CLI::Range(1, 240));
-  cmd->add_option("--size", args->size, "Video size WIDTHxHEIGHT");
+  cmd->add_option("--size", args->size, "Video size WIDTHxHEIGHT (even numbers)")->capture_default_str();
+  cmd->add_option("--slowmo", args->slowmo, "Play the video this many times slower than simulated time")
+      ->check(CLI::Range(0.01, 1000.0));
+  cmd->add_option("--frames", args->frames, "Also write PNG frames into this folder");
+  cmd->add_option("--camera", args->camera, "Camera: default (frames module and load) or top")->capture_default_str();
   cmd->add_option("--report", args->report, "Write an HTML report with plots into this folder");
   cmd->add_option("--save-nvm", args->save_nvm, "Save the device's non-volatile memory at the end to this file");
   cmd->callback([args, &exit_code] { exit_code = run_command(*args); });

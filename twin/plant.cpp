@@ -102,6 +102,7 @@ void Plant::set_led_rgba(const std::array<float, 4>& rgba) {
 }
 
 void Plant::set_ghost_angle(double angle_rad) {
+  ghost_angle_rad_ = angle_rad;
   // Joint axis is -z: a flange angle q is a rotation by -q about world z.
   double* quat = data_->mocap_quat + 4 * ghost_mocap_;
   quat[0] = std::cos(-angle_rad / 2);

@@ -72,6 +72,7 @@ class Plant {
   const mjData* data() const { return data_.get(); }
   void set_led_rgba(const std::array<float, 4>& rgba);   // geom "led_band"
   void set_ghost_angle(double angle_rad);                // mocap "setpoint_ghost", physical frame
+  double ghost_angle_rad() const { return ghost_angle_rad_; } // what set_ghost_angle last set
 
  private:
   void check_warnings();
@@ -87,6 +88,7 @@ class Plant {
   int actuator_ = 0;
   int led_geom_ = 0;
   int ghost_mocap_ = 0;
+  double ghost_angle_rad_ = 0;
   double load_inertia_kgm2_ = 0;
   double axis_inertia_kgm2_ = 0;
   double external_torque_Nm_ = 0;
