@@ -55,9 +55,9 @@ nlohmann::json to_json(const SizingRequest& rq, const SizingResult& r) {
     writes.push_back({{"index", w.index}, {"subindex", w.subindex}, {"value", w.value}, {"comment", w.comment}});
   }
   j["recommended"] = {{"parameter_set", e.set.set},
-                      {"speed_dps", e.set.setting.speed_dps},
-                      {"accel_pct", e.set.setting.accel_pct},
-                      {"jerk_pct", e.set.setting.jerk_pct},
+                      {"speed_dps", e.set.tidy.speed_dps},
+                      {"accel_pct", e.set.tidy.accel_pct},
+                      {"jerk_pct", e.set.tidy.jerk_pct},
                       {"load_gcm2", e.set.load_gcm2},
                       {"tolerance_deg", e.set.tolerance_deg},
                       {"wait_ms", e.set.wait_ms},

@@ -58,6 +58,8 @@ ParameterSetValues make_parameter_set(const SizingRequest& rq, const MotionSetti
   }
   const MotionParameterSet m = store.motion_set(rq.parameter_set);
   v.setting = MotionSetting{m.speed_dps, m.accel_pct, m.jerk_pct};
+  v.tidy = MotionSetting{static_cast<double>(speed) / 10.0, static_cast<double>(accel) / 10.0,
+                         static_cast<double>(jerk) / 10.0};
   v.load_gcm2 = m.load_gcm2;
   v.tolerance_deg = m.tolerance_deg;
   v.wait_ms = m.wait_ms;

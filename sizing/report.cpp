@@ -226,8 +226,13 @@ std::string sweep_report_html(const SweepRequest& rq, const SweepResult& result,
       svg::Series s;
       s.label = fmt::format("{} deg", angles[a]);
       s.color = colour(a);
+      // A step function: the heaviest load holds until the next target.
       for (const HeaviestLoad& h : inv) {
         if (h.angle_deg != angles[a] || !h.load_gcm2) continue;
+        if (!s.y.empty()) {
+          s.x.push_back(h.target_s);
+          s.y.push_back(s.y.back());
+        }
         s.x.push_back(h.target_s);
         s.y.push_back(*h.load_gcm2);
       }

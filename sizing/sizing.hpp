@@ -57,7 +57,8 @@ struct IsduWrite {
 // A complete parameter set as written to the device.
 struct ParameterSetValues {
   int set = 1;
-  MotionSetting setting;    // display values as the device reads them back
+  MotionSetting setting;    // display values as the device reads them back (raw x 0.1)
+  MotionSetting tidy;       // the same as raw / 10: 81.3 rather than 81.30000000000001, for output
   double load_gcm2 = 0;     // configured load (64+n.4)
   double tolerance_deg = 0; // after raw rounding
   double wait_ms = 0;

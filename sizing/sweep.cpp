@@ -108,8 +108,8 @@ void write_sweep_csv(std::ostream& out, const SweepResult& result) {
   for (const SweepPoint& p : result.points) {
     const Evaluation& e = p.result.evaluation;
     out << csv_number(p.load_gcm2) << ',' << csv_number(p.angle_deg) << ',' << csv_number(p.voltage_V) << ','
-        << (p.result.recommended ? "recommend" : "evaluate") << ',' << csv_number(e.set.setting.speed_dps) << ','
-        << csv_number(e.set.setting.accel_pct) << ',' << csv_number(e.set.setting.jerk_pct) << ','
+        << (p.result.recommended ? "recommend" : "evaluate") << ',' << csv_number(e.set.tidy.speed_dps) << ','
+        << csv_number(e.set.tidy.accel_pct) << ',' << csv_number(e.set.tidy.jerk_pct) << ','
         << csv_number(e.travel_s) << ',' << csv_time(e.completed, e.settling_s) << ','
         << csv_time(e.completed, e.positioning_s) << ',' << csv_time(e.completed, e.cycle_s) << ','
         << csv_time(e.completed, e.cycles_per_min) << ',' << csv_number(e.peak_torque_Nm) << ','
