@@ -61,7 +61,7 @@ LoadSpec load_from_file(const std::string& path) {
     throw InputError(fmt::format("{}: expected a top-level 'load:' key (e.g. load: {{disk: {{mass_kg: 0.4, radius_m: 0.1}}}})", path));
   }
   if (!root["name"]) text += "\nname: load from " + std::filesystem::path(path).filename().string() + "\n";
-  if (!root["steps"]) text += "\nsteps: []\n";
+  if (!root["steps"]) text += "\nsteps:\n  - comment: sizing load\n"; // a scenario needs one step
   try {
     return parse_scenario_text(text, path, std::filesystem::path(path).parent_path().string()).load;
   } catch (const ScenarioError& e) {
