@@ -9,7 +9,7 @@ namespace sreh {
 
 ControllerGains default_controller_gains() {
   ControllerGains g;
-  g.bandwidth_rad_s = 250.0;    // A-CTRL-1
+  g.bandwidth_rad_s = 500.0;    // A-CTRL-1
   g.damping = 0.8;              // A-CTRL-2
   g.integral_ratio = 0.3;       // A-CTRL-3
   g.velocity_filter_s = 0.3e-3; // A-CTRL-4

@@ -62,7 +62,7 @@ endif()
 
 # Bad option: exit 2, and no output file left behind.
 run_twin(2 ${PASSING} --trace ${WORK}/no_such_dir/trace.csv)
-run_twin(2 ${PASSING} --video ${WORK}/x.mp4)
+run_twin(2 ${PASSING} --video ${WORK}/x.mp4 --size 321x240)
 if(EXISTS ${WORK}/x.mp4 OR EXISTS ${WORK}/x.mp4.tmp)
   message(FATAL_ERROR "--video left a file")
 endif()
