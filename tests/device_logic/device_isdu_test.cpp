@@ -171,9 +171,7 @@ TEST(Led, ColourPerState_3_1) {
   EXPECT_EQ(r.dev.led(), LedColor::Off); // Motor Off
   r.switch_on();
   EXPECT_EQ(r.dev.led(), LedColor::Green);
-  r.pd.target_position = static_cast<int32_t>(deg_to_wire_counts(90));
-  r.pd.parameter_set = 1;
-  r.pd.move = true;
+  r.start_move(90);
   r.cycle();
   EXPECT_EQ(r.dev.led(), LedColor::Yellow);
   ASSERT_TRUE(r.wait_state(State::Done));

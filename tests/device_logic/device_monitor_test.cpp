@@ -152,9 +152,7 @@ TEST(Settling, TimeoutDisabledWaitsForever_3_5_8) {
     ASSERT_TRUE(r.write_u(65, 7, 100).ok());
     ASSERT_TRUE(r.write_u(65, 8, enabled).ok());
     r.switch_on();
-    r.pd.target_position = static_cast<int32_t>(deg_to_wire_counts(90));
-    r.pd.parameter_set = 1;
-    r.pd.move = true;
+    r.start_move(90);
     for (int i = 0; i < 250; ++i) {
       r.external_Nm = (i % 2) ? 0.05 : -0.05;
       r.cycle();

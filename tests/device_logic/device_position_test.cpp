@@ -172,10 +172,7 @@ TEST(ZeroOffset, SetOriginIsVolatile_4_3_2) {
   r.switch_on();
   ASSERT_TRUE(r.move_to_deg(100));
   r.release_move();
-  r.pd.set_origin = true;
-  r.cycle();
-  r.pd.set_origin = false;
-  r.cycle();
+  r.set_origin_pulse();
   EXPECT_NEAR(r.position_deg(), 0.0, 0.1);
   r.pd.motor_on = false;
   r.cycle();
@@ -189,10 +186,7 @@ TEST(ZeroOffset, StoreOrigin171Persists_4_3_2_6_6) {
   r.switch_on();
   ASSERT_TRUE(r.move_to_deg(100));
   r.release_move();
-  r.pd.set_origin = true;
-  r.cycle();
-  r.pd.set_origin = false;
-  r.cycle();
+  r.set_origin_pulse();
   ASSERT_TRUE(r.command(171).ok());
   EXPECT_NEAR(static_cast<double>(r.read_u(86, 0)), static_cast<double>(deg_to_wire_counts(100.0)), 20.0);
   r.pd.motor_on = false;
@@ -220,10 +214,7 @@ TEST(ZeroOffset, Command170ReinitialisesFromStoredOffset_4_3_3) {
   r.angle_rad = deg_to_rad(30.0);
   r.power_cycle();
   r.switch_on();
-  r.pd.set_origin = true;
-  r.cycle();
-  r.pd.set_origin = false;
-  r.cycle();
+  r.set_origin_pulse();
   ASSERT_NEAR(r.position_deg(), 0.0, 0.01);
   ASSERT_TRUE(r.command(170).ok()); // back to the stored offset 0
   r.cycle();

@@ -99,13 +99,25 @@ struct Rig {
     cycle();
     cycle();
   }
-  // Absolute (or moded) move with parameter set 1; returns once Done or an error.
-  bool move_to_deg(double deg, uint8_t set = 1, double max_s = 3.0) {
+  // Sets target, parameter set and Move (the mode bits as they are); the
+  // device sees them at the next cycle.
+  void start_move(double deg, uint8_t set = 1) {
     pd.target_position = static_cast<int32_t>(deg_to_wire_counts(deg));
     pd.parameter_set = set;
     pd.move = true;
+  }
+  // Absolute (or moded) move with parameter set 1; returns once Done or an error.
+  bool move_to_deg(double deg, uint8_t set = 1, double max_s = 3.0) {
+    start_move(deg, set);
     const bool ok = run_until([&] { return state() == State::Done || in.error; }, max_s);
     return ok && state() == State::Done;
+  }
+  // Set Origin pulse (manual 3.2 T6, T7): Done, then Ready again.
+  void set_origin_pulse() {
+    pd.set_origin = true;
+    cycle();
+    pd.set_origin = false;
+    cycle();
   }
   void release_move() {
     pd.move = false;

@@ -61,9 +61,7 @@ TEST(StateMachine, T1_WithMoveRaisesMoveFromInvalidState) {
 TEST(StateMachine, T3_T5_T7_MoveBusyDoneReady) {
   Rig r;
   r.switch_on();
-  r.pd.target_position = static_cast<int32_t>(deg_to_wire_counts(90));
-  r.pd.parameter_set = 1;
-  r.pd.move = true;
+  r.start_move(90);
   r.cycle();
   EXPECT_EQ(r.state(), State::Busy); // T3
   ASSERT_TRUE(r.wait_state(State::Done, 2.0)); // T5
@@ -76,9 +74,7 @@ TEST(StateMachine, T3_MoveWithStopGoesStraightToDone) {
   Rig r;
   r.switch_on();
   r.pd.stop = true;
-  r.pd.target_position = static_cast<int32_t>(deg_to_wire_counts(90));
-  r.pd.parameter_set = 1;
-  r.pd.move = true;
+  r.start_move(90);
   r.cycle();
   EXPECT_EQ(r.state(), State::Done);
   r.run_s(0.1);
@@ -88,9 +84,7 @@ TEST(StateMachine, T3_MoveWithStopGoesStraightToDone) {
 TEST(StateMachine, T4_StopBrakesAndStaysBusyUntilStopped) {
   Rig r;
   r.switch_on();
-  r.pd.target_position = static_cast<int32_t>(deg_to_wire_counts(720));
-  r.pd.parameter_set = 1;
-  r.pd.move = true;
+  r.start_move(720);
   r.run_s(0.1); // cruising
   ASSERT_EQ(r.state(), State::Busy);
   r.pd.stop = true;
@@ -175,9 +169,7 @@ TEST(StateMachine, T9_SwitchOffInErrorOn_AndNoSwitchOnInError) {
 TEST(InvalidCommands, Code1_MotorSwitchedOffInBusy_7_2) {
   Rig r;
   r.switch_on();
-  r.pd.target_position = static_cast<int32_t>(deg_to_wire_counts(300));
-  r.pd.parameter_set = 1;
-  r.pd.move = true;
+  r.start_move(300);
   r.run_s(0.04);
   ASSERT_EQ(r.state(), State::Busy);
   r.pd.motor_on = false;
@@ -202,9 +194,7 @@ TEST(InvalidCommands, Code1_MotorSwitchedOffInDone_7_2) {
 TEST(InvalidCommands, Code2_MoveReleasedBeforeDone_7_2) {
   Rig r;
   r.switch_on();
-  r.pd.target_position = static_cast<int32_t>(deg_to_wire_counts(300));
-  r.pd.parameter_set = 1;
-  r.pd.move = true;
+  r.start_move(300);
   r.run_s(0.04);
   ASSERT_EQ(r.state(), State::Busy);
   r.pd.move = false;
@@ -249,9 +239,7 @@ TEST(InvalidCommands, Code4_MoveFromErrorOn_7_2) {
 TEST(InvalidCommands, Code5_SetOriginFromBusy_7_2) {
   Rig r;
   r.switch_on();
-  r.pd.target_position = static_cast<int32_t>(deg_to_wire_counts(300));
-  r.pd.parameter_set = 1;
-  r.pd.move = true;
+  r.start_move(300);
   r.run_s(0.02);
   ASSERT_EQ(r.state(), State::Busy);
   r.pd.set_origin = true; // Move still set: both set is code 6
