@@ -205,6 +205,17 @@ class ScenarioRun {
   void execute(const Step&, const std::string&, const PowerCycleStep&) { twin_->power_cycle(); }
   void execute(const Step&, const std::string&, const CommentStep&) {}
 
+  void execute(const Step&, const std::string& id, const FirmwareStep& a) {
+    std::vector<uint8_t> image = Device::firmware_image(a.version);
+    if (a.corrupt) image[image.size() / 2] ^= 0xFF;
+    const uint16_t err = twin_->firmware_update(image);
+    const uint16_t want = a.expect_error.value_or(0);
+    std::string description = fmt::format("firmware {} image {}", a.corrupt ? "corrupt" : "good", a.version);
+    description += a.expect_error ? " expect_error " + hex_code(*a.expect_error) : "";
+    const std::string actual = err == 0 ? "ok" : "error " + hex_code(err);
+    record(id, a.loc, description, err == want, actual, "answered " + actual);
+  }
+
   void execute(const Step&, const std::string&, const RepeatStep& a) {
     const std::string outer = pass_;
     for (int i = 0; i < a.times; ++i) {

@@ -109,6 +109,13 @@ struct LinkStep { double down_s = 0; };
 struct PdValidStep { bool valid = true; };
 struct PowerCycleStep {};
 struct CommentStep { std::string text; };
+// Manual 9: transfer a firmware image in boot mode; `corrupt` spoils its checksum.
+struct FirmwareStep {
+  bool corrupt = false;
+  std::string version = "1.1.0";
+  std::optional<uint16_t> expect_error; // absent: the update must succeed
+  SourceLoc loc;
+};
 
 struct Step;
 struct RepeatStep {
@@ -119,7 +126,7 @@ struct RepeatStep {
 
 using StepAction = std::variant<PdStep, WaitStep, WaitUntilStep, ExpectStep, IsduReadStep, IsduWriteStep,
                                 TorqueStep, SupplyStep, LinkStep, PdValidStep, PowerCycleStep, CommentStep,
-                                RepeatStep>;
+                                FirmwareStep, RepeatStep>;
 
 struct Step {
   std::string number; // "3", or "5.2" inside a repeat

@@ -39,7 +39,7 @@ const std::vector<std::string_view> kConditionKeys = {
 
 const std::vector<std::string_view> kStepKinds = {
     "pd", "wait_s", "wait_until", "expect", "isdu_read", "isdu_write", "torque", "supply",
-    "link", "pd_valid", "power", "comment", "repeat"};
+    "link", "pd_valid", "power", "comment", "firmware", "repeat"};
 
 std::optional<State> state_from_name(const std::string& s) {
   for (State st : {State::MotorOff, State::Ready, State::Busy, State::Done, State::ErrorOn, State::ErrorOff}) {
@@ -253,6 +253,19 @@ class Parser {
       if (r_.text(v, kw) != "cycle") r_.fail(v, fmt::format("{}: only 'cycle' is known, got '{}'", kw, v.Scalar()));
       step.action = PowerCycleStep{};
     } else if (k == "comment") step.action = CommentStep{r_.text(v, kw)};
+    else if (k == "firmware") {
+      r_.check_map(v, kw, {"image", "version", "expect_error"});
+      FirmwareStep f;
+      const std::string image = r_.text(r_.require(v, "image", kw), kw + ".image");
+      if (image != "good" && image != "corrupt") {
+        r_.fail(v["image"], fmt::format("{}.image: 'good' or 'corrupt', got '{}'", kw, image));
+      }
+      f.corrupt = image == "corrupt";
+      if (v["version"]) f.version = r_.text(v["version"], kw + ".version");
+      if (v["expect_error"]) f.expect_error = isdu_error_code(v["expect_error"], kw + ".expect_error");
+      f.loc = step.loc;
+      step.action = f;
+    }
     else { // repeat
       r_.check_map(v, kw, {"times", "until", "steps"});
       RepeatStep rep;

@@ -188,5 +188,6 @@ double Twin::load_inertia_gcm2() const { return kgm2_to_gcm2(impl_->plant.load_i
 const Device& Twin::device() const { return impl_->device; }
 const Plant& Twin::plant() const { return impl_->plant; }
 std::vector<uint8_t> Twin::save_nvm() const { return impl_->device.save_nvm(); }
+uint16_t Twin::firmware_update(std::span<const uint8_t> image) { return impl_->device.firmware_update(image); }
 
 } // namespace sreh

@@ -75,6 +75,8 @@ class Twin {
   void set_external_torque(double torque_Nm);
   void set_supply_voltage(double volts);
   void power_cycle();                   // off and on again; non-volatile memory kept
+  // Manual 9: hand a firmware image to the device in boot mode (0 or an ISDU error code).
+  uint16_t firmware_update(std::span<const uint8_t> image);
 
   // Advance one IO-Link cycle (exchange, then cycle_s / physics_dt_s steps).
   void run_cycle();
