@@ -189,6 +189,7 @@ void Device::Impl::enter(State to, Event via) {
       positioned = false;
       faults.warning_cause[static_cast<int>(WarningBit::Positioning)] = 0; // manual 3.5.7: next move clears
       store.set_raw_internal(96, 0, store.raw(96, 0) + 1); // manual 6.3 (DE): number of moves
+      ++moves_started;
       break;
     }
     case Event::MoveStartStopped: // T3 with Stop: Done without moving
@@ -496,6 +497,7 @@ Telemetry Device::telemetry() const {
   t.led = d.led();
   t.moving = d.state == State::Busy && d.phase == MotionPhase::Travel;
   t.settling = d.phase == MotionPhase::Settle;
+  t.moves_started = d.moves_started;
   return t;
 }
 

@@ -77,6 +77,7 @@ struct Device::Impl {
   PositionController controller;
   std::optional<int64_t> last_target_phys; // manual 3.4 relative moves
   bool positioned = false;   // completed positioning, window watched for 115.3
+  uint32_t moves_started = 0; // T3 since power-on (telemetry)
   KinematicState setpoint{}; // physical rad, this step
   double stop_base_rad = 0;  // profile positions are relative to this
   int64_t prev_encoder = 0;

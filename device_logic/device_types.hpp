@@ -51,6 +51,7 @@ struct Telemetry {
   LedColor led = LedColor::Off;
   bool moving = false;            // a trajectory is being followed (travel phase)
   bool settling = false;          // trajectory ended, waiting for the tolerance window
+  uint32_t moves_started = 0;     // Move commands accepted (T3) since power-on
 };
 
 } // namespace sreh

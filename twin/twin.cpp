@@ -52,7 +52,9 @@ struct Twin::Impl {
   // control step on the tick time t_s.
   void track_move(double t_s) {
     const Telemetry tel = device.telemetry();
-    if (tel.moving && !was_moving) {
+    // A record per accepted Move (T3), zero-length moves included.
+    if (tel.moves_started != moves_seen) {
+      moves_seen = tel.moves_started;
       MoveRecord rec;
       rec.start_s = t_s;
       rec.settling_s = -1;
@@ -61,7 +63,6 @@ struct Twin::Impl {
       move_open = true;
       travel_done = false;
     }
-    was_moving = tel.moving;
     if (!move_open) return;
     MoveRecord& rec = moves.back();
     rec.max_tracking_error_deg = std::max(rec.max_tracking_error_deg, std::abs(tel.tracking_error_deg));
@@ -123,7 +124,7 @@ struct Twin::Impl {
   std::vector<TraceRow> trace;
   std::vector<MoveRecord> moves;
   int64_t ticked_counts = 0; // encoder reading the device saw last
-  bool was_moving = false;
+  uint32_t moves_seen = 0; // the device's T3 count, reset with its power
   bool move_open = false;
   bool travel_done = false;
 };
@@ -155,6 +156,7 @@ void Twin::set_supply_voltage(double volts) { impl_->plant.set_supply_voltage(vo
 void Twin::power_cycle() {
   impl_->device.power_off();
   impl_->device.power_on(impl_->plant.sensors());
+  impl_->moves_seen = 0;
   impl_->refresh_direction();
 }
 
