@@ -50,6 +50,20 @@ void BM_PlantStep(benchmark::State& state) {
 
 // A PLC program: motor on, then moves between 0 and 90 deg, each started
 // when the previous one is Done (manual 3.4 handshake: Move back to 0 first).
+// The PLC of the benchmarks: 0 -> 90 -> 0 deg moves, one IO-Link cycle per call.
+void plc_cycle(Twin& twin, ProcessDataOut& pd, bool& at_90) {
+  const ProcessDataIn in = twin.pd_in();
+  if (in.ready && !pd.move) {
+    pd.target_position = at_90 ? 0 : static_cast<int32_t>(deg_to_wire_counts(90));
+    pd.move = true;
+    at_90 = !at_90;
+  } else if (in.done && pd.move) {
+    pd.move = false;
+  }
+  twin.set_pd_out(pd);
+  twin.run_cycle();
+}
+
 void BM_TwinCycle(benchmark::State& state) {
   TwinConfig c;
   c.load = InertiaLoad{kLoad_gcm2};
@@ -63,16 +77,7 @@ void BM_TwinCycle(benchmark::State& state) {
   twin.set_pd_out(pd);
   bool at_90 = false;
   for (auto _ : state) {
-    const ProcessDataIn in = twin.pd_in();
-    if (in.ready && !pd.move) {
-      pd.target_position = at_90 ? 0 : static_cast<int32_t>(deg_to_wire_counts(90));
-      pd.move = true;
-      at_90 = !at_90;
-    } else if (in.done && pd.move) {
-      pd.move = false;
-    }
-    twin.set_pd_out(pd);
-    twin.run_cycle();
+    plc_cycle(twin, pd, at_90);
   }
   state.counters["moves"] = static_cast<double>(twin.moves().size());
   state.counters["realtime_x"] = benchmark::Counter(2e-3 * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
@@ -110,16 +115,7 @@ void BM_PairedTwinVsBare(benchmark::State& state) {
     }
     const double t1 = thread_cpu_s();
     for (int n = 0; n < kChunk; ++n) {
-      const ProcessDataIn in = twin.pd_in();
-      if (in.ready && !pd.move) {
-        pd.target_position = at_90 ? 0 : static_cast<int32_t>(deg_to_wire_counts(90));
-        pd.move = true;
-        at_90 = !at_90;
-      } else if (in.done && pd.move) {
-        pd.move = false;
-      }
-      twin.set_pd_out(pd);
-      twin.run_cycle();
+      plc_cycle(twin, pd, at_90);
     }
     const double t2 = thread_cpu_s();
     bare_s += t1 - t0;

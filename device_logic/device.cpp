@@ -11,7 +11,6 @@
 namespace sreh {
 
 namespace {
-int64_t to_ns(double dt_s) { return static_cast<int64_t>(std::llround(dt_s * 1e9)); }
 double counts_to_rad(int64_t c) { return internal_counts_to_rad(c); }
 } // namespace
 
@@ -348,7 +347,7 @@ std::optional<PdInFrame> Device::exchange(const PdOutFrame& out, bool outputs_va
 MotorCommand Device::tick(double dt_s, const SensorReadings& sensors) {
   Impl& d = *impl_;
   if (!d.powered) return {};
-  const int64_t dt_ns = to_ns(dt_s);
+  const int64_t dt_ns = seconds_to_ns(dt_s);
   d.time_ns += dt_ns;
   d.encoder = sensors.encoder_counts;
   d.supply_V = sensors.supply_V;
@@ -369,7 +368,7 @@ MotorCommand Device::tick(double dt_s, const SensorReadings& sensors) {
   }
   d.run_diagnostics(dt_ns);
   if (d.boot_mode) return {};
-  d.run_monitors(dt_s);
+  d.run_monitors(dt_ns);
   return d.control(dt_s);
 }
 

@@ -112,7 +112,7 @@ struct Device::Impl {
   void init_origin();
   std::optional<ErrorBit> prepare_move(const ProcessDataOut& cmd, uint8_t& code);
   void start_stop_profile();
-  void run_monitors(double dt_s);
+  void run_monitors(int64_t dt_ns);
   void run_diagnostics(int64_t dt_ns);
   MotorCommand control(double dt_s);
   ProcessDataIn pd_in() const;

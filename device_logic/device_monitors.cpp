@@ -7,12 +7,7 @@
 #include "device_logic/device_impl.hpp"
 
 namespace sreh {
-namespace {
-int64_t to_ns(double dt_s) { return static_cast<int64_t>(std::llround(dt_s * 1e9)); }
-} // namespace
-
-void Device::Impl::run_monitors(double dt_s) {
-  const int64_t dt_ns = to_ns(dt_s);
+void Device::Impl::run_monitors(int64_t dt_ns) {
   // Temperature (manual 7.2 114.3, 7.3 115.1); the warning clears itself.
   if (temperature_C >= kTemperatureError_C && faults.error(ErrorBit::Temperature) == 0) {
     raise_error(ErrorBit::Temperature, cause::kOverTemperature);

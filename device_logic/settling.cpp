@@ -3,12 +3,11 @@
 
 #include <cmath>
 
+#include "device_logic/units.hpp"
+
 namespace sreh {
-namespace {
 // Time as integer nanoseconds: 25 ms at 0.1 ms steps is exactly 250 steps,
 // whatever the float rounding of the step sum would say.
-int64_t to_ns(double s) { return std::isfinite(s) && s > 0.0 ? std::llround(s * 1e9) : 0; }
-} // namespace
 
 bool SettlingMonitor::within(double error_rad, double tolerance_rad) {
   return std::abs(error_rad) <= tolerance_rad;
@@ -16,8 +15,8 @@ bool SettlingMonitor::within(double error_rad, double tolerance_rad) {
 
 void SettlingMonitor::start(const SettlingParameters& p) { // point (b)
   p_ = p;
-  wait_ns_ = to_ns(p.wait_s);
-  timeout_ns_ = to_ns(p.timeout_s);
+  wait_ns_ = seconds_to_ns(p.wait_s);
+  timeout_ns_ = seconds_to_ns(p.timeout_s);
   elapsed_ns_ = 0;
   in_window_ns_ = 0;
   inside_ = false;
@@ -26,7 +25,7 @@ void SettlingMonitor::start(const SettlingParameters& p) { // point (b)
 
 SettlingResult SettlingMonitor::update(double error_rad, double dt_s) {
   if (result_ != SettlingResult::Settling) return result_;
-  const int64_t dt_ns = to_ns(dt_s);
+  const int64_t dt_ns = seconds_to_ns(dt_s);
   elapsed_ns_ += dt_ns;
   if (within(error_rad, p_.tolerance_rad)) {
     if (inside_) {

@@ -46,6 +46,10 @@ constexpr int64_t rad_to_internal_counts(double rad) {
   return round_to_int64(rad * (static_cast<double>(kInternalCountsPerRev) / (2.0 * kPi)));
 }
 
+// Durations in integer nanoseconds, so clocks never accumulate float error
+// (style.md 8). Non-finite or negative durations count as 0.
+inline int64_t seconds_to_ns(double s) { return s > 0.0 && s < 9e9 ? static_cast<int64_t>(s * 1e9 + 0.5) : 0; }
+
 // alpha100% = M / (J_intern + J_load), manual 3.5.4.
 constexpr double alpha100_rad_s2(double load_gcm2) {
   return kMotorTorque_Nm / (kInternalInertia_kgm2 + gcm2_to_kgm2(load_gcm2));
