@@ -14,7 +14,17 @@ packages=(
   libcli11-dev libfmt-dev nlohmann-json3-dev              # command line, formatting, JSON output
   libgtest-dev libgmock-dev libbenchmark-dev              # tests, benchmarks
   libosmesa6-dev libpng-dev ffmpeg                        # off-screen rendering, PNG frames, H.264 video
+  libjs-dygraphs                                          # zoomable plots, inlined into reports and the live page
+  clang libclang-rt-14-dev                                # libFuzzer harnesses (tests/fuzz)
+  libxml2-utils                                           # xmllint: checks the IODD-like export against our XSD
+  libmodbus-dev libcpp-httplib-dev libmosquitto-dev       # serve: Modbus TCP, HTTP/JSON, MQTT
+  mosquitto mbpoll curl python3-pymodbus                  # serve's tests: broker and real PLC-style clients
+  pybind11-dev python3-pybind11 python3-numpy python3-pytest  # Python API and its tests (Debian's /usr/bin/python3)
+  parallel                                                # sharded sweeps and scenario runs
 )
+if [ "${SREH_WITH_EXAMPLES:-0}" = 1 ]; then
+  packages+=(python3-matplotlib python3-distributed) # only for examples/python
+fi
 if [ "${SREH_WITH_BROWSER:-0}" = 1 ]; then
   packages+=(chromium) # only for the report-in-a-browser test
 fi
