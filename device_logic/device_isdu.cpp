@@ -1,6 +1,7 @@
 // ISDU routing of the Device (manual chapter 6): volatile diagnostics and
 // the device-side system commands here, stored parameters in ParameterStore.
 #include <algorithm>
+#include "device_logic/byte_order.hpp"
 #include <cmath>
 
 #include "device_logic/device_impl.hpp"
@@ -29,8 +30,7 @@ std::vector<uint8_t> Device::Impl::detailed_device_status() const {
   auto push = [&](uint8_t qualifier, uint16_t code) {
     if (slot >= 4) return;
     out[slot * 3] = qualifier;
-    out[slot * 3 + 1] = static_cast<uint8_t>(code >> 8);
-    out[slot * 3 + 2] = static_cast<uint8_t>(code);
+    be::write(std::span<uint8_t>(out).subspan(slot * 3 + 1, 2), code);
     ++slot;
   };
   for (int bit = 7; bit >= 0; --bit) {
