@@ -15,6 +15,7 @@
 #include "device_logic/units.hpp"
 #include "scenarios/isdu_value.hpp"
 #include "scenarios/yaml_reader.hpp"
+#include "twin/load_builder.hpp"
 
 namespace sreh {
 namespace {
@@ -182,13 +183,9 @@ class Parser {
     std::vector<fs::path> tried;
     const fs::path given(p);
     tried.push_back(given.is_absolute() || base_dir_.empty() ? given : fs::path(base_dir_) / given);
-#ifdef SREH_MODELS_DIR
     if (allow_models_dir && !given.is_absolute() && p.rfind("models/", 0) == 0) {
-      tried.push_back(fs::path(SREH_MODELS_DIR).parent_path() / given);
+      tried.push_back(fs::path(models_dir()) / fs::path(p.substr(7)));
     }
-#else
-    (void)allow_models_dir;
-#endif
     for (const auto& t : tried) {
       std::error_code ec;
       if (fs::is_regular_file(t, ec)) return t.lexically_normal().string();

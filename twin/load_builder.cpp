@@ -254,9 +254,16 @@ std::string hard_stops_xml(const std::vector<HardStop>& stops) {
   return xml;
 }
 
+std::string& models_dir_setting() {
+  static std::string dir = SREH_MODELS_DIR;
+  return dir;
+}
+
 } // namespace
 
-std::string default_module_model_path() { return std::string(SREH_MODELS_DIR) + "/sreh50.xml"; }
+std::string models_dir() { return models_dir_setting(); }
+void set_models_dir(const std::string& dir) { models_dir_setting() = dir; }
+std::string default_module_model_path() { return models_dir() + "/sreh50.xml"; }
 
 std::string describe_load(const LoadSpec& load) {
   struct Describe {
