@@ -25,7 +25,7 @@ import sreh_twin
 J_INTERN_GCM2 = 1150.0
 
 
-def excite(twin, angles_deg, frames_per_move=150):
+def excite(twin, angles_deg, frames_per_move=400):
     """Moves between the angles with the handshake (manual 3.2 T3, T5, T7)."""
     for target in angles_deg:
         move = sreh_twin.pd_out(target, parameter_set=1, motor_on=True, move=True)
@@ -44,8 +44,14 @@ def main():
     # factory-configured load is used), as on a first commissioning.
     twin = sreh_twin.Twin(load_file=a.load_file, configure_load=False, master_cycle_ms=2)
     twin.run_cycles(10, sreh_twin.pd_out(motor_on=True))
-    twin.isdu_write(65, 1, 15000)  # a moderate 1500 deg/s for the identification run
+    # A gentle identification set (manual 6.2, index 65): the device plans
+    # its ramps for the configured load, which is still the factory value, so
+    # full acceleration would overload the motor (tracking error 114.5).
+    twin.isdu_write(65, 1, 15000)  # 1500 deg/s
+    twin.isdu_write(65, 2, 150)    # 15 % acceleration
     excite(twin, [120, -60, 200, 0, 90, -90])
+    if twin.state()["error_code"]:
+        raise SystemExit(f"identification run failed: {twin.state()}")
 
     tr = twin.trace()
     dt = np.diff(tr["t_s"]).mean()
