@@ -21,6 +21,7 @@ import re
 import statistics
 import subprocess
 import sys
+import tempfile
 import time
 
 import sreh_twin
@@ -41,10 +42,11 @@ def python_run_cycles_us(n=20000):
 
 
 def cpp_run_cycles_us(build):
-    out = subprocess.run([str(build / "bench" / "twin_bench"), "--benchmark_filter=BM_TwinRunCycles$",
-                          "--benchmark_format=json", "--benchmark_min_time=1"],
-                         capture_output=True, text=True, check=True).stdout
-    [run] = json.loads(out[out.index("{"):])["benchmarks"]
+    with tempfile.NamedTemporaryFile(suffix=".json") as out:
+        subprocess.run([str(build / "bench" / "twin_bench"), "--benchmark_filter=BM_TwinRunCycles$",
+                        "--benchmark_min_time=1", f"--benchmark_out={out.name}", "--benchmark_out_format=json"],
+                       capture_output=True, check=True)
+        [run] = json.load(open(out.name))["benchmarks"]
     return run["cpu_time"]  # us per iteration (one cycle)
 
 
