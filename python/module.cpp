@@ -6,7 +6,7 @@
 #include <pybind11/stl.h>
 
 #include "device_logic/device_types.hpp"
-#include "twin/load_builder.hpp"
+#include "twin/models_dir.hpp"
 
 namespace sreh::py {
 
@@ -93,9 +93,8 @@ class IsduError(base):
   }
   m.attr("STATES") = pyb::tuple(states);
   m.attr("LEDS") = pyb::tuple(leds);
-  m.def("set_models_dir", &sreh::set_models_dir, pyb::arg("path"),
-        "Use this models folder (sreh50.xml, loads/) for every twin built from now on.");
-  m.def("models_dir", &sreh::models_dir, "The models folder twins are built from.");
+  m.def("models_dir", &sreh::models_dir,
+        "The models folder twins are built from (twin/models_dir.hpp: $SREH_TWIN_MODELS_DIR first).");
 
   bind_process_data(m);
   bind_twin(m);

@@ -2,6 +2,7 @@
 // scenarios/README.md; every limit that the manual does not give is in
 // docs/assumptions/scenarios.md (A-SCN-*).
 #include "scenarios/scenario_parser.hpp"
+#include "twin/models_dir.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -15,7 +16,6 @@
 #include "device_logic/units.hpp"
 #include "scenarios/isdu_value.hpp"
 #include "scenarios/yaml_reader.hpp"
-#include "twin/load_builder.hpp"
 
 namespace sreh {
 namespace {
@@ -184,7 +184,7 @@ class Parser {
     const fs::path given(p);
     tried.push_back(given.is_absolute() || base_dir_.empty() ? given : fs::path(base_dir_) / given);
     if (allow_models_dir && !given.is_absolute() && p.rfind("models/", 0) == 0) {
-      tried.push_back(fs::path(models_dir()) / fs::path(p.substr(7)));
+      tried.push_back(fs::path(models_dir()).parent_path() / given); // twin/models_dir.hpp
     }
     for (const auto& t : tried) {
       std::error_code ec;

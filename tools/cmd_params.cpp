@@ -14,7 +14,9 @@
 #include <nlohmann/json.hpp>
 
 #include "device_logic/parameter_table.hpp"
+#include "scenarios/atomic_file.hpp"
 #include "tools/command.hpp"
+#include "tools/iodd_export.hpp"
 
 namespace sreh::tools {
 namespace {
@@ -24,6 +26,7 @@ using Json = nlohmann::ordered_json;
 struct ParamsArgs {
   bool json = false;
   std::string which; // INDEX[.SUB] for `show`
+  std::string iodd_path; // FILE.xml for `export --iodd`
 };
 
 std::string hex_octets(std::string_view bytes) {
@@ -226,6 +229,15 @@ int show_command(const ParamsArgs& a) {
   return 0;
 }
 
+// ----------------------------------------------------------------- export
+
+int export_command(const ParamsArgs& a) {
+  if (!output_folder_exists(a.iodd_path))
+    throw InputError(fmt::format("--iodd {}: the folder does not exist", a.iodd_path));
+  write_file_atomic(a.iodd_path, [](std::ostream& os) { os << iodd_document(SREH_VERSION); });
+  return 0;
+}
+
 } // namespace
 
 SREH_REGISTER_COMMAND(50, [](CLI::App& app, int& exit_code) {
@@ -242,6 +254,12 @@ SREH_REGISTER_COMMAND(50, [](CLI::App& app, int& exit_code) {
   show->add_option("INDEX[.SUB]", args->which, "Index, or index.subindex, e.g. 64 or 64.1")->required();
   show->add_flag("--json", args->json, "Print one JSON object");
   show->callback([args, &exit_code] { exit_code = show_command(*args); });
+
+  CLI::App* exp = params->add_subcommand("export", "Write a device description generated from the table");
+  exp->add_option("--iodd", args->iodd_path,
+                  "IODD-like XML (IODD vocabulary; schema docs/iodd/sreh-iodd.xsd)")
+      ->required();
+  exp->callback([args, &exit_code] { exit_code = export_command(*args); });
 
   params->callback([params, args, &exit_code] {
     if (params->get_subcommands().empty()) exit_code = list_command(*args);

@@ -1,4 +1,5 @@
 #include "twin/load_builder.hpp"
+#include "twin/models_dir.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -254,15 +255,8 @@ std::string hard_stops_xml(const std::vector<HardStop>& stops) {
   return xml;
 }
 
-std::string& models_dir_setting() {
-  static std::string dir = SREH_MODELS_DIR;
-  return dir;
-}
-
 } // namespace
 
-std::string models_dir() { return models_dir_setting(); }
-void set_models_dir(const std::string& dir) { models_dir_setting() = dir; }
 std::string default_module_model_path() { return models_dir() + "/sreh50.xml"; }
 
 std::string describe_load(const LoadSpec& load) {

@@ -14,13 +14,7 @@ namespace sreh {
 // Manual 6.2, index 64..71 subindex 4: load range 0 .. 15'000 g cm^2.
 inline constexpr double kMaxLoad_gcm2 = 15000.0;
 
-// The folder holding sreh50.xml and loads/: this source tree's models/
-// unless set_models_dir() chose another (an installed copy: the Python
-// package sets its own at import). Set it before building any twin.
-std::string models_dir();
-void set_models_dir(const std::string& dir);
-
-// models_dir() + "/sreh50.xml".
+// models/sreh50.xml of this source tree.
 std::string default_module_model_path();
 
 // A short human-readable description, used in error messages.

@@ -12,11 +12,12 @@ import re as _re
 
 from . import _core
 
-# An installed package carries its own copy of the models (cmake --install);
-# in the build tree the source tree's models/ is used.
+# An installed package carries its own copy of the models (cmake --install)
+# and points the twin at it, unless the user chose a folder
+# (twin/models_dir.hpp); in the build tree the usual search applies.
 _models = _os.path.join(_os.path.dirname(__file__), "models")
 if _os.path.isfile(_os.path.join(_models, "sreh50.xml")):
-    _core.set_models_dir(_models)
+    _os.environ.setdefault("SREH_TWIN_MODELS_DIR", _models)
 
 from ._core import (  # noqa: E402
     IsduError,

@@ -20,7 +20,8 @@ def test_installed_package_stands_alone(tmp_path):
             "print(sreh_twin.models_dir());"
             "t = sreh_twin.Twin(load_file='models/loads/gripper.xml');"
             "print(t.load_inertia_gcm2 > 0, t.isdu_read(64, 4) > 0)")
-    env = {**os.environ, "PYTHONPATH": str(package.parent)}
+    env = {k: v for k, v in os.environ.items() if k != "SREH_TWIN_MODELS_DIR"}
+    env["PYTHONPATH"] = str(package.parent)
     done = subprocess.run([sys.executable, "-c", code], env=env, cwd=tmp_path, capture_output=True, text=True,
                           check=True)
     models, loaded = done.stdout.splitlines()
