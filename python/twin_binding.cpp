@@ -3,6 +3,7 @@
 // fault injection acts on the world (supply, link, flange, ambient).
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include <cmath>
 #include <memory>
@@ -118,7 +119,7 @@ uint64_t frame_bits(const std::array<uint8_t, N>& f) {
 
 class PyTwin {
  public:
-  PyTwin(std::optional<double> load_gcm2, std::optional<std::string> load_file, double voltage_V, double ambient_C,
+  PyTwin(std::optional<double> load_gcm2, std::optional<std::filesystem::path> load_file, double voltage_V, double ambient_C,
          double master_cycle_ms, bool configure_load, bool record_trace, std::vector<double> hard_stops_deg,
          std::optional<pyb::bytes> nvm) {
     TwinConfig c;
@@ -127,7 +128,7 @@ class PyTwin {
       check_finite(*load_gcm2, "load_gcm2");
       c.load = InertiaLoad{*load_gcm2};
     } else if (load_file) {
-      const std::string& f = *load_file;
+      const std::string f = load_file->string();
       if (f.size() > 4 && f.compare(f.size() - 4, 4, ".xml") == 0) {
         c.load = MjcfLoad{f}; // an MJCF body file, as `load: {mjcf: ...}`
       } else {
@@ -290,12 +291,12 @@ class PyTwin {
     return d;
   }
 
-  std::string trace_csv(const std::optional<std::string>& path) const {
+  std::string trace_csv(const std::optional<std::filesystem::path>& path) const {
     std::ostringstream out;
     write_trace_csv(out, twin_->trace());
     if (path) {
       try {
-        write_file_atomic(*path, [&](std::ostream& o) { o << out.str(); });
+        write_file_atomic(path->string(), [&](std::ostream& o) { o << out.str(); });
       } catch (const std::runtime_error& e) {
         throw input_error(e.what());
       }
@@ -349,7 +350,7 @@ The device is reached as from a PLC: exchange() / run_cycles() send the
 A load given here is mounted and, unless configure_load=False, written
 into every parameter set's configured load (index 64..71 subindex 4).
 Not thread-safe: one Twin per thread.)")
-      .def(pyb::init<std::optional<double>, std::optional<std::string>, double, double, double, bool, bool,
+      .def(pyb::init<std::optional<double>, std::optional<std::filesystem::path>, double, double, double, bool, bool,
                      std::vector<double>, std::optional<pyb::bytes>>(),
            pyb::kw_only(), arg("load_gcm2") = pyb::none(), arg("load_file") = pyb::none(), arg("voltage_V") = 24.0,
            arg("ambient_C") = 25.0, arg("master_cycle_ms") = 2.0, arg("configure_load") = true,
