@@ -27,3 +27,4 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/sreh_twinConfigVersion.cm
   VERSION ${PROJECT_VERSION} COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/sreh_twinConfig.cmake ${PROJECT_BINARY_DIR}/sreh_twinConfigVersion.cmake
         DESTINATION ${SREH_INSTALL_CMAKEDIR})
+install(FILES ${PROJECT_SOURCE_DIR}/tools/completion/sreh-twin.bash DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions RENAME sreh-twin)

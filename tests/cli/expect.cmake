@@ -3,6 +3,7 @@
 # stderr starting "sreh-twin: " and nothing on stdout; optional regular
 # expressions for stdout and stderr; optionally that stderr names FILE:LINE:COL.
 #   -DCMD="<sreh-twin>;arg;arg" -DEXIT=<code> [-DSTDOUT_MATCH=re] [-DSTDERR_MATCH=re] [-DWHERE=FILE]
+#   [-DMAX_WIDTH=N]: no stdout line longer than N characters
 execute_process(COMMAND ${CMD} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL EXIT)
   message(FATAL_ERROR "exit ${rc}, expected ${EXIT}\nstdout: ${out}\nstderr: ${err}")
@@ -26,4 +27,13 @@ if(DEFINED STDOUT_MATCH AND NOT out MATCHES "${STDOUT_MATCH}")
 endif()
 if(DEFINED STDERR_MATCH AND NOT err MATCHES "${STDERR_MATCH}")
   message(FATAL_ERROR "stderr does not match '${STDERR_MATCH}':\n${err}")
+endif()
+if(DEFINED MAX_WIDTH)
+  string(REPLACE "\n" ";" lines "${out}")
+  foreach(line IN LISTS lines)
+    string(LENGTH "${line}" n)
+    if(n GREATER MAX_WIDTH)
+      message(FATAL_ERROR "line of ${n} > ${MAX_WIDTH} characters: ${line}")
+    endif()
+  endforeach()
 endif()
