@@ -107,7 +107,11 @@ class PositioningEnv(_Base):
         self._pd_in = None
 
     def reset(self, seed=None, options=None):
-        """A factory-new module with the motor on (Ready); returns (obs, info)."""
+        """A factory-new module with the motor on (Ready); returns (obs, info).
+
+        seed reseeds the goal generator and action_space; options may give
+        "goal_deg" and any sreh_twin.Twin keyword (e.g. "load_gcm2") for
+        this episode."""
         if seed is not None:
             self._rng = np.random.default_rng(seed)
             self.action_space.seed(seed)
