@@ -115,7 +115,7 @@ TEST(Twin, SameRunTwiceGivesIdenticalTraceBytes) {
   EXPECT_EQ(a, run_once());
   EXPECT_EQ(a.substr(0, a.find('\n')),
             "t_s,state,setpoint_deg,position_deg,tracking_error_deg,velocity_dps,torque_Nm,supply_V,temperature_C,"
-            "error_code,warning_code,pd_out_hex,pd_in_hex,led,torque_limit_Nm,external_torque_Nm");
+            "error_code,warning_code,pd_out_hex,pd_in_hex,led,torque_limit_Nm,external_torque_Nm,iolink_led");
   EXPECT_NE(a.find("Done"), std::string::npos);
 }
 
