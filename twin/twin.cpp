@@ -151,6 +151,9 @@ struct Twin::Impl {
 };
 
 Twin::Twin(const TwinConfig& config) : impl_(std::make_unique<Impl>(config)) {
+  // A run starts on a running rig: the master took the port through STARTUP
+  // and PREOPERATE before t = 0 and has exchanged once (A-LINK-3).
+  if (const auto in = impl_->device.exchange(encode(impl_->pd_out), impl_->outputs_valid)) impl_->last_pd_in = *in;
   impl_->refresh_direction();
   impl_->update_visuals();
 }
