@@ -35,6 +35,7 @@ void Device::Impl::power_on(const SensorReadings& s) {
   init_origin();
   hold_phys = encoder;
   boot_mode = firmware_failed; // manual 9: only boot mode until a good image
+  link_up = true; // Startup until the master moves on, or off once the watchdog expires (A-LINK-3)
 }
 
 // ---------------------------------------------------------------------------
@@ -395,7 +396,7 @@ IoLinkLedMode Device::io_link_led() const {
   const Impl& d = *impl_;
   if (!d.powered || d.comm_blocked) return IoLinkLedMode::NotConnected;
   switch (d.com_phase) {
-    case ComPhase::Startup: return IoLinkLedMode::Startup;
+    case ComPhase::Startup: return d.link_up ? IoLinkLedMode::Startup : IoLinkLedMode::NotConnected;
     case ComPhase::Preoperate: return d.link_up ? IoLinkLedMode::Preoperate : IoLinkLedMode::NotConnected;
     case ComPhase::Operate: return d.link_up ? IoLinkLedMode::Operate : IoLinkLedMode::NotConnected;
   }
