@@ -282,8 +282,11 @@ class ScenarioRun {
                                           a.version, image.size());
     uint16_t err = 0;
     for (const IsduWriteRequest& w : firmware_requests(image)) {
+      // The supply fails before the chunk that would pass F, at the latest
+      // before the end command (F = 1: the image is in, but never checked).
+      const bool end = w.subindex == 2 && w.data == std::vector<uint8_t>{1};
       if (a.power_off_at && w.image_octets_after > 0 &&
-          static_cast<double>(w.image_octets_after) > *a.power_off_at * static_cast<double>(image.size())) {
+          (end || static_cast<double>(w.image_octets_after) > *a.power_off_at * static_cast<double>(image.size()))) {
         twin_->power_cycle(); // the supply fails with this fraction sent
         return;
       }

@@ -71,3 +71,18 @@ TEST(LinkUp, FirstCheckAfterTheLinkReturnsIsCurrent_Manual5) {
 
 } // namespace
 } // namespace sreh
+
+namespace sreh {
+namespace {
+
+TEST(FirmwareStep, PowerOffAtOneLeavesTheImageUnchecked_Manual9_A_SCN_18) {
+  const RunResult r = run_scenario(parse_scenario_text(
+      "name: x\nsteps:\n  - isdu_write: {index: 2, value: 80}\n  - isdu_write: {index: 2, value: 81}\n"
+      "  - isdu_write: {index: 2, value: 82}\n  - firmware: {image: good, size_kB: 1, power_off_at: 1}\n"
+      "  - wait_until: {iolink_led: operate, within_s: 1}\n  - isdu_read: {index: 17343, expect: 2}\n",
+      "t.yaml", ""));
+  EXPECT_TRUE(r.passed) << (r.failures.empty() ? "" : r.failures[0]);
+}
+
+} // namespace
+} // namespace sreh
