@@ -12,6 +12,7 @@ namespace sreh::detail {
 namespace {
 constexpr double kMaxDurationS = 3600.0; // A-SCN-1, as for every duration
 constexpr double kMaxTurnDeg = 36000.0;  // A-SCN-1: 100 revolutions by hand is plenty
+constexpr double kMaxFirmwareKB = 4096.0; // the device's image limit (A-FW-4)
 } // namespace
 
 bool integer_multiple(double a, double b) {
@@ -92,6 +93,27 @@ PowerCycleStep parse_power(const YamlReader& r, const YAML::Node& n, const std::
   p.off_s = r.number(r.require(n, "off_s", what), what + ".off_s", 0.0, kMaxDurationS);
   if (n["turn_deg"]) p.turn_deg = r.number(n["turn_deg"], what + ".turn_deg", -kMaxTurnDeg, kMaxTurnDeg);
   return p;
+}
+
+// firmware: {image: good|corrupt, version, size_kB, power_off_at, expect_error} (manual 9).
+FirmwareStep parse_firmware(const YamlReader& r, const YAML::Node& v, const std::string& what) {
+  r.check_map(v, what, {"image", "version", "size_kB", "power_off_at", "expect_error"});
+  FirmwareStep f;
+  const std::string image = r.text(r.require(v, "image", what), what + ".image");
+  if (image != "good" && image != "corrupt") {
+    r.fail(v["image"], fmt::format("{}.image: 'good' or 'corrupt', got '{}'", what, image));
+  }
+  f.corrupt = image == "corrupt";
+  if (v["version"]) f.version = r.text(v["version"], what + ".version");
+  if (v["size_kB"]) {
+    f.size_B = static_cast<std::size_t>(std::llround(r.number(v["size_kB"], what + ".size_kB", 0.0, kMaxFirmwareKB) * 1024.0));
+  }
+  if (v["power_off_at"]) {
+    if (v["expect_error"]) r.fail(v["expect_error"], what + ": give power_off_at or expect_error, not both (an interrupted transfer has no answer)");
+    f.power_off_at = r.number(v["power_off_at"], what + ".power_off_at", 0.0, 1.0);
+  }
+  if (v["expect_error"]) f.expect_error = static_cast<uint16_t>(r.integer(v["expect_error"], what + ".expect_error", 0x8000, 0x80FF));
+  return f;
 }
 
 } // namespace sreh::detail

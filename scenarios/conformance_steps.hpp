@@ -27,5 +27,6 @@ SetStep parse_set(const YamlReader& r, const YAML::Node& n, const std::string& w
 SaveStep parse_save(const YamlReader& r, const YAML::Node& n, const std::string& what, std::set<std::string>& saved);
 LinkStep parse_link(const YamlReader& r, const YAML::Node& n, const std::string& what);
 PowerCycleStep parse_power(const YamlReader& r, const YAML::Node& n, const std::string& what);
+FirmwareStep parse_firmware(const YamlReader& r, const YAML::Node& n, const std::string& what);
 
 } // namespace sreh::detail

@@ -38,7 +38,6 @@ constexpr double kMaxSupplyV = 40.0;
 constexpr double kMaxTorqueNm = 50.0;
 constexpr double kMaxDurationS = 3600.0;
 constexpr int kMaxRepeat = 100000;
-constexpr double kMaxFirmwareKB = 4096.0; // the device's image limit (A-FW-4)
 
 const std::vector<std::string_view> kConditionKeys = {
     "state", "position_deg", "position_raw", "error_code", "warning_code", "error", "warning",
@@ -263,22 +262,7 @@ class Parser {
     } else if (k == "pd_valid") step.action = PdValidStep{r_.boolean(v, kw)};
     else if (k == "power") step.action = detail::parse_power(r_, v, kw); else if (k == "comment") step.action = CommentStep{r_.text(v, kw)};
     else if (k == "firmware") {
-      r_.check_map(v, kw, {"image", "version", "size_kB", "power_off_at", "expect_error"});
-      FirmwareStep f;
-      const std::string image = r_.text(r_.require(v, "image", kw), kw + ".image");
-      if (image != "good" && image != "corrupt") {
-        r_.fail(v["image"], fmt::format("{}.image: 'good' or 'corrupt', got '{}'", kw, image));
-      }
-      f.corrupt = image == "corrupt";
-      if (v["version"]) f.version = r_.text(v["version"], kw + ".version");
-      if (v["size_kB"]) {
-        f.size_B = static_cast<std::size_t>(std::llround(r_.number(v["size_kB"], kw + ".size_kB", 0.0, kMaxFirmwareKB) * 1024.0));
-      }
-      if (v["power_off_at"]) {
-        if (v["expect_error"]) r_.fail(v["expect_error"], kw + ": give power_off_at or expect_error, not both (an interrupted transfer has no answer)");
-        f.power_off_at = r_.number(v["power_off_at"], kw + ".power_off_at", 0.0, 1.0);
-      }
-      if (v["expect_error"]) f.expect_error = isdu_error_code(v["expect_error"], kw + ".expect_error");
+      FirmwareStep f = detail::parse_firmware(r_, v, kw);
       f.loc = step.loc;
       step.action = f;
     }
