@@ -143,12 +143,14 @@ Evaluation evaluate(const SizingRequest& rq, const ParameterSetValues& set, bool
     if (twin.moves().size() > records_before) {
       const MoveRecord& rec = twin.moves().back();
       mr.max_tracking_error_deg = rec.max_tracking_error_deg;
+      mr.overshoot_deg = rec.overshoot_deg;
       mr.simulated_travel_s = rec.travel_s;
       mr.completed = rec.completed && in.done && !in.error;
       if (mr.completed) {
-        // A-SIZE-7: positioning as simulated; settling = positioning - planned travel.
-        mr.positioning_s = rec.positioning_s;
-        mr.settling_s = rec.positioning_s - ev.travel_s;
+        // A-SIZE-7: settling as simulated, from the end of the trajectory (b)
+        // to Done (f); positioning = planned travel + settling (>= travel).
+        mr.settling_s = rec.settling_s;
+        mr.positioning_s = ev.travel_s + rec.settling_s;
       }
     }
     ev.moves.push_back(mr);

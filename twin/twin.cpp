@@ -28,6 +28,7 @@ PlantConfig plant_config(const TwinConfig& c) {
   p.hard_stops = c.hard_stops;
   p.supply = c.supply;
   p.thermal = c.thermal;
+  p.mounting_tilt_deg = c.mounting_tilt_deg;
   p.physics_dt_s = c.physics_dt_s;
   return p;
 }
@@ -48,8 +49,10 @@ struct Twin::Impl {
     direction = (r.ok() && !r.data.empty() && r.data[0] == 1) ? -1.0 : 1.0;
   }
 
-  // Move records (interfaces.md `moves`, manual 3.5.2), evaluated every
-  // control step on the tick time t_s.
+  // Move records (interfaces.md `moves`, manual 3.5.2 Fig. 3), evaluated
+  // every control step on the tick time t_s. Travel ends at (b), the tick
+  // the trajectory ends; positioning at (f), the tick the device reports
+  // Done; settling = positioning - travel >= 0 by construction (A-TWIN-12).
   void track_move(double t_s) {
     const Telemetry tel = device.telemetry();
     // A record per accepted Move (T3), zero-length moves included.
@@ -62,6 +65,17 @@ struct Twin::Impl {
       moves.push_back(rec);
       move_open = true;
       travel_done = false;
+      overshoot_open = false;
+      start_position_deg = tel.position_deg;
+    }
+    if (overshoot_open) {
+      // Past the target in the direction of travel, while the module holds it.
+      if (tel.state == State::Done || tel.state == State::Busy || tel.state == State::Ready) {
+        MoveRecord& rec = moves.back();
+        rec.overshoot_deg = std::max(rec.overshoot_deg, travel_sign * (tel.position_deg - rec.target_deg));
+      } else {
+        overshoot_open = false;
+      }
     }
     if (!move_open) return;
     MoveRecord& rec = moves.back();
@@ -70,6 +84,10 @@ struct Twin::Impl {
       travel_done = true;
       rec.travel_s = t_s - rec.start_s;
       rec.target_deg = tel.setpoint_deg;
+      const double d = rec.target_deg - start_position_deg;
+      travel_sign = d > 0 ? 1.0 : d < 0 ? -1.0 : 0.0;
+      overshoot_open = tel.state == State::Busy || tel.state == State::Done;
+      if (overshoot_open) rec.overshoot_deg = std::max(0.0, travel_sign * (tel.position_deg - rec.target_deg));
     }
     if (tel.state == State::Done && travel_done) {
       rec.positioning_s = t_s - rec.start_s;
@@ -127,6 +145,9 @@ struct Twin::Impl {
   uint32_t moves_seen = 0; // the device's T3 count, reset with its power
   bool move_open = false;
   bool travel_done = false;
+  bool overshoot_open = false;  // the last move's target is being held
+  double travel_sign = 0;       // +1 / -1: direction of the last move (process-data frame)
+  double start_position_deg = 0;
 };
 
 Twin::Twin(const TwinConfig& config) : impl_(std::make_unique<Impl>(config)) {
@@ -157,6 +178,8 @@ void Twin::power_cycle() {
   impl_->device.power_off();
   impl_->device.power_on(impl_->plant.sensors());
   impl_->moves_seen = 0;
+  impl_->move_open = false;
+  impl_->overshoot_open = false;
   impl_->refresh_direction();
 }
 

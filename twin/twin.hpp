@@ -47,6 +47,9 @@ struct TwinConfig {
   std::vector<HardStop> hard_stops;
   SupplySpec supply;
   ThermalSpec thermal;
+  // Mounting (A-TWIN-19): tilt of the axis from vertical in degrees; 0 =
+  // vertical axis (default), 90 = horizontal (see PlantConfig).
+  double mounting_tilt_deg = 0.0;
   double physics_dt_s = 1e-4;
   double cycle_s = 0.002;        // IO-Link cycle; an integer multiple of physics_dt_s
   std::optional<std::vector<uint8_t>> nvm_image; // saved memory; factory-new otherwise
