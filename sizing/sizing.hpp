@@ -75,6 +75,7 @@ struct MoveResult {
   double positioning_s = -1;// travel + settling, (4)
   double max_tracking_error_deg = 0;
   double overshoot_deg = 0; // past the target in the direction of travel
+  double in_window_s = -1;  // from (b) until in the tolerance window for good; < 0: not in it at the end
   bool completed = false;
 };
 

@@ -38,6 +38,8 @@ struct MoveRecord {
   double positioning_s = 0;    // (4) travel + settling (>= travel); <0 if never completed
   double max_tracking_error_deg = 0;
   double overshoot_deg = 0;    // furthest past the target in the direction of travel, from (b) until the next move (>= 0)
+  double in_window_s = -1;     // from (b) until the position entered the tolerance window for good (servo.md),
+                               // while the target is held; <0: outside the window when the move's record ended
   double target_deg = 0;
   bool completed = false;      // reached Done (false: stopped, error, SettlingTimeout 114.8)
 };

@@ -73,6 +73,7 @@ struct Twin::Impl {
       if (tel.state == State::Done || tel.state == State::Busy || tel.state == State::Ready) {
         MoveRecord& rec = moves.back();
         rec.overshoot_deg = std::max(rec.overshoot_deg, travel_sign * (tel.position_deg - rec.target_deg));
+        watch_window(rec, t_s, tel);
       } else {
         overshoot_open = false;
       }
@@ -87,7 +88,12 @@ struct Twin::Impl {
       const double d = rec.target_deg - start_position_deg;
       travel_sign = d > 0 ? 1.0 : d < 0 ? -1.0 : 0.0;
       overshoot_open = tel.state == State::Busy || tel.state == State::Done;
-      if (overshoot_open) rec.overshoot_deg = std::max(0.0, travel_sign * (tel.position_deg - rec.target_deg));
+      if (overshoot_open) {
+        rec.overshoot_deg = std::max(0.0, travel_sign * (tel.position_deg - rec.target_deg));
+        travel_end_s = t_s;
+        in_window = false;
+        watch_window(rec, t_s, tel);
+      }
     }
     if (tel.state == State::Done && travel_done) {
       rec.positioning_s = t_s - rec.start_s;
@@ -97,6 +103,16 @@ struct Twin::Impl {
     } else if (tel.state != State::Busy) {
       move_open = false; // stopped, motor off or an error: never completed
     }
+  }
+
+  // servo.md: the instant the position entered the tolerance window for
+  // good (inclusive, A-MOTION-6), counted from (b), as long as the target is
+  // held; leaving the window again clears it.
+  void watch_window(MoveRecord& rec, double t_s, const Telemetry& tel) {
+    const bool inside = std::abs(tel.position_deg - rec.target_deg) <= tel.tolerance_deg;
+    if (inside && !in_window) rec.in_window_s = t_s - travel_end_s;
+    if (!inside) rec.in_window_s = -1;
+    in_window = inside;
   }
 
   void record_row(const PdOutFrame& out_frame) {
@@ -148,6 +164,8 @@ struct Twin::Impl {
   bool overshoot_open = false;  // the last move's target is being held
   double travel_sign = 0;       // +1 / -1: direction of the last move (process-data frame)
   double start_position_deg = 0;
+  double travel_end_s = 0;      // (b) of the last move, tick time
+  bool in_window = false;       // the last move's target window holds the position now
 };
 
 Twin::Twin(const TwinConfig& config) : impl_(std::make_unique<Impl>(config)) {
