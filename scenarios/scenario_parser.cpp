@@ -147,7 +147,7 @@ class Parser {
     return InertiaLoad{r_.number(v, what, 0.0, 1e6)};
   }
 
-  // Axis orientation (A-TWIN-19): {axis: vertical|horizontal} or {tilt_deg: T}.
+  // Axis orientation (A-TWIN-24): {axis: vertical|horizontal} or {tilt_deg: T}.
   double parse_mounting(const YAML::Node& n) {
     r_.check_map(n, "mounting", {"axis", "tilt_deg"});
     if (n["axis"] && n["tilt_deg"]) r_.fail(n, "mounting: give either axis or tilt_deg, not both");

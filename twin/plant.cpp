@@ -11,12 +11,12 @@ namespace {
 
 // Drive-train effects MuJoCo's joint has no element for (the Coulomb part
 // is the rotor joint's frictionloss, the viscous part its damping).
-// A-TWIN-17: Stribeck rise of the bearing friction near standstill: static
+// A-TWIN-22: Stribeck rise of the bearing friction near standstill: static
 // friction 1.5x the Coulomb 0.004 N m, fading out over ~0.02 rad/s.
 constexpr double kStribeckExcess_Nm = 0.002;
 constexpr double kStribeckSpeed_rad_s = 0.02;
 constexpr double kStribeckSmoothing_rad_s = 1e-3; // sign(w) smoothed: no chatter at rest
-// A-TWIN-18: cogging torque 0.005 N m (1 % of M), 60 periods per revolution
+// A-TWIN-23: cogging torque 0.005 N m (1 % of M), 60 periods per revolution
 // (a 10-pole / 12-slot motor: lcm(10, 12) = 60).
 constexpr double kCogging_Nm = 0.005;
 constexpr double kCoggingPeriodsPerRev = 60.0;
@@ -58,7 +58,7 @@ Plant::Plant(const PlantConfig& config)
   if (ghost_mocap_ < 0) {
     throw std::invalid_argument(file + ": body \"setpoint_ghost\" must be a mocap body");
   }
-  // A-TWIN-19: the module tilted about its x axis by T: in the module's
+  // A-TWIN-24: the module tilted about its x axis by T: in the module's
   // frame "down" is (0, -sin T, -cos T).
   const double tilt = deg_to_rad(config.mounting_tilt_deg);
   const double g = std::sqrt(m->opt.gravity[0] * m->opt.gravity[0] + m->opt.gravity[1] * m->opt.gravity[1] +
@@ -108,6 +108,21 @@ double Plant::drive_train_torque_Nm(double rotor_angle_rad, double rotor_speed_r
   return stribeck + cogging;
 }
 
+// A clamp on the flange (output): its absolute angle held, the rotor still
+// free to wind the compliance against it.
+void Plant::set_flange_blocked(bool blocked) {
+  if (blocked && !blocked_) blocked_angle_rad_ = angle_rad();
+  blocked_ = blocked;
+  if (blocked_) hold_flange();
+}
+
+void Plant::hold_flange() {
+  mjData* d = data_.get();
+  d->qpos[twist_qpos_] = blocked_angle_rad_ - d->qpos[rotor_qpos_];
+  d->qvel[twist_dof_] = -d->qvel[rotor_dof_];
+  mj_forward(model_.get(), d);
+}
+
 const SensorReadings& Plant::step(const MotorCommand& cmd) {
   if (failed_) {
     throw std::runtime_error("plant: stepping after a MuJoCo failure");
@@ -132,6 +147,7 @@ const SensorReadings& Plant::step(const MotorCommand& cmd) {
   }
   check_warnings();
   ++steps_;
+  if (blocked_) hold_flange(); // the clamp takes whatever moved the flange
 
   // Electrical side over the step.
   copper_loss_W_ = drive_.mean_current_A() * drive_.mean_current_A() * motor_.winding_resistance_ohm;

@@ -7,7 +7,7 @@
 // Issue 14: two masses (rotor with the encoder, flange with the load) on a
 // torsional spring, the motor's current loop and winding (MotorDrive),
 // bearing friction with a Stribeck rise, cogging, and gravity from the
-// mounting orientation (docs/assumptions/twin.md A-TWIN-15..19).
+// mounting orientation (docs/assumptions/twin.md A-TWIN-20..24).
 #pragma once
 #include <array>
 #include <cstdint>
@@ -32,7 +32,7 @@ struct PlantConfig {
   ThermalSpec thermal;
   double physics_dt_s = 1e-4;
   MotorModel motor;
-  // Mounting (A-TWIN-19): tilt of the module's axis from vertical, degrees.
+  // Mounting (A-TWIN-24): tilt of the module's axis from vertical, degrees.
   // 0 = axis vertical (flange up), 90 = axis horizontal with the module's +y
   // pointing up, so a load along +x at flange angle 0 feels the largest
   // gravity torque (m g r cos(angle)).
@@ -57,6 +57,12 @@ class Plant {
 
   void set_external_torque(double torque_Nm) { external_torque_Nm_ = torque_Nm; } // physical frame
   double external_torque_Nm() const { return external_torque_Nm_; }
+  // A rigid clamp on the flange (output) at its present angle: after every
+  // step the flange is put back there at rest (the rotor still winds the
+  // compliance against it), so the motor works against it (stall).
+  void set_flange_blocked(bool blocked);
+  bool flange_blocked() const { return blocked_; }
+  void set_ambient_C(double ambient_C) { thermal_.set_ambient_C(ambient_C); }
   void set_supply_voltage(double volts) { supply_.set_source_voltage(volts); sensors_.supply_V = supply_.bus_voltage_V(); }
 
   // State, physical frame. The flange (output, where loads sit) and the
@@ -99,6 +105,7 @@ class Plant {
 
  private:
   void check_warnings();
+  void hold_flange(); // set_flange_blocked: flange back at blocked_angle_rad_, at rest
   double drive_train_torque_Nm(double rotor_angle_rad, double rotor_speed_rad_s) const;
 
   MjModelPtr model_;
@@ -127,6 +134,8 @@ class Plant {
   double copper_loss_W_ = 0;
   uint64_t steps_ = 0;
   bool failed_ = false;
+  bool blocked_ = false;
+  double blocked_angle_rad_ = 0;
   SensorReadings sensors_;
 };
 

@@ -140,7 +140,7 @@ TEST(Controller, GainScheduleLowersBandwidthWithConfiguredLoad) {
     last_wv = wv;
     last_kv = j * wv;
     // mujoco.md: a discrete D term is stable only for Kd < 2 J / dt; above
-    // the two-mass resonance the velocity loop sees the rotor alone (A-TWIN-15:
+    // the two-mass resonance the velocity loop sees the rotor alone (A-TWIN-20:
     // J_m = 1.0e-4 kg m^2), so that bound applies to it.
     EXPECT_LT(j * wv, 2.0 * 1.0e-4 / 1e-4) << load;
   }

@@ -1,6 +1,6 @@
 // The plant's drive train (issue 14): two masses on a torsional compliance,
 // gravity from the mounting, turning the unpowered module by hand.
-// docs/assumptions/twin.md A-TWIN-4, A-TWIN-15..19.
+// docs/assumptions/twin.md A-TWIN-4, A-TWIN-20..24.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -61,7 +61,7 @@ TEST(DriveTrain, LoadRingsAtTheAntiresonanceAgainstAStillRotor) {
 
 // A horizontal axis with an eccentric mass m at radius r needs
 // m g r cos(angle) of holding torque (servo.md "Gravity"); the arm points
-// along +x at flange angle 0 (A-TWIN-19).
+// along +x at flange angle 0 (A-TWIN-24).
 TEST(DriveTrain, HorizontalAxisGravityTorqueFollowsMgrCosAngle) {
   const double m = 0.2, r = 0.06;
   for (double tilt : {90.0, 30.0}) {

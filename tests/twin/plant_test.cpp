@@ -134,7 +134,7 @@ TEST(Plant, HardStopHoldsPeakTorqueWithoutLoad) {
     max_deg = std::max(max_deg, rad_to_deg(plant.angle_rad()));
   }
   // Impact at ~70 rad/s; the rotor's momentum arrives through the
-  // compliance (A-TWIN-15) and presses the lug a little into the soft contact.
+  // compliance (A-TWIN-20) and presses the lug a little into the soft contact.
   EXPECT_LT(max_deg, 30.5);
   EXPECT_NEAR(rad_to_deg(plant.angle_rad()), 30.0, 0.05); // the light flange side sits softer in the contact
 }

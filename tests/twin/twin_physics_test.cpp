@@ -124,7 +124,7 @@ TEST(TwinPhysics, UnderconfiguredLoadOvershootsMore_3_5_6) {
 
 // servo.md "Gravity": a horizontal axis with an eccentric mass m at radius r
 // needs m g r cos(angle) of holding torque; the drive's integral action
-// finds it (within bearing friction and cogging, A-TWIN-2, A-TWIN-17, 18).
+// finds it (within bearing friction and cogging, A-TWIN-2, A-TWIN-22, 23).
 TEST(TwinPhysics, HoldingTorqueFollowsMgrCosAngleOnAHorizontalAxis) {
   const double m = 0.2, r = 0.06;
   const double mgr = m * 9.81 * r;
