@@ -36,6 +36,7 @@ Plant::Plant(const PlantConfig& config)
   if (ghost_mocap_ < 0) {
     throw std::invalid_argument(file + ": body \"setpoint_ghost\" must be a mocap body");
   }
+  block_eq_ = mj_name2id(m, mjOBJ_EQUALITY, "flange_block"); // optional: stand-in models may lack it
   data_.reset(mj_makeData(m));
   mj_forward(m, data_.get());
   sensors_.encoder_counts = 0;
@@ -95,6 +96,15 @@ void Plant::check_warnings() {
     }
   }
 }
+
+void Plant::set_flange_blocked(bool blocked) {
+  if (block_eq_ < 0) throw std::invalid_argument("plant: the module model has no equality \"flange_block\"");
+  // Joint equality with only joint1: q = polycoef[0], here the angle now.
+  model_->eq_data[mjNEQDATA * block_eq_] = data_->qpos[qpos_adr_];
+  model_->eq_active[block_eq_] = blocked ? 1 : 0;
+}
+
+bool Plant::flange_blocked() const { return block_eq_ >= 0 && model_->eq_active[block_eq_] != 0; }
 
 void Plant::set_led_rgba(const std::array<float, 4>& rgba) {
   float* dst = model_->geom_rgba + 4 * led_geom_;

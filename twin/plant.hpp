@@ -46,6 +46,12 @@ class Plant {
 
   void set_external_torque(double torque_Nm) { external_torque_Nm_ = torque_Nm; } // physical frame
   double external_torque_Nm() const { return external_torque_Nm_; }
+  void set_ambient_C(double ambient_C) { thermal_.set_ambient_C(ambient_C); }
+  // A jammed flange (fault injection): a MuJoCo joint equality holds the
+  // flange at the angle it has now; the motor pushes against it with what it
+  // can give, so tracking errors and torque come from the physics.
+  void set_flange_blocked(bool blocked);
+  bool flange_blocked() const;
   void set_supply_voltage(double volts) { supply_.set_source_voltage(volts); sensors_.supply_V = supply_.bus_voltage_V(); }
 
   // State, physical frame.
@@ -88,6 +94,7 @@ class Plant {
   int actuator_ = 0;
   int led_geom_ = 0;
   int ghost_mocap_ = 0;
+  int block_eq_ = -1; // equality "flange_block"
   double ghost_angle_rad_ = 0;
   double load_inertia_kgm2_ = 0;
   double axis_inertia_kgm2_ = 0;
