@@ -47,7 +47,9 @@ Scenario read_port_config(const std::string& path) {
   } catch (const YAML::Exception& e) {
     throw std::invalid_argument(fmt::format("{}:{}:{}: {}", path, e.mark.line + 1, e.mark.column + 1, e.msg));
   }
-  if (root.IsMap() && !root["steps"]) text += "\nsteps:\n  - wait_s: 0\n"; // steps are optional here
+  // name and steps are optional here (appended, so line numbers stay right)
+  if (root.IsMap() && !root["name"]) text += "\nname: port configuration\n";
+  if (root.IsMap() && !root["steps"]) text += "\nsteps:\n  - wait_s: 0\n";
   const std::string dir = fs::path(path).parent_path().string();
   return parse_scenario_text(text, path, dir);
 }

@@ -98,7 +98,8 @@ class PortView {
   pd(fields) { return api('PUT', `/v1/ports/${this.p}/processdata/out`, fields); }
   fault(body) { return api('POST', `/v1/ports/${this.p}/faults`, body); }
   async pulse(field) { await this.pd({ [field]: true }); setTimeout(() => this.run(() => this.pd({ [field]: false })), 100); }
-  // Handshake as a PLC does it: Move stays set until the device answers Busy/Done (manual 3.2).
+  // Handshake as a PLC does it (manual 3.2): Move stays set until Done (T5),
+  // then is released (T7); releasing it while Busy would be an error (7.2).
   async move() {
     await this.pd({ target_deg: Number(this.target.value), parameter_set: Number(this.pset.value), move: true });
     this.pendingMove = true;
@@ -111,7 +112,7 @@ class PortView {
     this.stateText.textContent = s.state;
     this.root.dataset.state = s.state;
     this.setLed(s.led);
-    if (this.pendingMove && s.state !== 'Ready') {
+    if (this.pendingMove && s.state !== 'Ready' && s.state !== 'Busy') {
       this.pendingMove = false;
       this.run(() => this.pd({ move: false }));
     }
