@@ -66,10 +66,11 @@ class Serve:
         cmd = ["curl", "-s", "-m", "5", "-X", method, "-w", "\n%{http_code}", self.http + path]
         for h in headers:
             cmd += ["-H", h]
+        data = None
         if body is not None:
-            cmd += ["-H", "Content-Type: application/json", "--data-binary",
-                    body if isinstance(body, str) else json.dumps(body)]
-        out = subprocess.run(cmd, capture_output=True, text=True, timeout=10).stdout
+            cmd += ["-H", "Content-Type: application/json", "--data-binary", "@-"]
+            data = body if isinstance(body, str) else json.dumps(body)
+        out = subprocess.run(cmd, input=data, capture_output=True, text=True, timeout=10).stdout
         text, _, code = out.rpartition("\n")
         try:
             payload = json.loads(text) if text else None
