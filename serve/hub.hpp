@@ -52,7 +52,7 @@ struct PacingStats {
 struct HubOptions {
   double cycle_s = 0.002;      // IO-Link master cycle
   double speed = 1.0;          // simulated seconds per wall-clock second
-  int sample_every_cycles = 10;// telemetry samples for the live page (every 20 ms at 2 ms)
+  int sample_every_cycles = 5; // telemetry samples for the live page (every 10 ms at 2 ms)
 };
 
 class Hub {

@@ -84,7 +84,7 @@ class PortView {
       el('div', { class: 'row' }, el('div', {}, this.dial, this.facts), el('div', {}, errChart, torqueChart)),
       controls, this.errBox);
     document.getElementById('ports').append(this.root);
-    const opts = (label, color) => ({ labels: ['t_s', label], colors: [color], legend: 'always', ylabel: label,
+    const opts = (label, color) => ({ labels: ['t_s', label], colors: [color], legend: 'always',
                                       xlabel: 't / s', axisLabelFontSize: 11, strokeWidth: 1.5 });
     this.errPlot = new Dygraph(errChart, [[0, 0]], opts('tracking error / deg', '#dc2626'));
     this.torquePlot = new Dygraph(torqueChart, [[0, 0]], opts('torque / Nm', '#2563eb'));
@@ -143,6 +143,7 @@ class PortView {
 
   connect() {
     const es = new EventSource(`/v1/ports/${this.p}/events`);
+    es.addEventListener('hello', (e) => this.onState(JSON.parse(e.data)));
     es.addEventListener('state', (e) => this.onState(JSON.parse(e.data)));
     es.addEventListener('sample', (e) => this.onSample(JSON.parse(e.data)));
     es.addEventListener('device_event', (e) => {
@@ -155,32 +156,13 @@ class PortView {
   }
 }
 
-// ?press=motor-on,move&port=1&target=90: presses those buttons in order once
-// the port is Ready (used by the headless-browser test; a person just clicks).
-async function autopress(views) {
-  const q = new URLSearchParams(location.search);
-  if (!q.get('press')) return;
-  const v = views[Number(q.get('port') || 1) - 1];
-  if (q.get('target')) v.target.value = q.get('target');
-  const wait = (pred) => new Promise((resolve) => {
-    const t = setInterval(() => { if (pred()) { clearInterval(t); resolve(); } }, 20);
-  });
-  for (const name of q.get('press').split(',')) {
-    document.getElementById(`p${v.p}-${name}`).click();
-    if (name === 'motor-on') await wait(() => v.state === 'Ready');
-    if (name === 'move') await wait(() => v.state === 'Done');
-  }
-  document.body.dataset.autopress = 'done';
-}
-
 async function main() {
   const saved = localStorage.getItem('sreh-token');
   const tokenInput = document.getElementById('token');
   if (saved) tokenInput.value = saved;
   tokenInput.addEventListener('change', () => localStorage.setItem('sreh-token', token()));
   const ports = await api('GET', '/v1/ports');
-  const views = ports.map((info) => new PortView(info));
-  autopress(views);
+  ports.forEach((info) => new PortView(info));
 }
 
 main().catch((e) => { document.getElementById('status').textContent = 'error: ' + e.message; });
