@@ -48,7 +48,7 @@ TEST_F(PortApi, OutputsInvalidFlag_Manual5) {
 }
 
 TEST_F(PortApi, ParameterReadGivesRawWireValue_Manual6_2) {
-  const Json j = read_parameter(port, 64, 1); // maximum speed of set 1
+  const Json j = read_parameter(port, 64, 1); // maximum speed of parameter set 0
   EXPECT_EQ(j["value"], 300);
   EXPECT_EQ(j["raw"], "012C");
 }
