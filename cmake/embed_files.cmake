@@ -52,3 +52,4 @@ std::vector<std::string_view> ${PREFIX}_names() {
 file(COPY_FILE ${HEADER}.tmp ${HEADER} ONLY_IF_DIFFERENT)
 file(COPY_FILE ${SOURCE}.tmp ${SOURCE} ONLY_IF_DIFFERENT)
 file(REMOVE ${HEADER}.tmp ${SOURCE}.tmp)
+file(TOUCH_NOCREATE ${HEADER} ${SOURCE}) # newer than the inputs: no re-run next build
