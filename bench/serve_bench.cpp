@@ -2,7 +2,7 @@
 // docs/performance-serve.md. Every port moves 0 <-> 90 deg by handshake
 // (a PLC thread, as a real client load) while the hub paces the 2 ms master
 // cycle against the wall clock.
-//   BM_Pacing/N             N ports for 10 s: cycle-start lateness p50/p99/max,
+//   BM_Pacing/N/P           N ports for 10 s, pacing thread SCHED_FIFO priority P (0: normal): cycle-start lateness p50/p99/max,
 //                           late cycles (> 1 cycle behind), sim/wall ratio
 //   BM_ModbusRoundTrip      FC3 read of PD in (4 registers), libmodbus client, loopback
 //   BM_HttpRoundTrip        GET /v1/ports/1/processdata, cpp-httplib client, keep-alive
@@ -75,8 +75,10 @@ struct Plc {
 
 void BM_Pacing(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
+  HubOptions options;
+  options.rt_priority = static_cast<int>(state.range(1));
   for (auto _ : state) {
-    Hub hub(ports(n), HubOptions{});
+    Hub hub(ports(n), options);
     Plc plc(hub);
     hub.start();
     std::this_thread::sleep_for(std::chrono::seconds(10));
@@ -89,9 +91,11 @@ void BM_Pacing(benchmark::State& state) {
     state.counters["late_pct"] = 100.0 * static_cast<double>(s.late_cycles) / static_cast<double>(std::max<uint64_t>(1, s.cycles));
     state.counters["sim_per_wall"] = s.sim_time_s / s.wall_time_s;
     state.counters["busy_pct"] = 100.0 * s.busy_fraction;
+    state.counters["sched_fifo"] = s.realtime_scheduling ? 1 : 0;
   }
 }
-BENCHMARK(BM_Pacing)->Arg(1)->Arg(2)->Arg(4)->Arg(8)->Arg(12)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
+// Args: ports, SCHED_FIFO priority (0: normal scheduling, as `serve` by default).
+BENCHMARK(BM_Pacing)->ArgsProduct({{1, 8}, {0, 20}})->Args({4, 20})->Args({12, 20})->Args({16, 20})->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
 
 void percentiles(benchmark::State& state, std::vector<double>& us) {
   std::sort(us.begin(), us.end());
@@ -136,6 +140,7 @@ void BM_HttpRoundTrip(benchmark::State& state) {
   server.start();
   httplib::Client client("127.0.0.1", server.bound_port());
   client.set_keep_alive(true);
+  client.set_tcp_nodelay(true);
   std::vector<double> us;
   for (auto _ : state) {
     const auto t0 = Clock::now();

@@ -80,6 +80,7 @@ struct HttpServer::Impl {
     server.set_read_timeout(2, 0);
     server.set_write_timeout(2, 0);
     server.set_keep_alive_timeout(2);
+    server.set_tcp_nodelay(true); // no 40 ms Nagle / delayed-ACK stalls on small answers
     server.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr ep) {
       std::string what = "internal error";
       try {
@@ -173,7 +174,8 @@ struct HttpServer::Impl {
                             {"jitter_max_us", s.jitter_max_us},
                             {"sim_time_s", s.sim_time_s},
                             {"wall_time_s", s.wall_time_s},
-                            {"busy_fraction", s.busy_fraction}});
+                            {"busy_fraction", s.busy_fraction},
+                            {"realtime_scheduling", s.realtime_scheduling}});
     }
     const int p = port_from(req, res);
     if (p < 0) return;

@@ -47,11 +47,13 @@ struct PacingStats {
   double sim_time_s = 0;
   double wall_time_s = 0;      // since start
   double busy_fraction = 0;    // time spent computing cycles / wall time
+  bool realtime_scheduling = false; // SCHED_FIFO granted to the pacing thread
 };
 
 struct HubOptions {
   double cycle_s = 0.002;      // IO-Link master cycle
   double speed = 1.0;          // simulated seconds per wall-clock second
+  int rt_priority = 0;         // > 0: the pacing thread asks for SCHED_FIFO at this priority
   int sample_every_cycles = 5; // telemetry samples for the live page (every 10 ms at 2 ms)
 };
 
@@ -123,6 +125,7 @@ class Hub {
   uint64_t cycles_ = 0, late_ = 0;
   double jitter_max_us_ = 0;
   double busy_s_ = 0;
+  std::atomic<bool> realtime_{false};
   std::chrono::steady_clock::time_point stats_start_;
   uint64_t stats_cycle0_ = 0;
 };

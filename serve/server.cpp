@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
@@ -113,6 +114,8 @@ int run_serve(const ServeOptions& o, std::ostream& out, std::ostream& err) {
   HubOptions hub_options;
   hub_options.cycle_s = o.master_cycle_ms * 1e-3;
   hub_options.speed = o.speed;
+  if (o.rt_priority < 0 || o.rt_priority > 99) throw std::invalid_argument(fmt::format("--rt-priority {}: 0 .. 99", o.rt_priority));
+  hub_options.rt_priority = o.rt_priority;
   std::unique_ptr<Hub> hub;
   try {
     hub = std::make_unique<Hub>(configs, hub_options);
@@ -167,6 +170,11 @@ int run_serve(const ServeOptions& o, std::ostream& out, std::ostream& err) {
              {"mqtt", o.mqtt ? Json(endpoint_text(o.mqtt->host, o.mqtt->port)) : Json(nullptr)},
              {"speed", o.speed},
              {"master_cycle_ms", o.master_cycle_ms}};
+  if (o.rt_priority > 0) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20)); // the pacing thread has asked by now
+    if (!hub->stats().realtime_scheduling)
+      err << "sreh-twin serve: warning: SCHED_FIFO refused (needs CAP_SYS_NICE); pacing with normal scheduling\n";
+  }
   out << ready.dump() << std::endl; // one line: where to connect (ports chosen by the OS included)
 
   const auto start = std::chrono::steady_clock::now();

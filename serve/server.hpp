@@ -28,6 +28,7 @@ struct ServeOptions {
   std::map<int, std::string> port_config; // port -> scenario-style YAML (device, load, world, sim)
   double speed = 1.0;
   double master_cycle_ms = 2.0;
+  int rt_priority = 0;                    // > 0: SCHED_FIFO for the pacing thread (needs CAP_SYS_NICE)
   std::string token_file;
   std::string save_nvm_dir;               // on shutdown: DIR/port<p>.nvm
   double duration_s = 0;                  // > 0: stop by itself after this wall time

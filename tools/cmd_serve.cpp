@@ -80,6 +80,9 @@ SREH_REGISTER_COMMAND(70, [](CLI::App& app, int& exit_code) {
   cmd->add_option("--speed", a->options.speed, "Simulated seconds per wall-clock second (0.01 .. 100)")->default_val(1.0);
   cmd->add_option("--master-cycle-ms", a->options.master_cycle_ms, "IO-Link master cycle in ms (multiple of 0.1)")
       ->default_val(2.0);
+  cmd->add_option("--rt-priority", a->options.rt_priority,
+                  "Run the pacing thread SCHED_FIFO at this priority (1 .. 99; needs CAP_SYS_NICE; 0: normal)")
+      ->default_val(0);
   cmd->add_option("--token-file", a->options.token_file,
                   "File holding a bearer token every write must carry (HTTP Authorization, MQTT \"token\"); "
                   "Modbus TCP becomes read-only");
