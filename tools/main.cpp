@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "tools/command.hpp"
+#include "twin/models_dir.hpp"
 
 namespace sreh::tools {
 namespace {
@@ -24,6 +25,16 @@ bool register_command(int order, CommandSetup setup) {
 int main(int argc, char** argv) {
   using namespace sreh::tools;
   CLI::App app{"sreh-twin: digital twin of the Afag SREH-50-IOL smart rotary module"};
+  // --version: the release and where this installation finds its models (issue 13).
+  app.set_version_flag("--version", [] {
+    std::string models;
+    try {
+      models = sreh::models_dir();
+    } catch (const std::exception& e) {
+      models = std::string("not found: ") + e.what();
+    }
+    return std::string("sreh-twin ") + SREH_VERSION + " (models: " + models + ")";
+  });
   app.require_subcommand(1);
   int exit_code = 0;
   auto commands = registry();
@@ -35,6 +46,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     std::cerr << "sreh-twin: " << e.what() << "\n";
