@@ -9,7 +9,7 @@ import subprocess
 import sys
 import tempfile
 
-from harness import STATES, Serve, check, pd_in_registers_to_hex, pd_out_registers, wait_until
+from harness import STATES, Serve, check, fail, pd_in_registers_to_hex, pd_out_registers, wait_until
 
 exe = sys.argv[1]
 mb_map = json.loads(subprocess.run([exe, "serve", "--print-modbus-map", "--json"], capture_output=True,
@@ -25,13 +25,20 @@ try:
         return s.get("/v1/ports/%d/processdata" % p)["in"]["state"]
 
     def pd_in_all_three():
-        """PD in as hex through each interface (read back to back; the twin may move in between)."""
-        via_curl = s.get("/v1/ports/1/processdata")["in"]["raw"]
-        via_mbpoll = pd_in_registers_to_hex(s.mbpoll_read(REG["pd_in"], 4, unit=17))  # any unit id
-        r = mb.read_holding_registers(REG["pd_in"], 4, slave=1)
-        check(not r.isError(), "pymodbus read pd_in: %s" % r)
-        via_pymodbus = pd_in_registers_to_hex(r.registers)
-        return via_curl, via_mbpoll, via_pymodbus
+        """PD in as hex through each interface. The twin keeps running (a held
+        position may dither by a count), so the three reads are bracketed by
+        two HTTP reads: when those agree nothing changed in between and the
+        three must be equal; otherwise read again."""
+        for _ in range(50):
+            before = s.get("/v1/ports/1/processdata")["in"]["raw"]
+            via_mbpoll = pd_in_registers_to_hex(s.mbpoll_read(REG["pd_in"], 4, unit=17))  # any unit id
+            r = mb.read_holding_registers(REG["pd_in"], 4, slave=1)
+            check(not r.isError(), "pymodbus read pd_in: %s" % r)
+            via_pymodbus = pd_in_registers_to_hex(r.registers)
+            after = s.get("/v1/ports/1/processdata")["in"]["raw"]
+            if before == after:
+                return after, via_mbpoll, via_pymodbus
+        fail("process data in never stood still over three reads")
 
     def modbus_isdu(client_write, client_read, cmd, index, sub, data=b""):
         """The ISDU channel: request registers, then the answer (sequence, status, error, length, data)."""
