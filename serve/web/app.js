@@ -101,8 +101,21 @@ class PortView {
   // Handshake as a PLC does it (manual 3.2): Move stays set until Done (T5),
   // then is released (T7); releasing it while Busy would be an error (7.2).
   async move() {
-    await this.pd({ target_deg: Number(this.target.value), parameter_set: Number(this.pset.value), move: true });
-    this.pendingMove = true;
+    this.pendingMove = true; // before the PUT: its Done may arrive before the answer does
+    try {
+      await this.pd({ target_deg: Number(this.target.value), parameter_set: Number(this.pset.value), move: true });
+    } catch (e) {
+      this.pendingMove = false;
+      throw e;
+    }
+    this.releaseMoveIfDone();
+  }
+
+  releaseMoveIfDone() {
+    if (this.pendingMove && this.state !== 'Ready' && this.state !== 'Busy') {
+      this.pendingMove = false;
+      this.run(() => this.pd({ move: false }));
+    }
   }
 
   setLed(name) { this.led.style.background = LED_RGB[name] || '#333'; this.led.title = 'LED band: ' + name; }
@@ -112,10 +125,7 @@ class PortView {
     this.stateText.textContent = s.state;
     this.root.dataset.state = s.state;
     this.setLed(s.led);
-    if (this.pendingMove && s.state !== 'Ready' && s.state !== 'Busy') {
-      this.pendingMove = false;
-      this.run(() => this.pd({ move: false }));
-    }
+    this.releaseMoveIfDone();
   }
 
   onSample(s) {
