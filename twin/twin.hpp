@@ -74,11 +74,12 @@ class Twin {
   // World side.
   void set_external_torque(double torque_Nm);
   void set_supply_voltage(double volts);
-  void set_ambient_C(double ambient_C);  // room temperature from now on (thermal model)
-  // Fault injection: the flange jams where it is (a MuJoCo constraint, not a
-  // flag the device sees); false frees it again.
+  // The flange held by something rigid (a clamp, a jammed load): a MuJoCo
+  // constraint holds it at its angle whatever torque acts (not a flag the
+  // device sees); released with false (A-TWIN-15).
   void set_flange_blocked(bool blocked);
   bool flange_blocked() const;
+  void set_ambient_C(double ambient_C); // the air around the module, from now on
   void power_cycle();                   // off and on again; non-volatile memory kept
   // Manual 9: hand a firmware image to the device in boot mode (0 or an ISDU error code).
   uint16_t firmware_update(std::span<const uint8_t> image);
