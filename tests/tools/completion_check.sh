@@ -11,11 +11,12 @@ complete_words() { # words... -> COMPREPLY for the last word
   printf '%s\n' "${COMPREPLY[@]}"
 }
 fail() { echo "completion: $*" >&2; exit 1; }
-complete_words "" | grep -qx run || fail "no 'run' at the top level"
-complete_words "" | grep -qx params || fail "no 'params' at the top level"
+# grep without -q: an early exit would SIGPIPE the writer and fail the pipe under pipefail (flaky)
+complete_words "" | grep -x run > /dev/null || fail "no 'run' at the top level"
+complete_words "" | grep -x params > /dev/null || fail "no 'params' at the top level"
 [ "$(complete_words pa)" = params ] || fail "'pa' does not complete to params"
-complete_words params "" | grep -qx export || fail "no 'export' under params"
-complete_words run --js | grep -qx -- --json || fail "run --js does not complete to --json"
-complete_words params export --io | grep -qx -- --iodd || fail "params export --io"
-complete_words --ver | grep -qx -- --version || fail "--ver"
+complete_words params "" | grep -x export > /dev/null || fail "no 'export' under params"
+complete_words run --js | grep -x -- --json > /dev/null || fail "run --js does not complete to --json"
+complete_words params export --io | grep -x -- --iodd > /dev/null || fail "params export --io"
+complete_words --ver | grep -x -- --version > /dev/null || fail "--ver"
 echo "completion: subcommands and options offered"
