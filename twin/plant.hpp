@@ -53,6 +53,11 @@ class Plant {
   void set_flange_blocked(bool blocked);
   bool flange_blocked() const;
   void set_supply_voltage(double volts) { supply_.set_source_voltage(volts); sensors_.supply_V = supply_.bus_voltage_V(); }
+  // Puts the flange at `angle_rad` (physical frame) moving at `velocity_rad_s`,
+  // as a hand turning it does (manual 4.1: moved while switched off); the
+  // encoder reading follows at once. The only place the plant's joint state is
+  // set from outside.
+  void set_flange_angle(double angle_rad, double velocity_rad_s = 0.0);
 
   // State, physical frame.
   double angle_rad() const;
