@@ -58,6 +58,7 @@ Plant::Plant(const PlantConfig& config)
   if (ghost_mocap_ < 0) {
     throw std::invalid_argument(file + ": body \"setpoint_ghost\" must be a mocap body");
   }
+  block_eq_ = mj_name2id(m, mjOBJ_EQUALITY, "flange_block"); // optional: stand-in models may lack it
   // A-TWIN-24: the module tilted about its x axis by T: in the module's
   // frame "down" is (0, -sin T, -cos T).
   const double tilt = deg_to_rad(config.mounting_tilt_deg);
@@ -97,20 +98,6 @@ double Plant::drive_train_torque_Nm(double rotor_angle_rad, double rotor_speed_r
   return stribeck + cogging;
 }
 
-// A clamp on the flange (output): its absolute angle held, the rotor still
-// free to wind the compliance against it.
-void Plant::set_flange_blocked(bool blocked) {
-  if (blocked && !blocked_) blocked_angle_rad_ = angle_rad();
-  blocked_ = blocked;
-  if (blocked_) hold_flange();
-}
-
-void Plant::hold_flange() {
-  mjData* d = data_.get();
-  d->qpos[twist_qpos_] = blocked_angle_rad_ - d->qpos[rotor_qpos_];
-  d->qvel[twist_dof_] = -d->qvel[rotor_dof_];
-  mj_forward(model_.get(), d);
-}
 
 const SensorReadings& Plant::step(const MotorCommand& cmd) {
   if (failed_) {
@@ -136,7 +123,6 @@ const SensorReadings& Plant::step(const MotorCommand& cmd) {
   }
   check_warnings();
   ++steps_;
-  if (blocked_) hold_flange(); // the clamp takes whatever moved the flange
 
   // Electrical side over the step.
   copper_loss_W_ = drive_.mean_current_A() * drive_.mean_current_A() * motor_.winding_resistance_ohm;
@@ -180,6 +166,17 @@ void Plant::check_warnings() {
     }
   }
 }
+
+void Plant::set_flange_blocked(bool blocked) {
+  if (block_eq_ < 0) throw std::invalid_argument("plant: the module model has no equality \"flange_block\"");
+  // Joint equality flange - (polycoef[0] - rotor) = 0: the flange's absolute
+  // angle (rotor + twist) held at polycoef[0], here the angle now. Its force
+  // acts on both joints as a torque on the flange body would.
+  model_->eq_data[mjNEQDATA * block_eq_] = angle_rad();
+  model_->eq_active[block_eq_] = blocked ? 1 : 0;
+}
+
+bool Plant::flange_blocked() const { return block_eq_ >= 0 && model_->eq_active[block_eq_] != 0; }
 
 void Plant::set_led_rgba(const std::array<float, 4>& rgba) {
   float* dst = model_->geom_rgba + 4 * led_geom_;

@@ -57,13 +57,14 @@ class Plant {
 
   void set_external_torque(double torque_Nm) { external_torque_Nm_ = torque_Nm; } // physical frame
   double external_torque_Nm() const { return external_torque_Nm_; }
-  // A rigid clamp on the flange (output) at its present angle: after every
-  // step the flange is put back there at rest (the rotor still winds the
-  // compliance against it), so the motor works against it (stall).
+  void set_ambient_C(double ambient_C) { thermal_.set_ambient_C(ambient_C); }
+  // A clamp on the flange (fault injection, A-TWIN-30): a MuJoCo joint
+  // equality holds the flange's absolute angle (rotor + twist) where it is
+  // now; the rotor still winds the compliance against it and the motor
+  // pushes with what it can give, so tracking errors come from the physics.
   void set_flange_blocked(bool blocked);
-  bool flange_blocked() const { return blocked_; }
+  bool flange_blocked() const;
   void set_supply_voltage(double volts) { supply_.set_source_voltage(volts); sensors_.supply_V = supply_.bus_voltage_V(); }
-  void set_ambient_C(double celsius) { thermal_.set_ambient_C(celsius); }
   // Puts the flange at `angle_rad` (physical frame) moving at `velocity_rad_s`,
   // as a hand turning it does (manual 4.1: moved while switched off): rotor
   // and flange together, no twist; the encoder reading follows at once. The
@@ -107,7 +108,6 @@ class Plant {
 
  private:
   void check_warnings();
-  void hold_flange(); // set_flange_blocked: flange back at blocked_angle_rad_, at rest
   double drive_train_torque_Nm(double rotor_angle_rad, double rotor_speed_rad_s) const;
 
   MjModelPtr model_;
@@ -124,6 +124,7 @@ class Plant {
   int actuator_ = 0;
   int led_geom_ = 0;
   int ghost_mocap_ = 0;
+  int block_eq_ = -1; // equality "flange_block"
   double ghost_angle_rad_ = 0;
   double load_inertia_kgm2_ = 0;
   double axis_inertia_kgm2_ = 0;
@@ -136,8 +137,6 @@ class Plant {
   double copper_loss_W_ = 0;
   uint64_t steps_ = 0;
   bool failed_ = false;
-  bool blocked_ = false;
-  double blocked_angle_rad_ = 0;
   SensorReadings sensors_;
 };
 

@@ -12,6 +12,11 @@ Thermal::Thermal(const ThermalSpec& spec, const ThermalConstants& constants)
   }
 }
 
+void Thermal::set_ambient_C(double ambient_C) {
+  if (!std::isfinite(ambient_C)) throw std::invalid_argument("thermal: ambient_C must be finite");
+  spec_.ambient_C = ambient_C;
+}
+
 double Thermal::speed_loss_W(double velocity_rad_s) const {
   return constants_.speed_loss_W_per_rad_s * std::abs(velocity_rad_s);
 }

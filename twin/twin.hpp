@@ -78,9 +78,11 @@ class Twin {
   // World side.
   void set_external_torque(double torque_Nm);
   void set_supply_voltage(double volts);
-  // The flange held by something rigid (a clamp, a jammed load): it stays at
-  // its angle whatever torque acts; released with false.
+  // The flange held by something rigid (a clamp, a jammed load): a MuJoCo
+  // constraint holds it at its angle whatever torque acts (not a flag the
+  // device sees); released with false (A-TWIN-15).
   void set_flange_blocked(bool blocked);
+  bool flange_blocked() const;
   void set_ambient_C(double celsius);   // room temperature from now on (thermal model follows)
   // The master's cycle time from the next cycle on (a rig reconfiguring its
   // master): 0.002 .. 0.1328 s and an integer multiple of physics_dt_s, else

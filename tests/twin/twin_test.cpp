@@ -2,6 +2,8 @@
 // integer clocks. A PLC's view: process data per IO-Link cycle.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <string>
 
@@ -184,9 +186,17 @@ TEST(Twin, BlockedFlangeHoldsAndGivesTrackingError_Manual7_2_114_5) {
   ASSERT_GT(run_until(twin, [&] { return rad_to_deg(twin.plant().angle_rad()) > 10.0; }, 200), 0);
   twin.set_flange_blocked(true);
   const double held_rad = twin.plant().angle_rad();
-  ASSERT_GT(run_until(twin, [&] { return twin.pd_in().error; }, 500), 0);
-  EXPECT_EQ(twin.plant().angle_rad(), held_rad);
-  EXPECT_EQ(twin.plant().velocity_rad_s(), 0.0);
+  // The clamp is a stiff MuJoCo constraint (A-TWIN-30), not an overwrite:
+  // it gives by far less than one wire count (9.6e-5 rad) while the motor pushes.
+  double max_dev_rad = 0;
+  ASSERT_GT(run_until(twin, [&] {
+              max_dev_rad = std::max(max_dev_rad, std::abs(twin.plant().angle_rad() - held_rad));
+              return twin.pd_in().error;
+            }, 500), 0);
+  EXPECT_LT(max_dev_rad, 2e-5);
+  // Only the constraint's give moves it: at most ~1 deg/s against the rotor
+  // winding the compliance (held within 2e-5 rad above).
+  EXPECT_NEAR(twin.plant().velocity_rad_s(), 0.0, 0.02);
   EXPECT_NE(twin.telemetry().error_code & 0x08, 0);
   EXPECT_FALSE(twin.moves().back().completed());
 }

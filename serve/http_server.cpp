@@ -1,0 +1,275 @@
+#include "serve/http_server.hpp"
+
+#include <httplib.h>
+
+#include <atomic>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "serve/port_api.hpp"
+#include "serve/web_assets.hpp"
+
+namespace sreh::serve {
+namespace {
+
+constexpr int kMaxStreams = 8;        // concurrent event streams; more get 503
+constexpr const char* kJsonType = "application/json";
+
+struct Route {
+  const char* method;
+  const char* path;    // OpenAPI form
+  const char* pattern; // httplib regex
+};
+
+// One table: what is registered is what --print-routes and the OpenAPI check see.
+constexpr Route kRoutes[] = {
+    {"GET", "/", "/"},
+    {"GET", "/assets/{name}", R"(/assets/([A-Za-z0-9._-]+))"},
+    {"GET", "/v1/ports", "/v1/ports"},
+    {"GET", "/v1/ports/{p}", R"(/v1/ports/(\d{1,3}))"},
+    {"GET", "/v1/ports/{p}/processdata", R"(/v1/ports/(\d{1,3})/processdata)"},
+    {"PUT", "/v1/ports/{p}/processdata/out", R"(/v1/ports/(\d{1,3})/processdata/out)"},
+    {"GET", "/v1/ports/{p}/parameters/{index}/{subindex}", R"(/v1/ports/(\d{1,3})/parameters/(\d{1,5})/(\d{1,3}))"},
+    {"PUT", "/v1/ports/{p}/parameters/{index}/{subindex}", R"(/v1/ports/(\d{1,3})/parameters/(\d{1,5})/(\d{1,3}))"},
+    {"GET", "/v1/ports/{p}/events", R"(/v1/ports/(\d{1,3})/events)"},
+    {"GET", "/v1/ports/{p}/faults", R"(/v1/ports/(\d{1,3})/faults)"},
+    {"POST", "/v1/ports/{p}/faults", R"(/v1/ports/(\d{1,3})/faults)"},
+    {"GET", "/v1/stats", "/v1/stats"},
+};
+
+void send_json(httplib::Response& res, int status, const Json& j) {
+  res.status = status;
+  res.set_content(j.dump(), kJsonType);
+}
+
+void send_error(httplib::Response& res, int status, const std::string& message) {
+  send_json(res, status, Json{{"error", message}});
+}
+
+std::string content_type_for(std::string_view name) {
+  const auto ends = [&](std::string_view ext) {
+    return name.size() >= ext.size() && name.substr(name.size() - ext.size()) == ext;
+  };
+  if (ends(".js")) return "text/javascript; charset=utf-8";
+  if (ends(".css")) return "text/css; charset=utf-8";
+  if (ends(".html")) return "text/html; charset=utf-8";
+  return "application/octet-stream";
+}
+
+} // namespace
+
+std::vector<RouteInfo> http_routes() {
+  std::vector<RouteInfo> out;
+  for (const auto& r : kRoutes) out.push_back({r.method, r.path});
+  return out;
+}
+
+struct HttpServer::Impl {
+  Hub& hub;
+  HttpOptions options;
+  httplib::Server server;
+  int bound = -1;
+  std::thread thread;
+  std::atomic<bool> stopping{false};
+  std::atomic<int> streams{0};
+
+  Impl(Hub& h, const HttpOptions& o) : hub(h), options(o) {
+    server.new_task_queue = [] { return new httplib::ThreadPool(12); };
+    server.set_payload_max_length(o.max_body_bytes); // larger bodies: 413
+    server.set_read_timeout(2, 0);
+    server.set_write_timeout(2, 0);
+    server.set_keep_alive_timeout(2);
+    server.set_tcp_nodelay(true); // no 40 ms Nagle / delayed-ACK stalls on small answers
+    server.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr ep) {
+      std::string what = "internal error";
+      try {
+        if (ep) std::rethrow_exception(ep);
+      } catch (const std::exception& e) {
+        what = std::string("internal error: ") + e.what();
+      } catch (...) {
+      }
+      send_error(res, 500, what);
+    });
+    server.set_error_handler([](const httplib::Request& req, httplib::Response& res) {
+      if (!res.body.empty()) return;
+      if (res.status == 404) send_error(res, 404, fmt::format("no route {} {}", req.method, req.path));
+      else if (res.status == 413) send_error(res, 413, "request body too large");
+      else send_error(res, res.status, fmt::format("HTTP {}", res.status));
+    });
+    register_routes();
+    bound = o.port == 0 ? server.bind_to_any_port(o.host) : (server.bind_to_port(o.host, o.port) ? o.port : -1);
+    if (bound < 0) throw std::runtime_error(fmt::format("http: cannot listen on {}:{}", o.host, o.port));
+  }
+
+  // The port number from the path, or a 404 answer.
+  int port_from(const httplib::Request& req, httplib::Response& res) {
+    const int p = std::stoi(req.matches[1].str());
+    if (!hub.valid_port(p)) {
+      send_error(res, 404, fmt::format("no port {} (ports 1 .. {})", p, hub.port_count()));
+      return -1;
+    }
+    return p;
+  }
+
+  // Writes need "Authorization: Bearer <token>" when a token is configured.
+  bool authorised(const httplib::Request& req, httplib::Response& res) {
+    if (options.token.empty()) return true;
+    const std::string auth = req.get_header_value("Authorization");
+    if (auth.empty()) {
+      res.set_header("WWW-Authenticate", "Bearer");
+      send_error(res, 401, "this server requires a bearer token for writes");
+      return false;
+    }
+    if (auth != "Bearer " + options.token) {
+      send_error(res, 403, "wrong bearer token");
+      return false;
+    }
+    return true;
+  }
+
+  // Runs f under the port lock and maps the errors every route shares.
+  template <class F>
+  void guarded(httplib::Response& res, F&& f) {
+    try {
+      f();
+    } catch (const RequestError& e) {
+      send_error(res, e.status, e.what());
+    } catch (const IsduRefused& e) {
+      send_json(res, http_status_for(e.code), Json{{"iolink_error", iolink_error_text(e.code)}, {"message", e.what()}});
+    }
+  }
+
+  void handle(const Route& route, const httplib::Request& req, httplib::Response& res) {
+    const std::string path = route.path;
+    const std::string method = route.method;
+    if (path == "/") {
+      const auto page = find_web_asset("index.html");
+      res.set_content(std::string(page), "text/html; charset=utf-8");
+      return;
+    }
+    if (path == "/assets/{name}") {
+      const std::string name = req.matches[1].str();
+      const auto data = find_web_asset(name);
+      if (data.empty()) return send_error(res, 404, "no asset " + name);
+      res.set_header("Cache-Control", "max-age=3600");
+      res.set_content(std::string(data), content_type_for(name).c_str());
+      return;
+    }
+    if (path == "/v1/ports") {
+      Json list = Json::array();
+      for (int p = 1; p <= hub.port_count(); ++p) list.push_back(hub.with_port(p, [&](Hub::Port& port) { return port_summary(p, port); }));
+      return send_json(res, 200, list);
+    }
+    if (path == "/v1/stats") {
+      const PacingStats s = hub.stats();
+      return send_json(res, 200,
+                       Json{{"ports", hub.port_count()},
+                            {"cycle_s", hub.options().cycle_s},
+                            {"speed", hub.options().speed},
+                            {"cycles", s.cycles},
+                            {"late_cycles", s.late_cycles},
+                            {"jitter_p50_us", s.jitter_p50_us},
+                            {"jitter_p99_us", s.jitter_p99_us},
+                            {"jitter_max_us", s.jitter_max_us},
+                            {"sim_time_s", s.sim_time_s},
+                            {"wall_time_s", s.wall_time_s},
+                            {"busy_fraction", s.busy_fraction},
+                            {"realtime_scheduling", s.realtime_scheduling}});
+    }
+    const int p = port_from(req, res);
+    if (p < 0) return;
+    const bool write = method != "GET";
+    if (write && !authorised(req, res)) return;
+    if (path == "/v1/ports/{p}/events") return stream_events(p, req, res);
+    guarded(res, [&] {
+      Json body;
+      if (write) body = parse_body(req.body); // before the lock: bad JSON never touches the twin
+      uint16_t index = 0;
+      uint8_t sub = 0;
+      if (path.find("/parameters/") != std::string::npos) {
+        const long i = std::stol(req.matches[2].str()), s = std::stol(req.matches[3].str());
+        if (i > 0xFFFF || s > 0xFF) throw RequestError(400, fmt::format("index {} / subindex {}: index is 0 .. 65535, subindex 0 .. 255", i, s));
+        index = static_cast<uint16_t>(i);
+        sub = static_cast<uint8_t>(s);
+      }
+      const Json out = hub.with_port(p, [&](Hub::Port& port) -> Json {
+        if (path == "/v1/ports/{p}") return port_summary(p, port);
+        if (path == "/v1/ports/{p}/processdata") return processdata_json(port);
+        if (path == "/v1/ports/{p}/processdata/out") {
+          apply_pd_out(port, body);
+          return processdata_json(port);
+        }
+        if (path == "/v1/ports/{p}/faults") return write ? apply_faults(port, body) : faults_json(port);
+        if (method == "GET") return read_parameter(port, index, sub);
+        return write_parameter(port, index, sub, body);
+      });
+      send_json(res, 200, out);
+    });
+  }
+
+  // Server-Sent Events: the current state first, then every new event.
+  void stream_events(int p, const httplib::Request& req, httplib::Response& res) {
+    if (streams.fetch_add(1) >= kMaxStreams) {
+      streams.fetch_sub(1);
+      return send_error(res, 503, fmt::format("at most {} event streams at a time", kMaxStreams));
+    }
+    uint64_t after = hub.latest_seq(p);
+    if (req.has_header("Last-Event-ID")) {
+      try {
+        after = std::stoull(req.get_header_value("Last-Event-ID"));
+      } catch (...) {
+      }
+    }
+    const Json hello = hub.with_port(p, [&](Hub::Port& port) { return port_summary(p, port); });
+    res.set_header("Cache-Control", "no-cache");
+    auto cursor = std::make_shared<uint64_t>(after);
+    auto first = std::make_shared<bool>(true);
+    res.set_chunked_content_provider(
+        "text/event-stream",
+        [this, p, cursor, first, hello](std::size_t, httplib::DataSink& sink) {
+          if (stopping.load() || !hub.running()) {
+            sink.done();
+            return true;
+          }
+          std::string chunk;
+          if (*first) {
+            chunk = fmt::format("retry: 1000\nevent: hello\ndata: {}\n\n", hello.dump());
+            *first = false;
+          }
+          for (const auto& e : hub.events_after(p, *cursor, std::chrono::milliseconds(250))) {
+            chunk += fmt::format("id: {}\nevent: {}\ndata: {}\n\n", e.seq, e.type, e.json);
+            *cursor = e.seq;
+          }
+          if (chunk.empty()) chunk = ": keep-alive\n\n";
+          return sink.write(chunk.data(), chunk.size());
+        },
+        [this](bool) { streams.fetch_sub(1); });
+  }
+
+  void register_routes() {
+    for (const auto& route : kRoutes) {
+      auto h = [this, &route](const httplib::Request& req, httplib::Response& res) { handle(route, req, res); };
+      const std::string m = route.method;
+      if (m == "GET") server.Get(route.pattern, h);
+      else if (m == "PUT") server.Put(route.pattern, h);
+      else if (m == "POST") server.Post(route.pattern, h);
+    }
+  }
+};
+
+HttpServer::HttpServer(Hub& hub, const HttpOptions& options) : impl_(std::make_unique<Impl>(hub, options)) {}
+HttpServer::~HttpServer() { stop(); }
+int HttpServer::bound_port() const { return impl_->bound; }
+
+void HttpServer::start() {
+  impl_->thread = std::thread([this] { impl_->server.listen_after_bind(); });
+}
+
+void HttpServer::stop() {
+  impl_->stopping.store(true);
+  impl_->server.stop();
+  if (impl_->thread.joinable()) impl_->thread.join();
+}
+
+} // namespace sreh::serve

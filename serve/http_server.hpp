@@ -1,0 +1,42 @@
+// HTTP/JSON front (cpp-httplib): the /v1 API of docs/api/openapi.yaml, the
+// event stream (Server-Sent Events) and the live page at /. Writes need the
+// bearer token when one is configured (401 without, 403 wrong); reads stay open.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "serve/hub.hpp"
+
+namespace sreh::serve {
+
+struct HttpOptions {
+  std::string host = "127.0.0.1";
+  int port = 8080;                    // 0: the OS picks (bound_port())
+  std::string token;                  // empty: no token required
+  std::size_t max_body_bytes = 64 * 1024;
+};
+
+struct RouteInfo {
+  const char* method;
+  const char* path; // OpenAPI form, e.g. /v1/ports/{p}/processdata
+};
+// Every route the server serves (checked against docs/api/openapi.yaml in CI).
+std::vector<RouteInfo> http_routes();
+
+class HttpServer {
+ public:
+  HttpServer(Hub& hub, const HttpOptions& options); // binds; throws std::runtime_error naming the address
+  ~HttpServer();
+  HttpServer(const HttpServer&) = delete;
+  HttpServer& operator=(const HttpServer&) = delete;
+  int bound_port() const;
+  void start();
+  void stop();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+} // namespace sreh::serve

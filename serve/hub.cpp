@@ -1,0 +1,235 @@
+#include "serve/hub.hpp"
+
+#include "twin/plant.hpp"
+
+#include <pthread.h>
+#include <sched.h>
+#include <sys/prctl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+namespace sreh::serve {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr std::size_t kEventRing = 2048;      // per port; a slow subscriber skips older ones
+constexpr std::size_t kJitterBuckets = 100000; // 1 us each, up to 100 ms
+
+double percentile(const std::vector<uint32_t>& hist, uint64_t total, double q) {
+  if (total == 0) return 0;
+  const auto want = static_cast<uint64_t>(std::ceil(q * static_cast<double>(total)));
+  uint64_t seen = 0;
+  for (std::size_t i = 0; i < hist.size(); ++i) {
+    seen += hist[i];
+    if (seen >= want) return static_cast<double>(i);
+  }
+  return static_cast<double>(hist.size());
+}
+
+std::string hex16(unsigned v) { return fmt::format("0x{:04X}", v); }
+
+} // namespace
+
+Hub::Hub(const std::vector<TwinConfig>& configs, const HubOptions& options)
+    : options_(options), jitter_hist_(kJitterBuckets, 0) {
+  if (!(options.cycle_s > 0) || !(options.speed > 0) || !std::isfinite(options.speed)) {
+    throw std::invalid_argument("serve: cycle and speed must be positive");
+  }
+  for (const auto& c : configs) {
+    TwinConfig tc = c;
+    tc.cycle_s = options.cycle_s;
+    tc.record_trace = false; // a server runs for hours: no unbounded trace
+    ports_.push_back(std::make_unique<Port>(tc));
+    Port& p = *ports_.back();
+    p.faults.supply_V = tc.supply.voltage_V;
+    p.faults.ambient_C = tc.thermal.ambient_C;
+  }
+  stats_start_ = Clock::now();
+}
+
+Hub::~Hub() { stop(); }
+
+void Hub::push_event(Port& port, std::string type, std::string json) {
+  port.events.push_back(PortEvent{port.next_seq++, std::move(type), std::move(json)});
+  while (port.events.size() > kEventRing) port.events.pop_front();
+  port.event_cv.notify_all();
+}
+
+std::vector<PortEvent> Hub::events_after(int p, uint64_t after_seq, std::chrono::milliseconds timeout) {
+  Port& port_ref = port(p);
+  std::unique_lock lock(port_ref.mutex);
+  const auto has_new = [&] { return !running_.load() || port_ref.next_seq > after_seq + 1; };
+  port_ref.event_cv.wait_for(lock, timeout, has_new);
+  std::vector<PortEvent> out;
+  for (const auto& e : port_ref.events)
+    if (e.seq > after_seq) out.push_back(e);
+  return out;
+}
+
+uint64_t Hub::latest_seq(int p) {
+  return with_port(p, [](Port& port_ref) { return port_ref.next_seq - 1; });
+}
+
+void Hub::after_cycle(Port& port) {
+  Twin& twin = port.twin;
+  const Telemetry tel = twin.telemetry();
+  const double t_s = twin.time_s();
+  if (port.first || tel.state != port.last_state || tel.error_code != port.last_error ||
+      tel.warning_code != port.last_warning || tel.led != port.last_led) {
+    nlohmann::json j{{"t_s", t_s},
+                     {"state", state_name(tel.state)},
+                     {"error_code", tel.error_code},
+                     {"warning_code", tel.warning_code},
+                     {"led", led_name(tel.led)}};
+    push_event(port, "state", j.dump());
+    port.last_state = tel.state;
+    port.last_error = tel.error_code;
+    port.last_warning = tel.warning_code;
+    port.last_led = tel.led;
+  }
+  const bool sample = port.first || twin.cycles() % static_cast<uint64_t>(options_.sample_every_cycles) == 0;
+  if (sample) {
+    // Device events (index 37, iolink.md): entries that appear or disappear.
+    const IsduResult r = twin.isdu_read(37, 0);
+    std::vector<uint8_t> now = r.ok() ? r.data : std::vector<uint8_t>{};
+    if (now != port.last_detailed_status) {
+      const auto entries = [](const std::vector<uint8_t>& d) {
+        std::set<std::pair<unsigned, unsigned>> s; // (qualifier, code)
+        for (std::size_t i = 0; i + 2 < d.size(); i += 3)
+          if (d[i] != 0 || d[i + 1] != 0 || d[i + 2] != 0) s.insert({d[i], (d[i + 1] << 8) | d[i + 2]});
+        return s;
+      };
+      const auto before = entries(port.last_detailed_status);
+      const auto after = entries(now);
+      for (const auto& [q, code] : after)
+        if (!before.count({q, code}))
+          push_event(port, "device_event",
+                     nlohmann::json{{"t_s", t_s}, {"mode", "appears"}, {"qualifier", fmt::format("0x{:02X}", q)},
+                                    {"code", hex16(code)}}.dump());
+      for (const auto& [q, code] : before)
+        if (!after.count({q, code}))
+          push_event(port, "device_event",
+                     nlohmann::json{{"t_s", t_s}, {"mode", "disappears"}, {"qualifier", fmt::format("0x{:02X}", q)},
+                                    {"code", hex16(code)}}.dump());
+      port.last_detailed_status = std::move(now);
+    }
+    nlohmann::json j{{"t_s", t_s},
+                     {"state", state_name(tel.state)},
+                     {"led", led_name(tel.led)},
+                     {"position_deg", tel.position_deg},
+                     {"setpoint_deg", tel.setpoint_deg},
+                     {"tracking_error_deg", tel.tracking_error_deg},
+                     {"velocity_dps", tel.velocity_dps},
+                     {"torque_Nm", twin.plant().applied_torque_Nm()},
+                     {"temperature_C", tel.temperature_C},
+                     {"supply_V", tel.supply_V}};
+    push_event(port, "sample", j.dump());
+  }
+  port.first = false;
+}
+
+void Hub::run_port_cycle(Port& port) {
+  if (!port.failure.empty()) return;
+  try {
+    port.twin.run_cycle();
+    after_cycle(port);
+  } catch (const std::exception& e) {
+    port.failure = e.what();
+    push_event(port, "failure", nlohmann::json{{"t_s", port.twin.time_s()}, {"message", port.failure}}.dump());
+  }
+}
+
+void Hub::step_all() {
+  for (auto& p : ports_) {
+    std::lock_guard lock(p->mutex);
+    run_port_cycle(*p);
+  }
+}
+
+void Hub::start() {
+  if (running_.exchange(true)) return;
+  reset_stats();
+  thread_ = std::thread([this] { pace(); });
+}
+
+void Hub::stop() {
+  running_.store(false);
+  if (thread_.joinable()) thread_.join();
+  for (auto& p : ports_) {
+    std::lock_guard lock(p->mutex);
+    p->event_cv.notify_all();
+  }
+}
+
+void Hub::reset_stats() {
+  std::lock_guard lock(stats_mutex_);
+  std::fill(jitter_hist_.begin(), jitter_hist_.end(), 0);
+  cycles_ = late_ = 0;
+  jitter_max_us_ = 0;
+  busy_s_ = 0;
+  stats_start_ = Clock::now();
+}
+
+PacingStats Hub::stats() const {
+  std::lock_guard lock(stats_mutex_);
+  PacingStats s;
+  s.cycles = cycles_;
+  s.late_cycles = late_;
+  s.jitter_p50_us = percentile(jitter_hist_, cycles_, 0.50);
+  s.jitter_p99_us = percentile(jitter_hist_, cycles_, 0.99);
+  s.jitter_max_us = jitter_max_us_;
+  s.sim_time_s = static_cast<double>(cycles_) * options_.cycle_s;
+  s.wall_time_s = std::chrono::duration<double>(Clock::now() - stats_start_).count();
+  s.busy_fraction = s.wall_time_s > 0 ? busy_s_ / s.wall_time_s : 0;
+  s.realtime_scheduling = realtime_.load();
+  return s;
+}
+
+// Cycle k starts at t0 + k * cycle / speed of the steady clock. A late
+// cycle runs at once (catching up, no cycle is skipped: the twin's time
+// stays an integer number of cycles); after a stall of more than a second
+// (a suspended process) the schedule is re-anchored instead.
+void Hub::pace() {
+  const double period_s = options_.cycle_s / options_.speed;
+  prctl(PR_SET_TIMERSLACK, 1UL, 0, 0, 0); // wake at the deadline, not up to 50 us later
+  if (options_.rt_priority > 0) {
+    sched_param param{};
+    param.sched_priority = options_.rt_priority;
+    realtime_.store(pthread_setschedparam(pthread_self(), SCHED_FIFO, &param) == 0);
+  }
+  auto t0 = Clock::now();
+  uint64_t k = 0;
+  while (running_.load(std::memory_order_relaxed)) {
+    const auto deadline = t0 + std::chrono::duration_cast<Clock::duration>(
+                                   std::chrono::duration<double>(static_cast<double>(k) * period_s));
+    std::this_thread::sleep_until(deadline);
+    const auto start = Clock::now();
+    const double late_s = std::chrono::duration<double>(start - deadline).count();
+    for (auto& p : ports_) {
+      std::lock_guard lock(p->mutex);
+      run_port_cycle(*p);
+    }
+    const double busy = std::chrono::duration<double>(Clock::now() - start).count();
+    {
+      std::lock_guard lock(stats_mutex_);
+      const double us = std::max(0.0, late_s * 1e6);
+      jitter_hist_[std::min<std::size_t>(static_cast<std::size_t>(us), kJitterBuckets - 1)]++;
+      jitter_max_us_ = std::max(jitter_max_us_, us);
+      ++cycles_;
+      if (late_s > period_s) ++late_;
+      busy_s_ += busy;
+    }
+    ++k;
+    if (late_s > 1.0) { // stalled: do not replay the lost second at full speed
+      t0 = Clock::now() - std::chrono::duration_cast<Clock::duration>(
+                              std::chrono::duration<double>(static_cast<double>(k) * period_s));
+    }
+  }
+}
+
+} // namespace sreh::serve

@@ -1,0 +1,133 @@
+// The virtual IO-Link master's ports (issue 18): one twin per port, paced to
+// the wall clock by one thread, shared by the Modbus, HTTP and MQTT fronts.
+// Every access to a twin goes through with_port() under that port's lock, so
+// a request lands between two IO-Link cycles, as on a real master.
+#pragma once
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "twin/twin.hpp"
+
+namespace sreh::serve {
+
+// What a port shows beyond the twin itself: the faults injected so far.
+struct FaultState {
+  bool link_up = true;
+  double supply_V = 24.0;
+  double external_torque_Nm = 0.0;
+  bool flange_blocked = false;
+  double ambient_C = 25.0;
+  uint32_t power_cycles = 0;
+};
+
+// One entry of a port's event stream (SSE, MQTT): `type` is "state",
+// "device_event" or "sample"; `json` the payload object as text.
+struct PortEvent {
+  uint64_t seq = 0;
+  std::string type;
+  std::string json;
+};
+
+// Pacing figures: lateness of each cycle's start against its wall-clock
+// deadline (the jitter of the master cycle).
+struct PacingStats {
+  uint64_t cycles = 0;
+  uint64_t late_cycles = 0;    // started more than one cycle after their deadline
+  double jitter_p50_us = 0;
+  double jitter_p99_us = 0;
+  double jitter_max_us = 0;
+  double sim_time_s = 0;
+  double wall_time_s = 0;      // since start
+  double busy_fraction = 0;    // time spent computing cycles / wall time
+  bool realtime_scheduling = false; // SCHED_FIFO granted to the pacing thread
+};
+
+struct HubOptions {
+  double cycle_s = 0.002;      // IO-Link master cycle
+  double speed = 1.0;          // simulated seconds per wall-clock second
+  int rt_priority = 0;         // > 0: the pacing thread asks for SCHED_FIFO at this priority
+  int sample_every_cycles = 5; // telemetry samples for the live page (every 10 ms at 2 ms)
+};
+
+class Hub {
+ public:
+  struct Port {
+    explicit Port(const TwinConfig& config) : twin(config) {}
+    std::mutex mutex;          // guards everything below
+    Twin twin;
+    bool outputs_valid = true;
+    FaultState faults;
+    // Event log for subscribers (bounded ring).
+    std::deque<PortEvent> events;
+    uint64_t next_seq = 1;
+    std::condition_variable event_cv;
+    // Change detection for events.
+    State last_state = State::MotorOff;
+    uint8_t last_error = 0, last_warning = 0;
+    LedColor last_led = LedColor::Off;
+    std::vector<uint8_t> last_detailed_status; // index 37
+    bool first = true;
+    std::string failure; // the plant failed (MuJoCo instability): the port stops, the server goes on
+  };
+
+  Hub(const std::vector<TwinConfig>& configs, const HubOptions& options);
+  ~Hub();
+  Hub(const Hub&) = delete;
+  Hub& operator=(const Hub&) = delete;
+
+  int port_count() const { return static_cast<int>(ports_.size()); }
+  bool valid_port(int p) const { return p >= 1 && p <= port_count(); }
+  Port& port(int p) { return *ports_.at(static_cast<std::size_t>(p - 1)); } // 1-based as on a master
+  const HubOptions& options() const { return options_; }
+
+  // Runs f(Port&) under the port's lock; returns what f returns.
+  template <class F>
+  auto with_port(int p, F&& f) {
+    Port& port_ref = port(p);
+    std::lock_guard lock(port_ref.mutex);
+    return f(port_ref);
+  }
+
+  // Appends an event (port lock held by the caller) and wakes subscribers.
+  static void push_event(Port& port, std::string type, std::string json);
+  // Events after `after_seq`, waiting up to `timeout` for one to arrive.
+  std::vector<PortEvent> events_after(int p, uint64_t after_seq, std::chrono::milliseconds timeout);
+  uint64_t latest_seq(int p);
+
+  void start();               // starts the pacing thread
+  void stop();                // stops it (idempotent) and wakes every subscriber
+  bool running() const { return running_.load(); }
+  PacingStats stats() const;
+  void reset_stats();
+
+  // Runs one cycle of every port now (tests, without the pacing thread).
+  void step_all();
+
+ private:
+  void pace();
+  void after_cycle(Port& port);
+  void run_port_cycle(Port& port);
+
+  HubOptions options_;
+  std::vector<std::unique_ptr<Port>> ports_;
+  std::atomic<bool> running_{false};
+  std::thread thread_;
+  mutable std::mutex stats_mutex_;
+  std::vector<uint32_t> jitter_hist_; // 1 us buckets, last one open-ended
+  uint64_t cycles_ = 0, late_ = 0;
+  double jitter_max_us_ = 0;
+  double busy_s_ = 0;
+  std::atomic<bool> realtime_{false};
+  std::chrono::steady_clock::time_point stats_start_;
+  uint64_t stats_cycle0_ = 0;
+};
+
+} // namespace sreh::serve

@@ -1,0 +1,172 @@
+#include "serve/mqtt_bridge.hpp"
+
+#include <mosquitto.h>
+
+#include <atomic>
+#include <chrono>
+#include <regex>
+#include <thread>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "serve/port_api.hpp"
+
+namespace sreh::serve {
+
+struct MqttBridge::Impl {
+  Hub& hub;
+  MqttOptions options;
+  mosquitto* client = nullptr;
+  std::atomic<bool> running{false};
+  std::thread publisher;
+  std::vector<std::string> last_published;
+  std::vector<uint64_t> event_cursor;
+
+  Impl(Hub& h, const MqttOptions& o)
+      : hub(h), options(o), last_published(static_cast<std::size_t>(h.port_count())),
+        event_cursor(static_cast<std::size_t>(h.port_count()), 0) {
+    mosquitto_lib_init();
+    client = mosquitto_new(nullptr, true, this);
+    if (client == nullptr) throw std::runtime_error("mqtt: cannot create a client");
+    mosquitto_connect_callback_set(client, [](mosquitto* m, void* self, int rc) {
+      if (rc == 0) static_cast<Impl*>(self)->subscribe(m);
+    });
+    mosquitto_message_callback_set(client, [](mosquitto*, void* self, const mosquitto_message* msg) {
+      static_cast<Impl*>(self)->on_message(msg);
+    });
+    const int rc = mosquitto_connect(client, o.host.c_str(), o.port, 10);
+    if (rc != MOSQ_ERR_SUCCESS) {
+      mosquitto_destroy(client);
+      mosquitto_lib_cleanup();
+      throw std::runtime_error(fmt::format("mqtt: cannot connect to the broker at {}:{}: {}", o.host, o.port,
+                                           rc == MOSQ_ERR_ERRNO ? std::string(strerror(errno)) : mosquitto_strerror(rc)));
+    }
+  }
+
+  ~Impl() {
+    mosquitto_destroy(client);
+    mosquitto_lib_cleanup();
+  }
+
+  std::string topic(int p, const char* what) const { return fmt::format("{}/port/{}/{}", options.prefix, p, what); }
+
+  void publish(const std::string& t, const std::string& payload, bool retain = false) {
+    mosquitto_publish(client, nullptr, t.c_str(), static_cast<int>(payload.size()), payload.data(), 1, retain);
+  }
+
+  void subscribe(mosquitto* m) {
+    for (const char* what : {"processdata/out/set", "faults/set", "isdu/request"}) {
+      const std::string t = fmt::format("{}/port/+/{}", options.prefix, what);
+      mosquitto_subscribe(m, nullptr, t.c_str(), 1);
+    }
+  }
+
+  void refuse(const std::string& t, const std::string& why) {
+    publish(options.prefix + "/errors", Json{{"topic", t}, {"error", why}}.dump());
+  }
+
+  void on_message(const mosquitto_message* msg) {
+    const std::string t = msg->topic;
+    static const std::regex pattern(R"(^.*/port/(\d{1,3})/(processdata/out/set|faults/set|isdu/request)$)");
+    std::smatch m;
+    if (!std::regex_match(t, m, pattern)) return;
+    const int p = std::stoi(m[1].str());
+    const std::string what = m[2].str();
+    if (!hub.valid_port(p)) return refuse(t, fmt::format("no port {} (ports 1 .. {})", p, hub.port_count()));
+    Json body;
+    Json id = nullptr;
+    try {
+      body = parse_body(std::string(static_cast<const char*>(msg->payload), static_cast<std::size_t>(msg->payloadlen)));
+      if (!options.token.empty()) {
+        if (!body.contains("token") || body["token"] != options.token)
+          throw RequestError(403, "missing or wrong token");
+      }
+      body.erase("token");
+      if (what == "processdata/out/set") {
+        hub.with_port(p, [&](Hub::Port& port) { apply_pd_out(port, body); });
+      } else if (what == "faults/set") {
+        hub.with_port(p, [&](Hub::Port& port) { apply_faults(port, body); });
+      } else {
+        id = body.value("id", Json(nullptr));
+        isdu_request(p, body, id);
+      }
+    } catch (const RequestError& e) {
+      if (what == "isdu/request") publish(topic(p, "isdu/response"), Json{{"id", id}, {"ok", false}, {"error", e.what()}}.dump());
+      refuse(t, e.what());
+    } catch (const IsduRefused& e) {
+      publish(topic(p, "isdu/response"),
+              Json{{"id", id}, {"ok", false}, {"iolink_error", iolink_error_text(e.code)}, {"message", e.what()}}.dump());
+    }
+  }
+
+  void isdu_request(int p, Json body, const Json& id) {
+    body.erase("id");
+    const std::string op = body.value("op", "");
+    if (op != "read" && op != "write") throw RequestError(400, "isdu/request: op must be \"read\" or \"write\"");
+    const auto number = [&](const char* key, int64_t max) {
+      if (!body.contains(key) || !body[key].is_number_integer() || body[key].get<int64_t>() < 0 || body[key].get<int64_t>() > max)
+        throw RequestError(400, fmt::format("isdu/request: {} must be an integer 0 .. {}", key, max));
+      return body[key].get<int64_t>();
+    };
+    const auto index = static_cast<uint16_t>(number("index", 0xFFFF));
+    const auto sub = static_cast<uint8_t>(body.contains("subindex") ? number("subindex", 0xFF) : 0);
+    body.erase("op");
+    body.erase("index");
+    body.erase("subindex");
+    Json answer = hub.with_port(p, [&](Hub::Port& port) {
+      if (op == "read") {
+        if (!body.empty()) throw RequestError(400, "isdu/request: a read takes only id, op, index, subindex");
+        return read_parameter(port, index, sub);
+      }
+      return write_parameter(port, index, sub, body);
+    });
+    Json out{{"id", id}, {"ok", true}};
+    for (auto& [k, v] : answer.items()) out[k] = v;
+    publish(topic(p, "isdu/response"), out.dump());
+  }
+
+  void publish_loop() {
+    using Clock = std::chrono::steady_clock;
+    std::vector<Clock::time_point> last(static_cast<std::size_t>(hub.port_count()), Clock::time_point{});
+    while (running.load()) {
+      for (int p = 1; p <= hub.port_count(); ++p) {
+        const auto i = static_cast<std::size_t>(p - 1);
+        const Json pd = hub.with_port(p, [&](Hub::Port& port) { return processdata_json(port); });
+        std::string text = pd.dump();
+        const auto now = Clock::now();
+        if (text != last_published[i] || now - last[i] >= std::chrono::milliseconds(options.interval_ms)) {
+          publish(topic(p, "processdata"), text, true);
+          last_published[i] = std::move(text);
+          last[i] = now;
+        }
+        for (const auto& e : hub.events_after(p, event_cursor[i], std::chrono::milliseconds(0))) {
+          event_cursor[i] = e.seq;
+          if (e.type == "sample") continue; // the live page's stream; MQTT gets process data instead
+          publish(topic(p, "events"), fmt::format("{{\"type\":\"{}\",\"data\":{}}}", e.type, e.json));
+        }
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+  }
+};
+
+MqttBridge::MqttBridge(Hub& hub, const MqttOptions& options) : impl_(std::make_unique<Impl>(hub, options)) {}
+MqttBridge::~MqttBridge() { stop(); }
+
+void MqttBridge::start() {
+  if (impl_->running.exchange(true)) return;
+  for (int p = 1; p <= impl_->hub.port_count(); ++p)
+    impl_->event_cursor[static_cast<std::size_t>(p - 1)] = impl_->hub.latest_seq(p);
+  mosquitto_loop_start(impl_->client);
+  impl_->publisher = std::thread([this] { impl_->publish_loop(); });
+}
+
+void MqttBridge::stop() {
+  if (!impl_->running.exchange(false)) return;
+  if (impl_->publisher.joinable()) impl_->publisher.join();
+  mosquitto_disconnect(impl_->client);
+  mosquitto_loop_stop(impl_->client, false);
+}
+
+} // namespace sreh::serve

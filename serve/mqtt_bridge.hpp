@@ -1,0 +1,42 @@
+// MQTT front (libmosquitto, optional): publishes each port's process data
+// and state on change and at a steady rate, device events as they come, and
+// takes commands on topics (docs/modbus-map.md has the topic list):
+//   <prefix>/port/<p>/processdata          (published, retained) processdata JSON
+//   <prefix>/port/<p>/events               (published) state / device_event
+//   <prefix>/port/<p>/processdata/out/set  (command) body as PUT processdata/out
+//   <prefix>/port/<p>/faults/set           (command) body as POST faults
+//   <prefix>/port/<p>/isdu/request         (command) {"id", "op": "read"|"write", "index", "subindex", "value"|"raw"}
+//   <prefix>/port/<p>/isdu/response        (published) {"id", "ok", ...} or {"id", "ok": false, "iolink_error", "message"}
+//   <prefix>/errors                        (published) refused commands: {"topic", "error"}
+// With a token, every command carries it as "token".
+#pragma once
+#include <memory>
+#include <string>
+
+#include "serve/hub.hpp"
+
+namespace sreh::serve {
+
+struct MqttOptions {
+  std::string host = "127.0.0.1";
+  int port = 1883;
+  std::string prefix = "sreh-twin";
+  int interval_ms = 1000; // steady republish; changes go out within 20 ms
+  std::string token;
+};
+
+class MqttBridge {
+ public:
+  MqttBridge(Hub& hub, const MqttOptions& options); // connects; throws std::runtime_error naming the broker
+  ~MqttBridge();
+  MqttBridge(const MqttBridge&) = delete;
+  MqttBridge& operator=(const MqttBridge&) = delete;
+  void start();
+  void stop();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+} // namespace sreh::serve

@@ -1,0 +1,371 @@
+#include "serve/port_api.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "device_logic/parameter_table.hpp"
+#include "device_logic/units.hpp"
+#include "scenarios/isdu_value.hpp"
+
+namespace sreh::serve {
+namespace {
+
+bool is_text(ParamType t) { return t == ParamType::String || t == ParamType::OctetString; }
+
+void check_keys(const Json& body, std::initializer_list<const char*> allowed, const std::string& what) {
+  for (const auto& [key, value] : body.items()) {
+    bool ok = false;
+    for (const char* a : allowed) ok = ok || key == a;
+    if (!ok) {
+      std::string list;
+      for (const char* a : allowed) list += fmt::format("{}{}", list.empty() ? "" : ", ", a);
+      throw RequestError(400, fmt::format("{}: unknown key '{}' (allowed: {})", what, key, list));
+    }
+  }
+}
+
+bool get_bool(const Json& v, const std::string& what) {
+  if (v.is_boolean()) return v.get<bool>();
+  if (v.is_number_integer() && (v.get<int64_t>() == 0 || v.get<int64_t>() == 1)) return v.get<int64_t>() == 1;
+  throw RequestError(400, fmt::format("{}: expected true/false (or 0/1)", what));
+}
+
+double get_number(const Json& v, const std::string& what, double lo, double hi) {
+  if (!v.is_number()) throw RequestError(400, fmt::format("{}: expected a number", what));
+  const double x = v.get<double>();
+  if (!std::isfinite(x) || x < lo || x > hi)
+    throw RequestError(400, fmt::format("{}: {} is outside {} .. {}", what, x, lo, hi));
+  return x;
+}
+
+int64_t get_integer(const Json& v, const std::string& what, int64_t lo, int64_t hi) {
+  if (!v.is_number_integer()) throw RequestError(400, fmt::format("{}: expected an integer", what));
+  const int64_t x = v.is_number_unsigned() && v.get<uint64_t>() > static_cast<uint64_t>(std::numeric_limits<int64_t>::max())
+                        ? std::numeric_limits<int64_t>::max()
+                        : v.get<int64_t>();
+  if (x < lo || x > hi) throw RequestError(400, fmt::format("{}: {} is outside {} .. {}", what, x, lo, hi));
+  return x;
+}
+
+std::pair<int64_t, int64_t> wire_range(ParamType t) {
+  switch (t) {
+    case ParamType::UInt8: return {0, 0xFF};
+    case ParamType::UInt16: return {0, 0xFFFF};
+    case ParamType::UInt32: return {0, 0xFFFFFFFFLL};
+    case ParamType::Int32: return {std::numeric_limits<int32_t>::min(), std::numeric_limits<int32_t>::max()};
+    default: return {0, 0};
+  }
+}
+
+std::vector<uint8_t> encode_typed(const Json& v, ParamType t, const std::string& what) {
+  const auto [lo, hi] = wire_range(t);
+  return encode_number(t, get_integer(v, fmt::format("{} ({})", what, type_name(t)), lo, hi));
+}
+
+} // namespace
+
+std::string hex_bytes(std::span<const uint8_t> bytes) {
+  std::string out;
+  for (uint8_t b : bytes) out += fmt::format("{:02X}", b);
+  return out;
+}
+
+std::vector<uint8_t> parse_hex(const std::string& text, const std::string& what) {
+  if (text.size() % 2 != 0) throw RequestError(400, fmt::format("{}: odd number of hex digits", what));
+  std::vector<uint8_t> out;
+  for (std::size_t i = 0; i < text.size(); i += 2) {
+    unsigned v = 0;
+    for (int k = 0; k < 2; ++k) {
+      const char c = text[i + static_cast<std::size_t>(k)];
+      unsigned d;
+      if (c >= '0' && c <= '9') d = static_cast<unsigned>(c - '0');
+      else if (c >= 'a' && c <= 'f') d = static_cast<unsigned>(c - 'a' + 10);
+      else if (c >= 'A' && c <= 'F') d = static_cast<unsigned>(c - 'A' + 10);
+      else throw RequestError(400, fmt::format("{}: '{}' is not a hex digit", what, c));
+      v = v * 16 + d;
+    }
+    out.push_back(static_cast<uint8_t>(v));
+  }
+  return out;
+}
+
+std::string iolink_error_name(uint16_t code) {
+  switch (code) {
+    case kIsduApplicationError: return "Device application error";
+    case kIsduIndexNotAvailable: return "Index not available";
+    case kIsduSubindexNotAvailable: return "Subindex not available";
+    case kIsduServiceTempUnavailable: return "Service temporarily not available";
+    case kIsduLocalControl: return "Service temporarily not available - local control";
+    case kIsduDeviceControl: return "Service temporarily not available - device control";
+    case kIsduAccessDenied: return "Access denied";
+    case kIsduValueOutOfRange: return "Parameter value out of range";
+    case kIsduValueAboveLimit: return "Parameter value above limit";
+    case kIsduValueBelowLimit: return "Parameter value below limit";
+    case kIsduLengthOverrun: return "Parameter length overrun";
+    case kIsduLengthUnderrun: return "Parameter length underrun";
+    case kIsduFunctionUnavailable: return "Function unavailable";
+    case kIsduFunctionTempUnavailable: return "Function temporarily unavailable";
+    case kIsduInvalidParameterSet: return "Invalid parameter set";
+    case kIsduInconsistentParameterSet: return "Inconsistent parameter set";
+    case kIsduApplicationNotReady: return "Application not ready";
+    default: return "ISDU error";
+  }
+}
+
+std::string iolink_error_text(uint16_t code) { return fmt::format("0x{:04X}", code); }
+
+// 404: the index/subindex does not exist; 422: the value is wrong; 409:
+// the request is right but not now or not this way (access, state).
+int http_status_for(uint16_t code) {
+  if (code == kIsduIndexNotAvailable || code == kIsduSubindexNotAvailable) return 404;
+  if (code >= kIsduValueOutOfRange && code <= kIsduInconsistentParameterSet && code != kIsduFunctionUnavailable &&
+      code != kIsduFunctionTempUnavailable)
+    return 422;
+  return 409;
+}
+
+Json port_summary(int p, Hub::Port& port) {
+  const Telemetry tel = port.twin.telemetry();
+  const ProcessDataIn in = port.twin.pd_in();
+  return Json{{"port", p},
+              {"device", "SREH-50-IOL"},
+              {"vendor", "Afag"},
+              {"state", state_name(tel.state)},
+              {"led", led_name(tel.led)},
+              {"position_deg", wire_counts_to_deg(in.actual_position)},
+              {"pd_in_valid", port.faults.link_up && port.twin.device().powered()},
+              {"pd_out_valid", port.outputs_valid},
+              {"time_s", port.twin.time_s()},
+              {"failure", port.failure.empty() ? Json(nullptr) : Json(port.failure)}};
+}
+
+Json processdata_json(Hub::Port& port) {
+  const ProcessDataIn in = port.twin.pd_in();
+  const PdInFrame in_frame = encode(in);
+  const ProcessDataOut& out = port.twin.pd_out();
+  const PdOutFrame out_frame = encode(out);
+  Json j;
+  j["in"] = Json{{"raw", hex_bytes(in_frame)},
+                 {"valid", port.faults.link_up && port.twin.device().powered()},
+                 {"position_deg", wire_counts_to_deg(in.actual_position)},
+                 {"position_raw", in.actual_position},
+                 {"error_code", in.error_code},
+                 {"warning_code", in.warning_code},
+                 {"error", in.error},
+                 {"warning", in.warning},
+                 {"done", in.done},
+                 {"busy", in.busy},
+                 {"ready", in.ready},
+                 {"motor_off", in.motor_off},
+                 {"state", state_name(port.twin.telemetry().state)}};
+  j["out"] = Json{{"raw", hex_bytes(out_frame)},
+                  {"valid", port.outputs_valid},
+                  {"target_deg", wire_counts_to_deg(out.target_position)},
+                  {"target_raw", out.target_position},
+                  {"parameter_set", out.parameter_set},
+                  {"motor_on", out.motor_on},
+                  {"move", out.move},
+                  {"stop", out.stop},
+                  {"reset_error", out.reset_error},
+                  {"set_origin", out.set_origin},
+                  {"relative", out.relative},
+                  {"shortest_path", out.shortest_path}};
+  return j;
+}
+
+void apply_pd_out(Hub::Port& port, const Json& body) {
+  const std::string what = "processdata/out";
+  if (!body.is_object()) throw RequestError(400, what + ": expected a JSON object");
+  check_keys(body, {"raw", "valid", "target_deg", "target_raw", "parameter_set", "motor_on", "move", "stop",
+                    "reset_error", "set_origin", "relative", "shortest_path"},
+             what);
+  ProcessDataOut out = port.twin.pd_out();
+  if (body.contains("raw")) {
+    if (body.size() > (body.contains("valid") ? 2u : 1u))
+      throw RequestError(400, what + ": 'raw' cannot be combined with decoded fields");
+    if (!body["raw"].is_string()) throw RequestError(400, what + ".raw: expected a string of 12 hex digits");
+    const auto bytes = parse_hex(body["raw"].get<std::string>(), what + ".raw");
+    if (bytes.size() != kPdOutBytes)
+      throw RequestError(400, fmt::format("{}.raw: {} octets, process data out has {} (manual 2.2)", what,
+                                          bytes.size(), kPdOutBytes));
+    out = decode_out(std::span<const uint8_t>(bytes));
+  }
+  if (body.contains("target_deg") && body.contains("target_raw"))
+    throw RequestError(400, what + ": give target_deg or target_raw, not both");
+  if (body.contains("target_deg")) {
+    // manual 2.5: int32 wire counts, 2^16 per revolution
+    const double deg = get_number(body["target_deg"], what + ".target_deg", -11796480.0, 11796480.0);
+    out.target_position = static_cast<int32_t>(deg_to_wire_counts(deg));
+  }
+  if (body.contains("target_raw"))
+    out.target_position = static_cast<int32_t>(get_integer(body["target_raw"], what + ".target_raw",
+                                                           std::numeric_limits<int32_t>::min(),
+                                                           std::numeric_limits<int32_t>::max()));
+  if (body.contains("parameter_set"))
+    out.parameter_set = static_cast<uint8_t>(get_integer(body["parameter_set"], what + ".parameter_set", 0, 255));
+  const auto flag = [&](const char* key, bool& field) {
+    if (body.contains(key)) field = get_bool(body[key], what + "." + key);
+  };
+  flag("motor_on", out.motor_on);
+  flag("move", out.move);
+  flag("stop", out.stop);
+  flag("reset_error", out.reset_error);
+  flag("set_origin", out.set_origin);
+  flag("relative", out.relative);
+  flag("shortest_path", out.shortest_path);
+  bool valid = port.outputs_valid;
+  if (body.contains("valid")) valid = get_bool(body["valid"], what + ".valid");
+  // Everything checked: apply.
+  port.twin.set_pd_out(out);
+  port.outputs_valid = valid;
+  port.twin.set_outputs_valid(valid);
+}
+
+Json parameter_json(uint16_t index, uint8_t subindex, std::span<const uint8_t> data) {
+  Json j{{"index", index}, {"subindex", subindex}};
+  const ParameterEntry* row = find_parameter(index, subindex);
+  if (row != nullptr) j["name"] = row->name;
+  if (row != nullptr && is_text(row->type)) {
+    j["value"] = row->type == ParamType::String ? Json(detail::decode_isdu_text(data)) : Json(hex_bytes(data));
+  } else if (row == nullptr && subindex == 0 && is_record(index)) {
+    const auto members = record_members(index);
+    j["name"] = members.front()->record_name;
+    Json values = Json::array();
+    std::size_t at = 0;
+    for (const auto* m : members) {
+      const std::size_t n = wire_size(m->type);
+      if (n == 0 || at + n > data.size()) {
+        values = nullptr;
+        break;
+      }
+      values.push_back(decode_number(m->type, data.subspan(at, n)));
+      at += n;
+    }
+    j["value"] = values;
+  } else if (const auto v = detail::decode_isdu_number(index, subindex, data)) {
+    j["value"] = *v;
+  } else {
+    j["value"] = nullptr;
+  }
+  j["raw"] = hex_bytes(data);
+  return j;
+}
+
+std::vector<uint8_t> parameter_bytes(uint16_t index, uint8_t subindex, const Json& body) {
+  const std::string what = fmt::format("parameters/{}/{}", index, subindex);
+  if (!body.is_object()) throw RequestError(400, what + ": expected a JSON object");
+  check_keys(body, {"value", "raw"}, what);
+  if (body.contains("value") == body.contains("raw")) throw RequestError(400, what + ": give exactly one of value, raw");
+  if (body.contains("raw")) {
+    if (!body["raw"].is_string()) throw RequestError(400, what + ".raw: expected a hex string");
+    auto bytes = parse_hex(body["raw"].get<std::string>(), what + ".raw");
+    if (bytes.size() > 232) throw RequestError(400, what + ".raw: more than 232 octets (ISDU maximum)");
+    return bytes;
+  }
+  const Json& v = body["value"];
+  const ParameterEntry* row = find_parameter(index, subindex);
+  if (v.is_array()) {
+    const auto members = record_members(index);
+    if (row != nullptr || subindex != 0 || members.empty())
+      throw RequestError(400, what + ".value: a list is only allowed for a whole record (subindex 0)");
+    if (v.size() != members.size())
+      throw RequestError(400, fmt::format("{}.value: record {} has {} members, got {} values", what, index,
+                                          members.size(), v.size()));
+    std::vector<uint8_t> out;
+    for (std::size_t i = 0; i < members.size(); ++i) {
+      if (is_text(members[i]->type)) throw RequestError(400, what + ".value: text members cannot be written as a list");
+      const auto b = encode_typed(v[i], members[i]->type, fmt::format("{}.value[{}]", what, i));
+      out.insert(out.end(), b.begin(), b.end());
+    }
+    return out;
+  }
+  if (row != nullptr && is_text(row->type)) {
+    if (!v.is_string()) throw RequestError(400, what + ".value: expected a text");
+    const std::string s = v.get<std::string>();
+    if (s.size() > 232) throw RequestError(400, what + ".value: more than 232 octets (ISDU maximum)");
+    return {s.begin(), s.end()};
+  }
+  if (row != nullptr) return encode_typed(v, row->type, what + ".value");
+  if (subindex == 0 && is_record(index))
+    throw RequestError(400, fmt::format("{}.value: index {} is a record: write one subindex, or a list of all {} "
+                                        "member values",
+                                        what, index, record_members(index).size()));
+  // Not in the table: the smallest big-endian form, so the device can answer 0x8011/0x8012.
+  if (v.is_string()) {
+    const std::string s = v.get<std::string>();
+    if (s.size() > 232) throw RequestError(400, what + ".value: more than 232 octets (ISDU maximum)");
+    return {s.begin(), s.end()};
+  }
+  const int64_t x = get_integer(v, what + ".value", std::numeric_limits<int32_t>::min(), 0xFFFFFFFFLL);
+  ParamType t = ParamType::Int32;
+  if (x >= 0 && x <= 0xFF) t = ParamType::UInt8;
+  else if (x >= 0 && x <= 0xFFFF) t = ParamType::UInt16;
+  else if (x > std::numeric_limits<int32_t>::max()) t = ParamType::UInt32;
+  return encode_number(t, x);
+}
+
+Json read_parameter(Hub::Port& port, uint16_t index, uint8_t subindex) {
+  const IsduResult r = port.twin.isdu_read(index, subindex);
+  if (!r.ok()) throw IsduRefused(r.error, iolink_error_name(r.error));
+  return parameter_json(index, subindex, r.data);
+}
+
+Json write_parameter(Hub::Port& port, uint16_t index, uint8_t subindex, const Json& body) {
+  const auto bytes = parameter_bytes(index, subindex, body);
+  const IsduResult r = port.twin.isdu_write(index, subindex, bytes);
+  if (!r.ok()) throw IsduRefused(r.error, iolink_error_name(r.error));
+  Json j{{"index", index}, {"subindex", subindex}, {"written", hex_bytes(bytes)}};
+  return j;
+}
+
+Json faults_json(const Hub::Port& port) {
+  const FaultState& f = port.faults;
+  return Json{{"link_up", f.link_up},
+              {"supply_V", f.supply_V},
+              {"external_torque_Nm", f.external_torque_Nm},
+              {"flange_blocked", f.flange_blocked},
+              {"ambient_C", f.ambient_C},
+              {"power_cycles", f.power_cycles}};
+}
+
+Json apply_faults(Hub::Port& port, const Json& body) {
+  const std::string what = "faults";
+  if (!body.is_object() || body.empty()) throw RequestError(400, what + ": expected a JSON object with at least one fault");
+  check_keys(body, {"link_up", "supply_V", "external_torque_Nm", "flange_blocked", "ambient_C", "power_cycle"}, what);
+  FaultState f = port.faults;
+  if (body.contains("link_up")) f.link_up = get_bool(body["link_up"], what + ".link_up");
+  if (body.contains("supply_V")) f.supply_V = get_number(body["supply_V"], what + ".supply_V", 0.0, 60.0);
+  if (body.contains("external_torque_Nm"))
+    f.external_torque_Nm = get_number(body["external_torque_Nm"], what + ".external_torque_Nm", -10.0, 10.0);
+  if (body.contains("flange_blocked")) f.flange_blocked = get_bool(body["flange_blocked"], what + ".flange_blocked");
+  if (body.contains("ambient_C")) f.ambient_C = get_number(body["ambient_C"], what + ".ambient_C", -40.0, 150.0);
+  const bool cycle = body.contains("power_cycle") && get_bool(body["power_cycle"], what + ".power_cycle");
+  // All checked: apply.
+  Twin& t = port.twin;
+  if (f.link_up != port.faults.link_up) t.set_link_up(f.link_up);
+  if (f.supply_V != port.faults.supply_V) t.set_supply_voltage(f.supply_V);
+  if (f.external_torque_Nm != port.faults.external_torque_Nm) t.set_external_torque(f.external_torque_Nm);
+  if (f.flange_blocked != port.faults.flange_blocked) t.set_flange_blocked(f.flange_blocked);
+  if (f.ambient_C != port.faults.ambient_C) t.set_ambient_C(f.ambient_C);
+  if (cycle) {
+    t.power_cycle();
+    ++f.power_cycles;
+  }
+  port.faults = f;
+  return faults_json(port);
+}
+
+Json parse_body(const std::string& body) {
+  Json j;
+  try {
+    j = Json::parse(body);
+  } catch (const std::exception& e) {
+    throw RequestError(400, std::string("malformed JSON: ") + e.what());
+  }
+  if (!j.is_object()) throw RequestError(400, "expected a JSON object");
+  return j;
+}
+
+} // namespace sreh::serve

@@ -1,0 +1,211 @@
+#include "serve/server.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include "scenarios/atomic_file.hpp"
+#include "scenarios/runner.hpp"
+#include "scenarios/scenario_parser.hpp"
+#include "serve/http_server.hpp"
+#include "serve/modbus_server.hpp"
+#include "serve/mqtt_bridge.hpp"
+#include "serve/port_api.hpp"
+#include "serve/shutdown.hpp"
+
+namespace sreh::serve {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string slurp(const std::string& path, const std::string& what) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::invalid_argument(fmt::format("{}: cannot read '{}'", what, path));
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r\n");
+  if (b == std::string::npos) return "";
+  return s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
+}
+
+// A port configuration is a scenario file's world: device, load, world, sim
+// (its steps, if any, are not run). Parsed by the scenario parser, so the
+// same keys and the same FILE:LINE messages apply.
+Scenario read_port_config(const std::string& path) {
+  std::string text = slurp(path, "--port-config");
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw std::invalid_argument(fmt::format("{}:{}:{}: {}", path, e.mark.line + 1, e.mark.column + 1, e.msg));
+  }
+  // name and steps are optional here (appended, so line numbers stay right)
+  if (root.IsMap() && !root["name"]) text += "\nname: port configuration\n";
+  if (root.IsMap() && !root["steps"]) text += "\nsteps:\n  - wait_s: 0\n";
+  const std::string dir = fs::path(path).parent_path().string();
+  return parse_scenario_text(text, path, dir);
+}
+
+std::string endpoint_text(const std::string& host, int port) {
+  return host.find(':') != std::string::npos ? fmt::format("[{}]:{}", host, port) : fmt::format("{}:{}", host, port);
+}
+
+} // namespace
+
+Endpoint parse_endpoint(const std::string& text, const std::string& option) {
+  std::string host, port_text;
+  if (!text.empty() && text.front() == '[') {
+    const auto close = text.find(']');
+    if (close == std::string::npos || close + 1 >= text.size() || text[close + 1] != ':')
+      throw std::invalid_argument(fmt::format("{} '{}': expected [IPV6]:PORT", option, text));
+    host = text.substr(1, close - 1);
+    port_text = text.substr(close + 2);
+  } else {
+    const auto colon = text.rfind(':');
+    if (colon == std::string::npos || colon == 0)
+      throw std::invalid_argument(fmt::format("{} '{}': expected HOST:PORT, e.g. 127.0.0.1:5020", option, text));
+    host = text.substr(0, colon);
+    port_text = text.substr(colon + 1);
+  }
+  if (port_text.empty() || port_text.size() > 5 || port_text.find_first_not_of("0123456789") != std::string::npos ||
+      std::stoi(port_text) > 65535)
+    throw std::invalid_argument(fmt::format("{} '{}': port must be 0 .. 65535 (0: any free port)", option, text));
+  return Endpoint{host, std::stoi(port_text)};
+}
+
+int run_serve(const ServeOptions& o, std::ostream& out, std::ostream& err) {
+  if (o.ports < 1 || o.ports > 16) throw std::invalid_argument(fmt::format("--ports {}: 1 .. 16", o.ports));
+  if (!(o.speed >= 0.01 && o.speed <= 100)) throw std::invalid_argument(fmt::format("--speed {}: 0.01 .. 100", o.speed));
+  if (!(o.master_cycle_ms >= 0.4 && o.master_cycle_ms <= 100))
+    throw std::invalid_argument(fmt::format("--master-cycle-ms {}: 0.4 .. 100", o.master_cycle_ms));
+  for (const auto& [p, file] : o.port_config)
+    if (p < 1 || p > o.ports) throw std::invalid_argument(fmt::format("--port-config {}={}: no port {} (--ports {})", p, file, p, o.ports));
+  if (!o.save_nvm_dir.empty() && !fs::is_directory(o.save_nvm_dir))
+    throw std::invalid_argument(fmt::format("--save-nvm-dir '{}': folder does not exist", o.save_nvm_dir));
+  std::string token;
+  if (!o.token_file.empty()) {
+    token = trim(slurp(o.token_file, "--token-file"));
+    if (token.empty()) throw std::invalid_argument(fmt::format("--token-file '{}': the file is empty", o.token_file));
+    if (token.find_first_of(" \t\r\n") != std::string::npos)
+      throw std::invalid_argument(fmt::format("--token-file '{}': the token contains whitespace", o.token_file));
+  }
+
+  // Ports: factory-new without a load unless configured.
+  std::vector<TwinConfig> configs;
+  std::vector<Scenario> scenarios(static_cast<std::size_t>(o.ports));
+  for (int p = 1; p <= o.ports; ++p) {
+    TwinConfig c;
+    if (const auto it = o.port_config.find(p); it != o.port_config.end()) {
+      scenarios[static_cast<std::size_t>(p - 1)] = read_port_config(it->second);
+      c = make_twin_config(scenarios[static_cast<std::size_t>(p - 1)]);
+    }
+    c.cycle_s = o.master_cycle_ms * 1e-3;
+    configs.push_back(c);
+  }
+  HubOptions hub_options;
+  hub_options.cycle_s = o.master_cycle_ms * 1e-3;
+  hub_options.speed = o.speed;
+  if (o.rt_priority < 0 || o.rt_priority > 99) throw std::invalid_argument(fmt::format("--rt-priority {}: 0 .. 99", o.rt_priority));
+  hub_options.rt_priority = o.rt_priority;
+  std::unique_ptr<Hub> hub;
+  try {
+    hub = std::make_unique<Hub>(configs, hub_options);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(fmt::format("--master-cycle-ms {}: {}", o.master_cycle_ms, e.what()));
+  }
+  // Start-up writes of the port configurations (device.isdu), as a master's parameter server would.
+  for (int p = 1; p <= o.ports; ++p) {
+    const Scenario& s = scenarios[static_cast<std::size_t>(p - 1)];
+    for (std::size_t i = 0; i < s.device.isdu.size(); ++i) {
+      const auto& w = s.device.isdu[i];
+      const IsduResult r = hub->with_port(p, [&](Hub::Port& port) { return port.twin.isdu_write(w.index, w.subindex, w.data); });
+      if (!r.ok())
+        throw std::invalid_argument(fmt::format("{}:{}: device.isdu[{}]: index {}.{} = {} refused with {} ({})", s.file,
+                                                w.loc.line, i + 1, w.index, w.subindex, w.value_text,
+                                                iolink_error_text(r.error), iolink_error_name(r.error)));
+    }
+  }
+
+  block_shutdown_signals(); // before any thread starts, so only sigtimedwait sees them
+  ModbusOptions mo{o.modbus.host, o.modbus.port, token.empty()};
+  HttpOptions ho;
+  ho.host = o.http.host;
+  ho.port = o.http.port;
+  ho.token = token;
+  std::unique_ptr<ModbusServer> modbus;
+  std::unique_ptr<HttpServer> http;
+  std::unique_ptr<MqttBridge> mqtt;
+  try {
+    modbus = std::make_unique<ModbusServer>(*hub, mo);
+    http = std::make_unique<HttpServer>(*hub, ho);
+    if (o.mqtt) {
+      MqttOptions mq;
+      mq.host = o.mqtt->host;
+      mq.port = o.mqtt->port;
+      mq.prefix = o.mqtt_prefix;
+      mq.interval_ms = o.mqtt_interval_ms;
+      mq.token = token;
+      mqtt = std::make_unique<MqttBridge>(*hub, mq);
+    }
+  } catch (const std::runtime_error& e) {
+    throw std::invalid_argument(e.what());
+  }
+  hub->start();
+  modbus->start();
+  http->start();
+  if (mqtt) mqtt->start();
+
+  Json ready{{"ports", o.ports},
+             {"modbus", endpoint_text(o.modbus.host, modbus->bound_port())},
+             {"http", endpoint_text(o.http.host, http->bound_port())},
+             {"mqtt", o.mqtt ? Json(endpoint_text(o.mqtt->host, o.mqtt->port)) : Json(nullptr)},
+             {"speed", o.speed},
+             {"master_cycle_ms", o.master_cycle_ms}};
+  if (o.rt_priority > 0) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20)); // the pacing thread has asked by now
+    if (!hub->stats().realtime_scheduling)
+      err << "sreh-twin serve: warning: SCHED_FIFO refused (needs CAP_SYS_NICE); pacing with normal scheduling\n";
+  }
+  out << ready.dump() << std::endl; // one line: where to connect (ports chosen by the OS included)
+
+  const auto start = std::chrono::steady_clock::now();
+  std::optional<int> sig;
+  while (!sig) {
+    sig = wait_for_shutdown_signal(std::chrono::milliseconds(200));
+    if (o.duration_s > 0 &&
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >= o.duration_s)
+      break;
+  }
+  // Fronts first (no new requests), then the clock.
+  if (mqtt) mqtt->stop();
+  http->stop();
+  modbus->stop();
+  hub->stop();
+  const PacingStats s = hub->stats();
+  err << fmt::format("sreh-twin serve: stopped{} after {} cycles ({:.1f} s simulated, {:.1f} s wall); cycle start "
+                     "jitter p50 {:.0f} us, p99 {:.0f} us, max {:.0f} us; {} late cycles\n",
+                     sig ? fmt::format(" on signal {}", *sig) : "", s.cycles, s.sim_time_s, s.wall_time_s,
+                     s.jitter_p50_us, s.jitter_p99_us, s.jitter_max_us, s.late_cycles);
+  if (!o.save_nvm_dir.empty()) {
+    for (int p = 1; p <= o.ports; ++p) {
+      const auto image = hub->with_port(p, [](Hub::Port& port) { return port.twin.save_nvm(); });
+      const std::string path = (fs::path(o.save_nvm_dir) / fmt::format("port{}.nvm", p)).string();
+      write_file_atomic(path, [&](std::ostream& f) {
+        f.write(reinterpret_cast<const char*>(image.data()), static_cast<std::streamsize>(image.size()));
+      });
+      err << "sreh-twin serve: saved " << path << "\n";
+    }
+  }
+  return 0;
+}
+
+} // namespace sreh::serve

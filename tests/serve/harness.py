@@ -1,0 +1,131 @@
+"""Shared helpers of the serve tests (issue 18): start `sreh-twin serve` on
+loopback ports the OS picks, talk to it with curl, mbpoll and pymodbus, stop it
+with SIGTERM. Everything is bounded in time: a hung server fails the test."""
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+import types
+
+# Debian's python3-pymodbus only recommends python3-serial(-asyncio), which its
+# client package imports even for TCP: empty stand-ins when they are missing.
+for _name in ("serial", "serial_asyncio"):
+    try:
+        __import__(_name)
+    except ImportError:
+        _stub = types.ModuleType(_name)
+        _stub.create_serial_connection = None
+        sys.modules[_name] = _stub
+from pymodbus.client import ModbusTcpClient  # noqa: E402
+
+STATES = ["MotorOff", "Ready", "Busy", "Done", "ErrorOn", "ErrorOff"]
+
+
+def fail(msg):
+    print("FAIL: " + msg, file=sys.stderr)
+    sys.exit(1)
+
+
+def check(cond, msg):
+    if not cond:
+        fail(msg)
+
+
+class Serve:
+    """`sreh-twin serve` with --modbus/--http on port 0; `.http` and `.modbus_port` from its ready line."""
+
+    def __init__(self, exe, *args):
+        self.proc = subprocess.Popen([exe, "serve", "--modbus", "127.0.0.1:0", "--http", "127.0.0.1:0", *args],
+                                     stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        line = self.proc.stdout.readline()
+        if not line:
+            fail("serve did not start: " + self.proc.stderr.read())
+        self.ready = json.loads(line)
+        self.http = "http://" + self.ready["http"]
+        self.modbus_port = int(self.ready["modbus"].rsplit(":", 1)[1])
+
+    def stop(self, timeout=15):
+        """SIGTERM; returns (exit code, stderr)."""
+        self.proc.send_signal(signal.SIGTERM)
+        try:
+            _, err = self.proc.communicate(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            self.proc.kill()
+            fail("serve did not stop within %d s of SIGTERM" % timeout)
+        return self.proc.returncode, err
+
+    def kill(self):
+        if self.proc.poll() is None:
+            self.proc.kill()
+            self.proc.communicate()
+
+    # ---- HTTP through curl (a real client, as in the issue) ----
+    def curl(self, method, path, body=None, headers=()):
+        cmd = ["curl", "-s", "-m", "5", "-X", method, "-w", "\n%{http_code}", self.http + path]
+        for h in headers:
+            cmd += ["-H", h]
+        data = None
+        if body is not None:
+            cmd += ["-H", "Content-Type: application/json", "--data-binary", "@-"]
+            data = body if isinstance(body, str) else json.dumps(body)
+        out = subprocess.run(cmd, input=data, capture_output=True, text=True, timeout=10).stdout
+        text, _, code = out.rpartition("\n")
+        try:
+            payload = json.loads(text) if text else None
+        except json.JSONDecodeError:
+            payload = text
+        return int(code or 0), payload
+
+    def get(self, path):
+        code, payload = self.curl("GET", path)
+        check(code == 200, "GET %s -> %d %s" % (path, code, payload))
+        return payload
+
+    # ---- Modbus through mbpoll (0-based registers, any unit id) ----
+    def mbpoll_read(self, reg, count, unit=1):
+        out = subprocess.run(["mbpoll", "-m", "tcp", "-p", str(self.modbus_port), "-a", str(unit), "-0", "-1",
+                              "-t", "4", "-r", str(reg), "-c", str(count), "-o", "2", "127.0.0.1"],
+                             capture_output=True, text=True, timeout=10)
+        check(out.returncode == 0, "mbpoll read %d: %s %s" % (reg, out.stdout, out.stderr))
+        values = []
+        for line in out.stdout.splitlines():
+            if line.startswith("["):
+                values.append(int(line.split(":")[1].split()[0]))
+        check(len(values) == count, "mbpoll read %d: %s" % (reg, out.stdout))
+        return values
+
+    def mbpoll_write(self, reg, values, unit=1, expect_ok=True):
+        out = subprocess.run(["mbpoll", "-m", "tcp", "-p", str(self.modbus_port), "-a", str(unit), "-0", "-1",
+                              "-t", "4", "-r", str(reg), "-o", "2", "127.0.0.1", "--", *[str(v) for v in values]],
+                             capture_output=True, text=True, timeout=10)
+        if expect_ok:
+            check(out.returncode == 0, "mbpoll write %d %s: %s %s" % (reg, values, out.stdout, out.stderr))
+        return out.returncode
+
+    def pymodbus(self):
+        c = ModbusTcpClient("127.0.0.1", port=self.modbus_port, timeout=3)
+        check(c.connect(), "pymodbus: cannot connect")
+        return c
+
+
+def wait_until(pred, what, timeout_s=15):
+    end = time.monotonic() + timeout_s
+    while time.monotonic() < end:
+        if pred():
+            return
+        time.sleep(0.02)
+    fail("timed out waiting for " + what)
+
+
+def pd_in_registers_to_hex(regs):
+    """4 registers (big-endian) -> the 7 octets of process data in, as hex."""
+    return "".join("%04X" % r for r in regs)[:14]
+
+
+def pd_out_registers(target_raw=0, parameter_set=0, motor_on=0, move=0, stop=0, reset_error=0):
+    """Manual 2.2: target int32 (bits 47..16), parameter set (15..8), control bits (7..0)."""
+    t = target_raw & 0xFFFFFFFF
+    bits = motor_on | (move << 1) | (stop << 2) | (reset_error << 3)
+    return [t >> 16, t & 0xFFFF, (parameter_set << 8) | bits]

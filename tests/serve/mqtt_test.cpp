@@ -1,0 +1,198 @@
+// MQTT bridge (issue 18) against Debian's mosquitto broker started by the
+// test on a free loopback port: process data published on change, commands
+// on topics, ISDU answers with the same IO-Link codes as HTTP and Modbus.
+#include <gtest/gtest.h>
+#include <mosquitto.h>
+#include <netinet/in.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <condition_variable>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <thread>
+
+#include "serve/mqtt_bridge.hpp"
+#include "serve/port_api.hpp"
+
+extern char** environ;
+
+namespace sreh::serve {
+namespace {
+
+namespace fs = std::filesystem;
+constexpr const char* kBroker = "/usr/sbin/mosquitto";
+
+int free_port() {
+  const int fd = socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in a{};
+  a.sin_family = AF_INET;
+  a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  bind(fd, reinterpret_cast<sockaddr*>(&a), sizeof a);
+  socklen_t len = sizeof a;
+  getsockname(fd, reinterpret_cast<sockaddr*>(&a), &len);
+  close(fd);
+  return ntohs(a.sin_port);
+}
+
+bool can_connect(int port) {
+  const int fd = socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in a{};
+  a.sin_family = AF_INET;
+  a.sin_port = htons(static_cast<uint16_t>(port));
+  a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  const bool ok = connect(fd, reinterpret_cast<sockaddr*>(&a), sizeof a) == 0;
+  close(fd);
+  return ok;
+}
+
+// mosquitto on 127.0.0.1 only, on a port that was free; retried if another
+// process takes the port in between.
+struct Broker {
+  pid_t pid = -1;
+  int port = 0;
+  fs::path dir;
+
+  bool start() {
+    dir = fs::temp_directory_path() / ("sreh-mqtt-" + std::to_string(getpid()));
+    fs::create_directories(dir);
+    for (int attempt = 0; attempt < 5; ++attempt) {
+      port = free_port();
+      const std::string conf = (dir / "mosquitto.conf").string();
+      std::ofstream(conf) << "listener " << port << " 127.0.0.1\nallow_anonymous true\npersistence false\n";
+      std::string arg0 = kBroker, arg1 = "-c";
+      char* argv[] = {arg0.data(), arg1.data(), const_cast<char*>(conf.c_str()), nullptr};
+      if (posix_spawn(&pid, kBroker, nullptr, nullptr, argv, environ) != 0) return false;
+      for (int i = 0; i < 100; ++i) { // up to 5 s
+        if (can_connect(port)) return true;
+        int status = 0;
+        if (waitpid(pid, &status, WNOHANG) == pid) break; // it exited: port taken, try another
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+      }
+      stop();
+    }
+    return false;
+  }
+  void stop() {
+    if (pid > 0) {
+      kill(pid, SIGTERM);
+      waitpid(pid, nullptr, 0);
+      pid = -1;
+    }
+  }
+  ~Broker() {
+    stop();
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+  }
+};
+
+// A subscriber collecting every message under the prefix.
+struct Listener {
+  mosquitto* m = nullptr;
+  std::mutex mutex;
+  std::condition_variable cv;
+  std::vector<std::pair<std::string, Json>> messages;
+
+  explicit Listener(int port) {
+    m = mosquitto_new(nullptr, true, this);
+    mosquitto_message_callback_set(m, [](mosquitto*, void* self, const mosquitto_message* msg) {
+      auto* l = static_cast<Listener*>(self);
+      Json j = Json::parse(std::string(static_cast<const char*>(msg->payload), static_cast<std::size_t>(msg->payloadlen)),
+                           nullptr, false);
+      std::lock_guard lock(l->mutex);
+      l->messages.emplace_back(msg->topic, j);
+      l->cv.notify_all();
+    });
+    EXPECT_EQ(mosquitto_connect(m, "127.0.0.1", port, 10), MOSQ_ERR_SUCCESS);
+    mosquitto_subscribe(m, nullptr, "t/#", 1);
+    mosquitto_loop_start(m);
+  }
+  ~Listener() {
+    mosquitto_disconnect(m);
+    mosquitto_loop_stop(m, false);
+    mosquitto_destroy(m);
+  }
+  void publish(const std::string& topic, const std::string& payload) {
+    mosquitto_publish(m, nullptr, topic.c_str(), static_cast<int>(payload.size()), payload.data(), 1, false);
+  }
+  // The first message on `topic` matching pred, waiting up to 10 s.
+  template <class Pred>
+  std::optional<Json> wait_for(const std::string& topic, Pred pred) {
+    std::unique_lock lock(mutex);
+    std::optional<Json> found;
+    cv.wait_for(lock, std::chrono::seconds(10), [&] {
+      for (const auto& [t, j] : messages)
+        if (t == topic && !j.is_discarded() && pred(j)) {
+          found = j;
+          return true;
+        }
+      return false;
+    });
+    return found;
+  }
+};
+
+TEST(MqttBridge, ProcessDataCommandsAndIsduOverABroker) {
+  if (access(kBroker, X_OK) != 0) GTEST_SKIP() << "mosquitto not installed";
+  Broker broker;
+  ASSERT_TRUE(broker.start()) << "mosquitto did not start";
+  Hub hub(std::vector<TwinConfig>(1), HubOptions{});
+  MqttOptions o;
+  o.port = broker.port;
+  o.prefix = "t";
+  MqttBridge bridge(hub, o);
+  hub.start();
+  bridge.start();
+  Listener l(broker.port);
+
+  // Published process data (retained, so a late subscriber gets it).
+  ASSERT_TRUE(l.wait_for("t/port/1/processdata", [](const Json& j) { return j["in"]["state"] == "MotorOff"; }));
+  // PD out by command: motor on -> Ready (manual 3.2 T1), published on change.
+  l.publish("t/port/1/processdata/out/set", R"({"motor_on": true})");
+  EXPECT_TRUE(l.wait_for("t/port/1/processdata", [](const Json& j) { return j["in"]["state"] == "Ready"; }));
+  EXPECT_TRUE(l.wait_for("t/port/1/events", [](const Json& j) { return j["data"]["state"] == "Ready"; }));
+  // ISDU read and a refused write (same code as HTTP/Modbus: 0x8030), nothing changed.
+  l.publish("t/port/1/isdu/request", R"({"id": 7, "op": "read", "index": 64, "subindex": 1})");
+  const auto read = l.wait_for("t/port/1/isdu/response", [](const Json& j) { return j["id"] == 7; });
+  ASSERT_TRUE(read);
+  EXPECT_EQ((*read)["value"], 300);
+  l.publish("t/port/1/isdu/request", R"({"id": 8, "op": "write", "index": 64, "subindex": 1, "value": 50000})");
+  const auto refused = l.wait_for("t/port/1/isdu/response", [](const Json& j) { return j["id"] == 8; });
+  ASSERT_TRUE(refused);
+  EXPECT_EQ((*refused)["iolink_error"], "0x8030");
+  EXPECT_FALSE((*refused)["ok"].get<bool>());
+  EXPECT_EQ(hub.with_port(1, [](Hub::Port& p) { return read_parameter(p, 64, 1)["value"]; }), 300);
+  // Garbage is refused on the errors topic; the bridge goes on.
+  l.publish("t/port/1/processdata/out/set", "{nope");
+  EXPECT_TRUE(l.wait_for("t/errors", [](const Json& j) { return j["topic"] == "t/port/1/processdata/out/set"; }));
+  l.publish("t/port/9/faults/set", R"({"link_up": false})");
+  EXPECT_TRUE(l.wait_for("t/errors", [](const Json& j) { return j["topic"] == "t/port/9/faults/set"; }));
+  l.publish("t/port/1/faults/set", R"({"supply_V": 20})");
+  EXPECT_TRUE(l.wait_for("t/port/1/processdata", [](const Json&) { return true; }));
+  for (int i = 0; i < 100 && hub.with_port(1, [](Hub::Port& p) { return p.faults.supply_V; }) != 20; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  EXPECT_EQ(hub.with_port(1, [](Hub::Port& p) { return p.faults.supply_V; }), 20);
+  bridge.stop();
+  hub.stop();
+}
+
+TEST(MqttBridge, UnreachableBrokerIsAClearError) {
+  Hub hub(std::vector<TwinConfig>(1), HubOptions{});
+  MqttOptions o;
+  o.port = free_port(); // nothing listens there
+  try {
+    MqttBridge bridge(hub, o);
+    FAIL() << "connected to nothing";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(std::to_string(o.port)), std::string::npos) << e.what();
+  }
+}
+
+} // namespace
+} // namespace sreh::serve
