@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include "io/output_path.hpp"
 #include "scenarios/scenario_parser.hpp"
 #include "sizing/output.hpp"
 #include "sizing/report.hpp"
@@ -94,8 +95,9 @@ sizing::SizingRequest make_request(const SizeArgs& a) {
 }
 
 int size_command(const SizeArgs& a) {
-  const sizing::SizingRequest rq = make_request(a);
   if (!a.report.empty() && !sizing::reports_available()) throw InputError("--report: this build has no renders");
+  io::check_outputs({{"--report", a.report, io::OutputKind::Folder}}, {a.load_file});
+  const sizing::SizingRequest rq = make_request(a);
   sizing::SizingResult result;
   try {
     result = sizing::size(rq);

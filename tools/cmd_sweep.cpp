@@ -15,7 +15,8 @@
 
 #include <fmt/format.h>
 
-#include "scenarios/atomic_file.hpp"
+#include "io/atomic_file.hpp"
+#include "io/output_path.hpp"
 #include "sizing/report.hpp"
 #include "sizing/sweep.hpp"
 #include "tools/command.hpp"
@@ -34,8 +35,8 @@ struct SweepArgs {
 };
 
 int sweep_command(const SweepArgs& a) {
-  if (!output_folder_exists(a.csv)) throw InputError(fmt::format("--csv {}: the folder does not exist", a.csv));
   if (!a.report.empty() && !sizing::reports_available()) throw InputError("--report: this build has no renders");
+  io::check_outputs({{"--csv", a.csv, io::OutputKind::File}, {"--report", a.report, io::OutputKind::Folder}}, {});
   for (double t : a.targets_s) {
     if (!(t > 0)) throw InputError(fmt::format("--targets-s {}: target times must be positive", t));
   }
@@ -69,7 +70,7 @@ int sweep_command(const SweepArgs& a) {
     throw InputError(e.what());
   }
   try {
-    write_file_atomic(a.csv, [&](std::ostream& out) { sizing::write_sweep_csv(out, result); });
+    io::write_file_atomic(a.csv, [&](std::ostream& out) { sizing::write_sweep_csv(out, result); });
     if (!a.report.empty()) {
       const std::vector<double> targets = a.targets_s.empty() ? sizing::default_targets_s(result) : a.targets_s;
       sizing::write_sweep_report(a.report, rq, result, targets);

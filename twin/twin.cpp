@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "device_logic/units.hpp"
+#include "io/interrupt.hpp"
 #include "twin/plant.hpp"
 
 namespace sreh {
@@ -100,7 +101,8 @@ struct Twin::Impl {
     row.pd_out = out_frame;
     row.pd_in = last_pd_in;
     row.led = tel.led;
-    trace.push_back(row);
+    if (config.trace_sink) config.trace_sink(row); // streamed: memory flat with run length (issue 12)
+    else trace.push_back(row);
   }
 
   void update_visuals() {
@@ -161,6 +163,7 @@ void Twin::power_cycle() {
 }
 
 void Twin::run_cycle() {
+  io::throw_if_interrupted(); // SIGINT / SIGTERM: unwind so outputs' temporaries go (issue 12)
   Impl& s = *impl_;
   const PdOutFrame out_frame = encode(s.pd_out);
   if (s.link_up && s.device.powered()) {
@@ -178,7 +181,7 @@ void Twin::run_cycle() {
   }
   ++s.cycles;
   s.update_visuals();
-  if (s.config.record_trace) s.record_row(out_frame);
+  if (s.config.record_trace || s.config.trace_sink) s.record_row(out_frame);
 }
 
 uint64_t Twin::cycles() const { return impl_->cycles; }

@@ -3,6 +3,7 @@
 // data every IO-Link cycle. Deterministic: same inputs, same trace.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -50,7 +51,10 @@ struct TwinConfig {
   double physics_dt_s = 1e-4;
   double cycle_s = 0.002;        // IO-Link cycle; an integer multiple of physics_dt_s
   std::optional<std::vector<uint8_t>> nvm_image; // saved memory; factory-new otherwise
-  bool record_trace = true;
+  bool record_trace = true;       // keep every row in memory: trace()
+  // When set, every row goes here instead (streaming; trace() stays empty),
+  // so memory stays flat however long the run (issue 12).
+  std::function<void(const TraceRow&)> trace_sink;
 };
 
 class Plant; // twin/plant.hpp
