@@ -1,5 +1,7 @@
 #include "io/interrupt.hpp"
 
+#include <unistd.h>
+
 #include <csignal>
 #include <string>
 
@@ -7,8 +9,16 @@ namespace sreh::io {
 namespace {
 
 volatile std::sig_atomic_t g_signal = 0;
+volatile std::sig_atomic_t g_count = 0;
 
-extern "C" void on_signal(int signal_number) { g_signal = signal_number; }
+// The first signal sets the flag; a repeat (timeout(1) and process-group
+// kills deliver two) is absorbed so the cleanup can finish; the third ends
+// the process at once (a stuck run can always be stopped).
+extern "C" void on_signal(int signal_number) {
+  if (g_signal == 0) g_signal = signal_number;
+  g_count = g_count + 1;
+  if (g_count >= 3) _exit(128 + signal_number);
+}
 
 } // namespace
 
@@ -20,7 +30,7 @@ void install_interrupt_handlers() {
   struct sigaction action {};
   action.sa_handler = on_signal;
   sigemptyset(&action.sa_mask);
-  action.sa_flags = SA_RESETHAND; // the second one is not caught
+  action.sa_flags = 0;
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
 }

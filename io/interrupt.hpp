@@ -2,7 +2,7 @@
 // flag (async-signal-safe); long loops call throw_if_interrupted(), the
 // exception unwinds the stack so that every io::AtomicFile / AtomicDir
 // removes its temporary, and main() exits 128 + signal (130 / 143). A second
-// signal gets the default action (SA_RESETHAND): a stuck run can still be killed.
+// signal is absorbed (timeout(1) sends two), a third exits at once.
 #pragma once
 #include <stdexcept>
 

@@ -14,6 +14,7 @@
 
 #include "device_logic/units.hpp"
 #include "scenarios/isdu_value.hpp"
+#include "twin/load_builder.hpp"
 #include "scenarios/yaml_reader.hpp"
 #include "scenarios/yaml_safety.hpp"
 
@@ -143,7 +144,12 @@ class Parser {
       return NoLoad{};
     }
     // inertia_gcm2; the manual's parameter range is 0..15000 (6.2, 64.4), the physics allows more.
-    return InertiaLoad{r_.number(v, what, 0.0, 1e6)};
+    const double j = r_.number(v, what, 0.0, 1e6);
+    if (j > 0 && j < kMinInertiaGcm2) {
+      r_.fail(v, fmt::format("{}: {} is above 0 but below {} g cm^2, too small to model; use 0 for no load", what,
+                             v.Scalar(), kMinInertiaGcm2));
+    }
+    return InertiaLoad{j};
   }
 
   std::vector<HardStop> parse_world(const YAML::Node& n) {

@@ -15,7 +15,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "io/output_path.hpp"
-#include "scenarios/scenario_parser.hpp"
+#include "scenarios/load_file.hpp"
 #include "sizing/output.hpp"
 #include "sizing/report.hpp"
 #include "sizing/sizing.hpp"
@@ -41,32 +41,11 @@ struct SizeArgs {
   std::string report;
 };
 
-// A load file is YAML with a top-level `load:` key, exactly as in a scenario
-// (scenarios/README.md); a scenario file works too (only its load is used).
-// The scenario parser reads it, so keys, errors and MJCF paths behave the
-// same: keys a scenario needs are appended at the end, which keeps every
-// line number of the file.
 LoadSpec load_from_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(fmt::format("--load {}: cannot read the file", path));
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  std::string text = buffer.str();
-  YAML::Node root;
   try {
-    root = YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    throw InputError(fmt::format("{}:{}:{}: {}", path, e.mark.line + 1, e.mark.column + 1, e.msg));
-  }
-  if (!root.IsMap() || !root["load"]) {
-    throw InputError(fmt::format("{}: expected a top-level 'load:' key (e.g. load: {{disk: {{mass_kg: 0.4, radius_m: 0.1}}}})", path));
-  }
-  if (!root["name"]) text += "\nname: load from " + std::filesystem::path(path).filename().string() + "\n";
-  if (!root["steps"]) text += "\nsteps:\n  - comment: sizing load\n"; // a scenario needs one step
-  try {
-    return parse_scenario_text(text, path, std::filesystem::path(path).parent_path().string()).load;
+    return parse_load_file(path);
   } catch (const ScenarioError& e) {
-    throw InputError(e.what());
+    throw InputError(fmt::format("--load {}", e.what()));
   }
 }
 
