@@ -16,10 +16,12 @@ shift || true
 targets=("$@")
 [ ${#targets[@]} -eq 0 ] && targets=(pd_codec isdu scenario load)
 build=build-fuzz
+log=$build/fuzz-build.log
+mkdir -p "$build"
 CC=clang CXX=clang++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSREH_FUZZ=ON \
-  -DSREH_BUILD_TESTS=OFF -DSREH_BUILD_BENCH=OFF -DSREH_WITH_RENDER=OFF > "$build.log" 2>&1 || { cat "$build.log"; exit 1; }
-cmake --build "$build" -j"$(nproc)" --target $(printf '%s_fuzz ' "${targets[@]}") >> "$build.log" 2>&1 ||
-  { tail -50 "$build.log"; exit 1; }
+  -DSREH_BUILD_TESTS=OFF -DSREH_BUILD_BENCH=OFF -DSREH_WITH_RENDER=OFF > "$log" 2>&1 || { cat "$log"; exit 1; }
+cmake --build "$build" -j"$(nproc)" --target $(printf '%s_fuzz ' "${targets[@]}") >> "$log" 2>&1 ||
+  { tail -50 "$log"; exit 1; }
 mkdir -p "$build/findings"
 for t in "${targets[@]}"; do
   corpus=tests/fuzz/corpus/$t
