@@ -11,6 +11,7 @@
 # fails the script (exit 1); the reproducer is left in build-fuzz/findings/.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+root=$PWD
 seconds=${1:-20}
 shift || true
 targets=("$@")
@@ -35,7 +36,7 @@ for t in "${targets[@]}"; do
   [ -n "${SREH_FUZZ_RUNS:-}" ] && budget=(-runs="$SREH_FUZZ_RUNS")
   echo "fuzz $t: ${budget[*]}"
   (cd "$build/findings" && ASAN_OPTIONS=detect_leaks=1 "../tests/fuzz/${t}_fuzz" "${budget[@]}" -timeout=10 \
-     -rss_limit_mb=2048 -max_len=16384 -print_final_stats=1 "$scratch" "${seeds[@]/#/$PWD/}") \
+     -rss_limit_mb=2048 -max_len=16384 -print_final_stats=1 "$scratch" "${seeds[@]/#/$root/}") \
      > "$build/findings/$t.log" 2>&1 || { tail -60 "$build/findings/$t.log"; echo "fuzz $t: FAILED"; exit 1; }
   grep -E "stat::number_of_executed_units|Done [0-9]+ runs" "$build/findings/$t.log" | tail -2
   if [ -n "${SREH_FUZZ_MERGE:-}" ]; then
