@@ -227,7 +227,8 @@ MjcfParts mjcf_load_parts(const MjcfLoad& l, const std::string& module_assets) {
     validation = "<mujoco model=\"load\"><compiler angle=\"radian\" autolimits=\"true\"/>" + base_assets +
                  "<worldbody>" + text + "\n</worldbody></mujoco>";
   }
-  compile_mjcf(validation, path); // throws with MuJoCo's message and the file's line
+  const MjModelPtr alone = compile_mjcf(validation, path); // throws with MuJoCo's message and the file's line
+  check_compiled_inertials(alone.get(), path); // masses MuJoCo derived from geoms (density x volume)
   return parts;
 }
 

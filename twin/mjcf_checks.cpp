@@ -108,4 +108,19 @@ void check_mjcf_inertials(const std::string& text, const std::string& origin) {
   }
 }
 
+void check_compiled_inertials(const mjModel* m, const std::string& origin) {
+  for (int b = 1; b < m->nbody; ++b) {
+    const char* name = mj_id2name(m, mjOBJ_BODY, b);
+    const std::string body = origin + ": body '" + (name ? name : "(unnamed)") + "': ";
+    const double values[4] = {m->body_mass[b], m->body_inertia[3 * b], m->body_inertia[3 * b + 1], m->body_inertia[3 * b + 2]};
+    for (int k = 0; k < 4; ++k) {
+      const double v = values[k];
+      const char* what = k == 0 ? "mass" : "inertia";
+      if (!std::isfinite(v)) throw std::invalid_argument(body + what + " from its geoms is not finite (" + std::to_string(v) + ")");
+      if (v < 0) throw std::invalid_argument(body + what + " is negative");
+      if (std::fpclassify(v) == FP_SUBNORMAL) throw std::invalid_argument(body + what + " is too small to model (subnormal)");
+    }
+  }
+}
+
 } // namespace sreh

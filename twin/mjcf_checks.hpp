@@ -4,6 +4,8 @@
 #pragma once
 #include <string>
 
+#include <mujoco/mujoco.h>
+
 namespace sreh {
 
 // Replaces each <include file="F"/> by the children of F's <mujoco> root, F
@@ -16,5 +18,10 @@ std::string expand_mjcf_includes(const std::string& text, const std::string& dir
 // negative, not subnormal; <inertial> mass and diaginertia above 0. Throws
 // std::invalid_argument "<origin>:<line>: body '<name>': ...".
 void check_mjcf_inertials(const std::string& text, const std::string& origin);
+
+// The same rule on what MuJoCo computed (a finite density times a huge
+// volume is an infinite mass): every body's mass and inertia finite, >= 0,
+// not subnormal. Throws std::invalid_argument "<origin>: body '<name>': ...".
+void check_compiled_inertials(const mjModel* model, const std::string& origin);
 
 } // namespace sreh
