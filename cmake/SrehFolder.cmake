@@ -1,3 +1,5 @@
+include(GNUInstallDirs)
+
 # sreh_folder_library(NAME [DEPS ...]): one library target per code folder
 # (style.md 15), built from every .cpp in the folder, with a namespaced alias.
 function(sreh_folder_library name)
@@ -5,12 +7,15 @@ function(sreh_folder_library name)
   file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp)
   if(NOT sources) # a header-only folder (or one not written yet)
     add_library(${name} INTERFACE)
-    target_include_directories(${name} INTERFACE ${PROJECT_SOURCE_DIR})
+    target_include_directories(${name} INTERFACE $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
+                                                 $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/sreh_twin>)
     target_link_libraries(${name} INTERFACE ${ARG_DEPS})
   else()
     add_library(${name} STATIC ${sources})
-    target_include_directories(${name} PUBLIC ${PROJECT_SOURCE_DIR})
-    target_link_libraries(${name} PUBLIC ${ARG_DEPS} PRIVATE sreh_warnings ${ARG_PRIVATE_DEPS})
+    # Installed headers keep their folder: <prefix>/include/sreh_twin/twin/twin.hpp (issue 13).
+    target_include_directories(${name} PUBLIC $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
+                                              $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/sreh_twin>)
+    target_link_libraries(${name} PUBLIC ${ARG_DEPS} PRIVATE $<BUILD_INTERFACE:sreh_warnings> ${ARG_PRIVATE_DEPS})
   endif()
   add_library(sreh::${name} ALIAS ${name})
 endfunction()

@@ -1,5 +1,6 @@
 // Data Storage set, index list codec and CRC-32 (manual 8, iolink.md).
 #include "device_logic/data_storage.hpp"
+#include "device_logic/byte_order.hpp"
 
 #include <array>
 
@@ -41,8 +42,7 @@ std::vector<uint8_t> encode_index_list(std::span<const DsEntry> entries) {
   std::vector<uint8_t> out;
   out.reserve(entries.size() * 3 + 2);
   for (const auto& e : entries) {
-    out.push_back(static_cast<uint8_t>(e.index >> 8));
-    out.push_back(static_cast<uint8_t>(e.index & 0xFF));
+    be::append16(out, e.index);
     out.push_back(e.subindex);
   }
   out.push_back(0);
@@ -54,7 +54,7 @@ std::optional<std::vector<DsEntry>> decode_index_list(std::span<const uint8_t> b
   std::vector<DsEntry> entries;
   std::size_t i = 0;
   while (i + 2 <= bytes.size()) {
-    const auto index = static_cast<uint16_t>((bytes[i] << 8) | bytes[i + 1]);
+    const uint16_t index = be::read16(bytes, i);
     if (index == 0) return i + 2 == bytes.size() ? std::optional{entries} : std::nullopt;
     if (i + 3 > bytes.size()) return std::nullopt;
     entries.push_back(DsEntry{index, bytes[i + 2]});

@@ -1,6 +1,7 @@
 // ISDU routing of the Device (manual chapter 6): volatile diagnostics and
 // the device-side system commands here, stored parameters in ParameterStore.
 #include <algorithm>
+#include "device_logic/byte_order.hpp"
 #include <cmath>
 
 #include "device_logic/device_impl.hpp"
@@ -12,18 +13,6 @@ namespace {
 
 IsduResult number(ParamType type, int64_t value) { return isdu_data(encode_number(type, value)); }
 
-// Event codes of the pending errors and warnings, for index 37 (A-EVT-1,
-// iolink.md standard codes where one fits, vendor codes 0x8CAx otherwise).
-constexpr uint16_t kErrorEventCode[8] = {
-    0x8CA0, // bit 0 positioning error
-    0x8CA1, // bit 1 invalid parameter
-    0x8CA2, // bit 2 invalid command / communication
-    0x8CA3, // bit 3 tracking error
-    0x5100, // bit 4 motor voltage: general power supply fault
-    0x4000, // bit 5 temperature fault
-    0x8CA6, // bit 6 output stage / trajectory
-    0x6320, // bit 7 device error: parameter (configuration) error
-};
 constexpr uint8_t kErrorAppears = 0xF4;
 constexpr uint8_t kWarningAppears = 0xE4;
 
@@ -41,18 +30,17 @@ std::vector<uint8_t> Device::Impl::detailed_device_status() const {
   auto push = [&](uint8_t qualifier, uint16_t code) {
     if (slot >= 4) return;
     out[slot * 3] = qualifier;
-    out[slot * 3 + 1] = static_cast<uint8_t>(code >> 8);
-    out[slot * 3 + 2] = static_cast<uint8_t>(code);
+    be::write(std::span<uint8_t>(out).subspan(slot * 3 + 1, 2), code);
     ++slot;
   };
   for (int bit = 7; bit >= 0; --bit) {
-    if (faults.error_cause[bit]) push(kErrorAppears, kErrorEventCode[bit]);
+    if (faults.error_cause[bit]) push(kErrorAppears, kErrorEvents[bit].code); // A-EVT-1
   }
-  if (faults.warning(WarningBit::Temperature)) push(kWarningAppears, 0x4210);
+  if (faults.warning(WarningBit::Temperature)) push(kWarningAppears, kTemperatureWarningEvent.code);
   if (const uint8_t v = faults.warning(WarningBit::MotorVoltage)) {
-    push(kWarningAppears, v == cause::kVoltageLow ? 0x5111 : 0x5110);
+    push(kWarningAppears, (v == cause::kVoltageLow ? kVoltageLowWarningEvent : kVoltageHighWarningEvent).code);
   }
-  if (faults.warning(WarningBit::Positioning)) push(kWarningAppears, 0x8CB5);
+  if (faults.warning(WarningBit::Positioning)) push(kWarningAppears, kToleranceWindowWarningEvent.code);
   return out;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <string_view>
 
 namespace sreh {
 
@@ -91,5 +92,37 @@ struct FaultSet {
   uint8_t error(ErrorBit b) const { return error_cause[static_cast<int>(b)]; }
   uint8_t warning(WarningBit b) const { return warning_cause[static_cast<int>(b)]; }
 };
+
+// The events the device reports in Detailed Device Status (37) and, for the
+// IODD-like export, describes (A-EVT-1: iolink.md standard codes where one
+// fits, vendor codes 0x8CAx / 0x8CBx otherwise).
+enum class EventType { Warning, Error };
+struct EventDefinition {
+  uint16_t code;
+  EventType type;
+  std::string_view name;
+  std::string_view section; // manual section of the cause
+};
+// By error bit number (manual 2.4).
+inline constexpr std::array<EventDefinition, 8> kErrorEvents{{
+    {0x8CA0, EventType::Error, "Positioning error", "7.2 (114.8)"},
+    {0x8CA1, EventType::Error, "Invalid parameter", "7.2 (114.7)"},
+    {0x8CA2, EventType::Error, "Invalid command / communication", "7.2 (114.6)"},
+    {0x8CA3, EventType::Error, "Position tracking error", "7.2 (114.5)"},
+    {0x5100, EventType::Error, "Motor voltage (general power supply fault)", "7.2 (114.4)"},
+    {0x4000, EventType::Error, "Temperature fault", "7.2 (114.3)"},
+    {0x8CA6, EventType::Error, "Output stage / trajectory / state machine", "7.2 (114.2)"},
+    {0x6320, EventType::Error, "Device error (parameter / configuration)", "7.2 (114.1)"},
+}};
+inline constexpr EventDefinition kTemperatureWarningEvent{0x4210, EventType::Warning,
+                                                          "Device temperature over-run", "7.3 (115.1)"};
+inline constexpr EventDefinition kVoltageLowWarningEvent{0x5111, EventType::Warning,
+                                                         "Primary supply voltage under-run", "7.3 (115.2)"};
+inline constexpr EventDefinition kVoltageHighWarningEvent{0x5110, EventType::Warning,
+                                                          "Primary supply voltage over-run", "7.3 (115.2)"};
+inline constexpr EventDefinition kToleranceWindowWarningEvent{0x8CB5, EventType::Warning,
+                                                              "Left the tolerance window", "7.3 (115.3)"};
+inline constexpr std::array<EventDefinition, 4> kWarningEvents{
+    {kTemperatureWarningEvent, kVoltageLowWarningEvent, kVoltageHighWarningEvent, kToleranceWindowWarningEvent}};
 
 } // namespace sreh

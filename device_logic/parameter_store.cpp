@@ -3,6 +3,7 @@
 // (manual 8) and the non-volatile image. Checks read ranges and lengths from
 // the table only; the one cross-parameter rule is A-PARAM-6.
 #include "device_logic/parameter_store.hpp"
+#include "device_logic/byte_order.hpp"
 
 #include <algorithm>
 
@@ -50,19 +51,10 @@ bool consistent(const std::vector<int64_t>& numeric) {
   return numeric[pos_of(81, 1)] <= numeric[pos_of(81, 2)];
 }
 
-void put_u16(std::vector<uint8_t>& out, uint16_t v) {
-  out.push_back(static_cast<uint8_t>(v >> 8));
-  out.push_back(static_cast<uint8_t>(v & 0xFF));
-}
-void put_u32(std::vector<uint8_t>& out, uint32_t v) {
-  for (int shift = 24; shift >= 0; shift -= 8) out.push_back(static_cast<uint8_t>(v >> shift));
-}
-uint16_t get_u16(std::span<const uint8_t> b, std::size_t at) {
-  return static_cast<uint16_t>((b[at] << 8) | b[at + 1]);
-}
-uint32_t get_u32(std::span<const uint8_t> b, std::size_t at) {
-  return (uint32_t{b[at]} << 24) | (uint32_t{b[at + 1]} << 16) | (uint32_t{b[at + 2]} << 8) | b[at + 3];
-}
+void put_u16(std::vector<uint8_t>& out, uint16_t v) { be::append16(out, v); }
+void put_u32(std::vector<uint8_t>& out, uint32_t v) { be::append32(out, v); }
+uint16_t get_u16(std::span<const uint8_t> b, std::size_t at) { return be::read16(b, at); }
+uint32_t get_u32(std::span<const uint8_t> b, std::size_t at) { return be::read32(b, at); }
 
 std::vector<uint8_t> bytes_of(std::string_view s) { return {s.begin(), s.end()}; }
 
@@ -383,8 +375,7 @@ std::vector<uint8_t> ParameterStore::image() const {
     out.insert(out.end(), r.data.begin(), r.data.end());
     ++count;
   }
-  out[count_at] = static_cast<uint8_t>(count >> 8);
-  out[count_at + 1] = static_cast<uint8_t>(count & 0xFF);
+  be::write(std::span<uint8_t>(out).subspan(count_at, 2), count);
   put_u32(out, crc32(out));
   return out;
 }

@@ -3,6 +3,7 @@
 // and the memory image all read this table, no range is repeated elsewhere.
 // Constants the manual leaves open are docs/assumptions/parameters.md entries.
 #include "device_logic/parameter_table.hpp"
+#include "device_logic/byte_order.hpp"
 
 #include <algorithm>
 #include <array>
@@ -360,15 +361,13 @@ std::string_view storage_name(Storage storage) {
 std::vector<uint8_t> encode_number(ParamType type, int64_t raw) {
   const std::size_t n = wire_size(type);
   std::vector<uint8_t> out(n);
-  const auto bits = static_cast<uint64_t>(raw);
-  for (std::size_t i = 0; i < n; ++i) out[i] = static_cast<uint8_t>(bits >> (8 * (n - 1 - i)));
+  be::write(out, static_cast<uint64_t>(raw));
   return out;
 }
 
 int64_t decode_number(ParamType type, std::span<const uint8_t> bytes) {
   const std::size_t n = std::min(wire_size(type), bytes.size());
-  uint64_t bits = 0;
-  for (std::size_t i = 0; i < n; ++i) bits = (bits << 8) | bytes[i];
+  const uint64_t bits = be::read(bytes.first(n));
   if (type == ParamType::Int32) return static_cast<int32_t>(static_cast<uint32_t>(bits));
   return static_cast<int64_t>(bits);
 }

@@ -1,4 +1,5 @@
 #include "device_logic/process_data.hpp"
+#include "device_logic/byte_order.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -6,18 +7,8 @@
 namespace sreh {
 namespace {
 
-void put_be32(uint8_t* p, int32_t v) {
-  const auto u = static_cast<uint32_t>(v);
-  p[0] = static_cast<uint8_t>(u >> 24);
-  p[1] = static_cast<uint8_t>(u >> 16);
-  p[2] = static_cast<uint8_t>(u >> 8);
-  p[3] = static_cast<uint8_t>(u);
-}
-
-int32_t get_be32(const uint8_t* p) {
-  const uint32_t u = (uint32_t{p[0]} << 24) | (uint32_t{p[1]} << 16) | (uint32_t{p[2]} << 8) | uint32_t{p[3]};
-  return static_cast<int32_t>(u);
-}
+void put_be32(uint8_t* p, int32_t v) { be::write(std::span<uint8_t>(p, 4), static_cast<uint32_t>(v)); }
+int32_t get_be32(const uint8_t* p) { return static_cast<int32_t>(be::read32(std::span<const uint8_t>(p, 4))); }
 
 constexpr bool bit(uint8_t byte, int n) { return ((byte >> n) & 1u) != 0; }
 constexpr uint8_t flag(bool b, int n) { return static_cast<uint8_t>(b ? (1u << n) : 0u); }

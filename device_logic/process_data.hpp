@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <string_view>
 
 namespace sreh {
 
@@ -49,6 +50,42 @@ ProcessDataIn decode_in(const PdInFrame& frame);
 // of the wrong length throws std::invalid_argument naming both lengths.
 ProcessDataOut decode_out(std::span<const uint8_t> bytes);
 ProcessDataIn decode_in(std::span<const uint8_t> bytes);
+
+// The layout as data (manual 2.2, 2.3), for descriptions of the device (the
+// IODD-like export, serve's decoded views). Bit offsets count from the least
+// significant bit of the frame, as IO-Link and the manual's tables do; a test
+// checks each field against encode().
+enum class PdFieldType { Int32, UInt8, Bool };
+struct PdField {
+  std::string_view name;     // the scenario / process-data field name
+  std::string_view manual_name;
+  PdFieldType type;
+  unsigned bit_offset;
+  unsigned bit_length;
+  std::string_view section;
+};
+inline constexpr std::array<PdField, 9> kPdOutFields{{
+    {"target_raw", "Target position", PdFieldType::Int32, 16, 32, "2.2, 2.5"},
+    {"parameter_set", "Motion parameter set", PdFieldType::UInt8, 8, 8, "2.2"},
+    {"shortest_path", "Shortest path", PdFieldType::Bool, 6, 1, "2.2, 4.3"},
+    {"relative", "Relative", PdFieldType::Bool, 5, 1, "2.2, 4.2"},
+    {"set_origin", "Set origin", PdFieldType::Bool, 4, 1, "2.2, 4.1"},
+    {"reset_error", "Error reset", PdFieldType::Bool, 3, 1, "2.2"},
+    {"stop", "Stop", PdFieldType::Bool, 2, 1, "2.2"},
+    {"move", "Move", PdFieldType::Bool, 1, 1, "2.2"},
+    {"motor_on", "Motor on", PdFieldType::Bool, 0, 1, "2.2"},
+}};
+inline constexpr std::array<PdField, 9> kPdInFields{{
+    {"position_raw", "Actual position", PdFieldType::Int32, 24, 32, "2.3, 2.5"},
+    {"error_code", "Error code", PdFieldType::UInt8, 16, 8, "2.3, 2.4"},
+    {"warning_code", "Warning code", PdFieldType::UInt8, 8, 8, "2.3, 2.4"},
+    {"error", "Error", PdFieldType::Bool, 5, 1, "2.3"},
+    {"warning", "Warning", PdFieldType::Bool, 4, 1, "2.3"},
+    {"done", "Done", PdFieldType::Bool, 3, 1, "2.3"},
+    {"busy", "Busy", PdFieldType::Bool, 2, 1, "2.3"},
+    {"ready", "Ready", PdFieldType::Bool, 1, 1, "2.3"},
+    {"motor_off", "Motor off", PdFieldType::Bool, 0, 1, "2.3"},
+}};
 
 // Manual 2.5: the int32 position is the low 32 bits of the position in 2^16
 // counts per revolution; beyond +-2^15 revolutions it overflows (wraps).

@@ -1,4 +1,5 @@
 #include "scenarios/isdu_value.hpp"
+#include "device_logic/byte_order.hpp"
 
 #include <limits>
 
@@ -93,9 +94,7 @@ std::optional<int64_t> decode_isdu_number(uint16_t index, uint8_t subindex, std:
     return decode_number(entry->type, data);
   }
   if (data.empty() || data.size() > 8) return std::nullopt;
-  uint64_t v = 0;
-  for (uint8_t b : data) v = (v << 8) | b;
-  return static_cast<int64_t>(v);
+  return static_cast<int64_t>(be::read(data));
 }
 
 std::string decode_isdu_text(std::span<const uint8_t> data) {

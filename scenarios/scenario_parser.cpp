@@ -2,6 +2,7 @@
 // scenarios/README.md; every limit that the manual does not give is in
 // docs/assumptions/scenarios.md (A-SCN-*).
 #include "scenarios/scenario_parser.hpp"
+#include "twin/models_dir.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -189,13 +190,9 @@ class Parser {
     std::vector<fs::path> tried;
     const fs::path given(p);
     tried.push_back(given.is_absolute() || base_dir_.empty() ? given : fs::path(base_dir_) / given);
-#ifdef SREH_MODELS_DIR
     if (allow_models_dir && !given.is_absolute() && p.rfind("models/", 0) == 0) {
-      tried.push_back(fs::path(SREH_MODELS_DIR).parent_path() / given);
+      tried.push_back(fs::path(models_dir()).parent_path() / given); // twin/models_dir.hpp
     }
-#else
-    (void)allow_models_dir;
-#endif
     for (const auto& t : tried) {
       std::error_code ec;
       if (fs::is_regular_file(t, ec)) return t.lexically_normal().string();

@@ -11,6 +11,7 @@
 
 #include "device_logic/faults.hpp"
 #include "device_logic/motor_model.hpp"
+#include "device_logic/parameter_ids.hpp"
 #include "device_logic/parameter_table.hpp"
 #include "device_logic/planner.hpp"
 #include "device_logic/units.hpp"
@@ -63,10 +64,10 @@ void write_all(Twin& twin, const std::vector<IsduWrite>& writes) {
 }
 
 double read_tracking_limit_deg(Twin& twin) {
-  const ParameterEntry* row = find_parameter(87, 1);
-  const IsduResult r = twin.isdu_read(87, 1);
-  if (!r.ok() || row == nullptr || r.data.size() != wire_size(row->type)) return 0;
-  return static_cast<double>(decode_number(row->type, r.data)) * row->display_scale;
+  const ParamId id = param::kTrackingErrorMax;
+  const IsduResult r = twin.isdu_read(id.index, id.subindex);
+  if (!r.ok() || r.data.size() != wire_size(parameter_row(id).type)) return 0;
+  return raw_to_display(id, decode_number(parameter_row(id).type, r.data));
 }
 
 template <class Pred>

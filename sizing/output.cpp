@@ -22,7 +22,9 @@ std::string duration_text(const std::optional<double>& s) {
 } // namespace
 
 std::string isdu_write_line(const IsduWrite& w) {
-  return fmt::format("isdu_write index {} sub {} value {}  # {}", w.index, w.subindex, w.value, w.comment);
+  // A scenario step, ready to paste under `steps:` (or, without "- ", under device: isdu:).
+  return fmt::format("- isdu_write: {{index: {}, subindex: {}, value: {}}}  # {}", w.index, w.subindex, w.value,
+                     w.comment);
 }
 
 nlohmann::json to_json(const SizingRequest& rq, const SizingResult& r) {
@@ -99,7 +101,7 @@ std::string summary_text(const SizingRequest& rq, const SizingResult& r) {
   s += fmt::format("  temperature       {:8.1f} degC steady under continuous cycling ({:.2f} W), 70 degC warning: {}\n",
                    e.steady_temperature_C, e.mean_loss_W, duration_text(e.time_to_warning_s));
   s += fmt::format("  feasible          {}{}\n", e.feasible ? "yes" : "NO", e.feasible ? "" : ": " + e.reason);
-  s += fmt::format("ISDU writes ({} simulation{}):\n", r.simulations, r.simulations == 1 ? "" : "s");
+  s += fmt::format("ISDU writes, as scenario steps ({} simulation{}):\n", r.simulations, r.simulations == 1 ? "" : "s");
   for (const IsduWrite& w : e.set.writes) s += "  " + isdu_write_line(w) + "\n";
   return s;
 }

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "device_logic/parameter_ids.hpp"
 #include "device_logic/parameter_store.hpp"
 #include "device_logic/parameter_table.hpp"
 #include "device_logic/units.hpp"
@@ -14,10 +15,6 @@
 
 namespace sreh::sizing {
 namespace {
-
-int64_t raw_of(double display, double scale, int64_t lo, int64_t hi) {
-  return std::clamp(static_cast<int64_t>(std::llround(display / scale)), lo, hi);
-}
 
 // A-SIZE-4: settling timeout when none is given: the factory 100 ms (raw
 // 1000) for the factory waiting time 25 ms, i.e. the wait plus 75 ms.
@@ -33,53 +30,61 @@ constexpr double kFactoryMaxVoltage_V = 30.0;
 double voltage_speed_limit_dps(double voltage_V) { return std::min(kMaxSpeed_dps, kMaxSpeed_dps * voltage_V / 24.0); }
 
 ParameterSetValues make_parameter_set(const SizingRequest& rq, const MotionSetting& s, double load_gcm2) {
-  const auto index = static_cast<uint16_t>(64 + rq.parameter_set);
+  const param::MotionSet ids{rq.parameter_set};
   ParameterSetValues v;
   v.set = rq.parameter_set;
   v.voltage_V = rq.voltage_V;
-  const double tol_scale = 360.0 / static_cast<double>(kInternalCountsPerRev);
-  const int64_t speed = raw_of(s.speed_dps, 0.1, 1, 43000);
-  const int64_t accel = raw_of(s.accel_pct, 0.1, 1, 1000);
-  const int64_t jerk = raw_of(s.jerk_pct, 0.1, 1, 1000);
-  const int64_t load = raw_of(load_gcm2, 1.0, 0, 15000);
-  const int64_t tol = raw_of(rq.tolerance_deg, tol_scale, 0, 65535);
-  const int64_t wait = raw_of(rq.wait_ms, 0.1, 0, 50000);
-  const int64_t timeout = raw_of(rq.timeout_ms.value_or(default_timeout_ms(rq.wait_ms)), 0.1, 0, 50000);
+  // Raw values nearest to the request, within the table's ranges (manual 6.2).
+  const int64_t speed = display_to_raw(ids.speed, s.speed_dps);
+  const int64_t accel = display_to_raw(ids.acceleration, s.accel_pct);
+  const int64_t jerk = display_to_raw(ids.jerk, s.jerk_pct);
+  const int64_t load = display_to_raw(ids.load, load_gcm2);
+  const int64_t tol = display_to_raw(ids.tolerance, rq.tolerance_deg);
+  const int64_t wait = display_to_raw(ids.waiting_time, rq.wait_ms);
+  const int64_t timeout = display_to_raw(ids.settling_timeout, rq.timeout_ms.value_or(default_timeout_ms(rq.wait_ms)));
 
   // Read back through the device's own store: same scaling, same rounding.
   ParameterStore store;
-  const int64_t raws[8] = {speed, accel, jerk, load, tol, wait, timeout, 1};
-  for (uint8_t sub = 1; sub <= 8; ++sub) {
-    const ParameterEntry* row = find_parameter(index, sub);
-    const IsduResult r = store.write(index, sub, encode_number(row->type, raws[sub - 1]));
+  const std::pair<ParamId, int64_t> raws[8] = {{ids.speed, speed},         {ids.acceleration, accel},
+                                               {ids.jerk, jerk},           {ids.load, load},
+                                               {ids.tolerance, tol},       {ids.waiting_time, wait},
+                                               {ids.settling_timeout, timeout}, {ids.settling_timeout_active, 1}};
+  for (const auto& [id, raw] : raws) {
+    const IsduResult r = store.write(id.index, id.subindex, encode_number(parameter_row(id).type, raw));
     if (!r.ok()) {
-      throw std::logic_error(fmt::format("sizing: index {}.{} value {} refused (0x{:04X})", index, sub, raws[sub - 1], r.error));
+      throw std::logic_error(fmt::format("sizing: index {}.{} value {} refused (0x{:04X})", id.index, id.subindex, raw, r.error));
     }
   }
   const MotionParameterSet m = store.motion_set(rq.parameter_set);
   v.setting = MotionSetting{m.speed_dps, m.accel_pct, m.jerk_pct};
-  v.tidy = MotionSetting{static_cast<double>(speed) / 10.0, static_cast<double>(accel) / 10.0,
-                         static_cast<double>(jerk) / 10.0};
+  v.tidy = MotionSetting{raw_to_display(ids.speed, speed), raw_to_display(ids.acceleration, accel),
+                         raw_to_display(ids.jerk, jerk)};
   v.load_gcm2 = m.load_gcm2;
   v.tolerance_deg = m.tolerance_deg;
   v.wait_ms = m.wait_ms;
   v.timeout_ms = m.settling_timeout_ms;
 
   v.writes = {
-      {index, 1, speed, fmt::format("speed {:.1f} deg/s", m.speed_dps)},
-      {index, 2, accel, fmt::format("acceleration {:.1f} % of alpha100%", m.accel_pct)},
-      {index, 3, jerk, fmt::format("jerk {:.1f} %", m.jerk_pct)},
-      {index, 4, load, fmt::format("load {:.0f} g cm^2", m.load_gcm2)},
-      {index, 5, tol, fmt::format("position tolerance {:.4f} deg", m.tolerance_deg)},
-      {index, 6, wait, fmt::format("waiting time {:.1f} ms", m.wait_ms)},
-      {index, 7, timeout, fmt::format("settling timeout {:.1f} ms", m.settling_timeout_ms)},
-      {index, 8, 1, "settling timeout active"},
+      {ids.speed.index, ids.speed.subindex, speed, fmt::format("speed {:.1f} deg/s", m.speed_dps)},
+      {ids.acceleration.index, ids.acceleration.subindex, accel,
+       fmt::format("acceleration {:.1f} % of alpha100%", m.accel_pct)},
+      {ids.jerk.index, ids.jerk.subindex, jerk, fmt::format("jerk {:.1f} %", m.jerk_pct)},
+      {ids.load.index, ids.load.subindex, load, fmt::format("load {:.0f} g cm^2", m.load_gcm2)},
+      {ids.tolerance.index, ids.tolerance.subindex, tol, fmt::format("position tolerance {:.4f} deg", m.tolerance_deg)},
+      {ids.waiting_time.index, ids.waiting_time.subindex, wait, fmt::format("waiting time {:.1f} ms", m.wait_ms)},
+      {ids.settling_timeout.index, ids.settling_timeout.subindex, timeout,
+       fmt::format("settling timeout {:.1f} ms", m.settling_timeout_ms)},
+      {ids.settling_timeout_active.index, ids.settling_timeout_active.subindex, 1, "settling timeout active"},
   };
+  // The widest window the table allows (manual 6.2, index 85).
+  const ParamId vmin = param::kMotorVoltageMin, vmax = param::kMotorVoltageMax;
   if (rq.voltage_V < kFactoryMinVoltage_V) {
-    v.writes.push_back({85, 1, 16000, "motor voltage window minimum 16.0 V (supply below the factory 18 V)"});
+    v.writes.push_back({vmin.index, vmin.subindex, parameter_row(vmin).min,
+                        fmt::format("motor voltage window minimum {:.1f} V (supply below the factory 18 V)", display_min(vmin))});
   }
   if (rq.voltage_V > kFactoryMaxVoltage_V) {
-    v.writes.push_back({85, 2, 32000, "motor voltage window maximum 32.0 V (supply above the factory 30 V)"});
+    v.writes.push_back({vmax.index, vmax.subindex, parameter_row(vmax).max,
+                        fmt::format("motor voltage window maximum {:.1f} V (supply above the factory 30 V)", display_max(vmax))});
   }
   return v;
 }

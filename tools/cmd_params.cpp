@@ -3,6 +3,7 @@
 // (interfaces.md). Reads device_logic/parameter_table only; exit 2 for an
 // unknown or malformed index.
 #include <algorithm>
+#include <cstdint>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -14,7 +15,10 @@
 #include <nlohmann/json.hpp>
 
 #include "device_logic/parameter_table.hpp"
+#include "io/atomic_file.hpp"
+#include "io/output_path.hpp"
 #include "tools/command.hpp"
+#include "tools/iodd_export.hpp"
 
 namespace sreh::tools {
 namespace {
@@ -23,7 +27,9 @@ using Json = nlohmann::ordered_json;
 
 struct ParamsArgs {
   bool json = false;
+  bool wide = false; // every column; the default view fits 100 columns
   std::string which; // INDEX[.SUB] for `show`
+  std::string iodd_path; // FILE.xml for `export --iodd`
 };
 
 std::string hex_octets(std::string_view bytes) {
@@ -123,11 +129,60 @@ std::vector<std::string> row_cells(const ParameterEntry& row) {
           std::string(row.section)};
 }
 
+// The narrow view (fits 100 columns): one "index.sub" cell, the range as
+// "min..max" ("full" for the type's whole range), the raw unit, a short default.
+bool full_range(const ParameterEntry& row) {
+  switch (row.type) {
+    case ParamType::UInt8: return row.min == 0 && row.max == 0xFF;
+    case ParamType::UInt16: return row.min == 0 && row.max == 0xFFFF;
+    case ParamType::UInt32: return row.min == 0 && row.max == 0xFFFFFFFF;
+    case ParamType::Int32: return row.min == INT32_MIN && row.max == INT32_MAX;
+    default: return false;
+  }
+}
+
+std::vector<std::string> narrow_cells(const ParameterEntry& row) {
+  const bool num = is_numeric(row.type);
+  std::string record(row.record_name);
+  if (record.rfind("Motion parameter set ", 0) == 0) record = "Set " + record.substr(21); // "Set 1: ..."
+  const std::string name = record.empty() ? std::string(row.name) : fmt::format("{}: {}", record, row.name);
+  std::string range = "-";
+  if (num) range = full_range(row) ? "full" : fmt::format("{}..{}", row.min, row.max);
+  return {fmt::format("{}.{}", row.index, row.subindex),
+          clip(name, 32),
+          clip(std::string(row_type_text(row)), 8),
+          std::string(access_name(row.access)),
+          clip(range, 16),
+          clip(std::string(row.raw_unit.empty() ? "-" : row.raw_unit), 13),
+          clip(default_cell(row), 10)};
+}
+
+void print_narrow(std::ostream& os, const std::vector<std::vector<std::string>>& rows) {
+  std::vector<std::size_t> width;
+  for (const auto& r : rows) {
+    width.resize(std::max(width.size(), r.size()), 0);
+    for (std::size_t c = 0; c < r.size(); ++c) width[c] = std::max(width[c], r[c].size());
+  }
+  for (const auto& r : rows) {
+    std::string line;
+    for (std::size_t c = 0; c < r.size(); ++c) line += fmt::format("{:<{}}  ", r[c], width[c]);
+    while (!line.empty() && line.back() == ' ') line.pop_back();
+    os << line << "\n";
+  }
+}
+
 int list_command(const ParamsArgs& a) {
   if (a.json) {
     Json out = Json::array();
     for (const auto& row : parameter_table()) out.push_back(row_json(row));
     std::cout << out.dump(2) << "\n";
+    return 0;
+  }
+  if (!a.wide) {
+    std::vector<std::vector<std::string>> rows{{"param", "name", "type", "acc", "raw range", "raw unit", "default"}};
+    for (const auto& row : parameter_table()) rows.push_back(narrow_cells(row));
+    print_narrow(std::cout, rows);
+    std::cout << "Raw wire values. Units, sections: 'params show INDEX.SUB'; all columns: --wide\n";
     return 0;
   }
   std::vector<std::vector<std::string>> rows{
@@ -226,6 +281,14 @@ int show_command(const ParamsArgs& a) {
   return 0;
 }
 
+// ----------------------------------------------------------------- export
+
+int export_command(const ParamsArgs& a) {
+  io::check_outputs({{"--iodd", a.iodd_path, io::OutputKind::File}}, {});
+  io::write_file_atomic(a.iodd_path, [](std::ostream& os) { os << iodd_document(SREH_VERSION); });
+  return 0;
+}
+
 } // namespace
 
 SREH_REGISTER_COMMAND(50, [](CLI::App& app, int& exit_code) {
@@ -236,12 +299,19 @@ SREH_REGISTER_COMMAND(50, [](CLI::App& app, int& exit_code) {
 
   CLI::App* list = params->add_subcommand("list", "Every index/subindex: type, access, units, range, default");
   list->add_flag("--json", args->json, "Print a JSON array, one object per index/subindex");
+  list->add_flag("--wide", args->wide, "All columns (display unit, min, max, section); over 100 columns wide");
   list->callback([args, &exit_code] { exit_code = list_command(*args); });
 
   CLI::App* show = params->add_subcommand("show", "One parameter, or all members of a record");
   show->add_option("INDEX[.SUB]", args->which, "Index, or index.subindex, e.g. 64 or 64.1")->required();
   show->add_flag("--json", args->json, "Print one JSON object");
   show->callback([args, &exit_code] { exit_code = show_command(*args); });
+
+  CLI::App* exp = params->add_subcommand("export", "Write a device description generated from the table");
+  exp->add_option("--iodd", args->iodd_path,
+                  "IODD-like XML (IODD vocabulary; schema docs/iodd/sreh-iodd.xsd)")
+      ->required();
+  exp->callback([args, &exit_code] { exit_code = export_command(*args); });
 
   params->callback([params, args, &exit_code] {
     if (params->get_subcommands().empty()) exit_code = list_command(*args);

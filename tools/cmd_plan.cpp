@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "device_logic/parameter_ids.hpp"
 #include "device_logic/planner.hpp"
 #include "device_logic/units.hpp"
 #include "tools/command.hpp"
@@ -17,29 +18,36 @@
 namespace sreh::tools {
 namespace {
 
+// Parameter set 1's rows: ranges and factory defaults come from the table (manual 6.2).
+const param::MotionSet kSet{1};
+
 struct PlanArgs {
   double distance_deg = 0;
-  // Factory defaults of parameter sets 1..7 (manual 6.2, index 65..71).
-  double speed_dps = 3000.0;
-  double accel_pct = 100.0;
-  double jerk_pct = 100.0;
-  double load_gcm2 = 0.0;
+  double speed_dps = display_default(kSet.speed);
+  double accel_pct = display_default(kSet.acceleration);
+  double jerk_pct = display_default(kSet.jerk);
+  double load_gcm2 = display_default(kSet.load);
   bool json = false;
 };
 
-// Manual 6.2, index 64..71 ranges (display units).
-void check_range(const char* option, double value, double lo, double hi, const char* unit) {
+void check_range(const char* option, double value, ParamId id) {
+  const double lo = display_min(id), hi = display_max(id);
   if (!std::isfinite(value) || value < lo || value > hi) {
-    throw InputError(fmt::format("{} {} is outside the manual's range {} .. {} {} (manual 6.2, index 64..71)",
-                                 option, value, lo, hi, unit));
+    throw InputError(fmt::format("{} {} is outside the manual's range {} .. {} {} (manual {}, index 64..71)", option,
+                                 value, lo, hi, parameter_row(id).display_unit, parameter_row(id).section));
   }
 }
 
+std::string range_help(std::string_view what, ParamId id, std::string_view section) {
+  return fmt::format("{}, {} .. {} {} (manual {})", what, display_min(id), display_max(id),
+                     parameter_row(id).display_unit, section);
+}
+
 int plan_command(const PlanArgs& a) {
-  check_range("--speed-dps", a.speed_dps, 0.1, 4300.0, "deg/s");
-  check_range("--accel-pct", a.accel_pct, 0.1, 100.0, "%");
-  check_range("--jerk-pct", a.jerk_pct, 0.1, 100.0, "%");
-  check_range("--load-gcm2", a.load_gcm2, 0.0, 15000.0, "g cm^2");
+  check_range("--speed-dps", a.speed_dps, kSet.speed);
+  check_range("--accel-pct", a.accel_pct, kSet.acceleration);
+  check_range("--jerk-pct", a.jerk_pct, kSet.jerk);
+  check_range("--load-gcm2", a.load_gcm2, kSet.load);
   // The target is an int32 of 2^16 counts per revolution (manual 2.5).
   const double max_distance_deg = wire_counts_to_deg(int64_t{1} << 31);
   if (!std::isfinite(a.distance_deg) || std::abs(a.distance_deg) > max_distance_deg) {
@@ -95,10 +103,10 @@ SREH_REGISTER_COMMAND(20, [](CLI::App& app, int& exit_code) {
   auto args = std::make_shared<PlanArgs>();
   CLI::App* cmd = app.add_subcommand("plan", "Show the S-curve the device plans for a move and a motion parameter set");
   cmd->add_option("--distance-deg", args->distance_deg, "Move distance in degrees (any sign)")->required();
-  cmd->add_option("--speed-dps", args->speed_dps, "Maximum speed, 0.1 .. 4300 deg/s (manual 3.5.3)")->capture_default_str();
-  cmd->add_option("--accel-pct", args->accel_pct, "Acceleration factor, 0.1 .. 100 % of alpha100% (manual 3.5.4)")->capture_default_str();
-  cmd->add_option("--jerk-pct", args->jerk_pct, "Jerk factor, 0.1 .. 100 % (manual 3.5.5)")->capture_default_str();
-  cmd->add_option("--load-gcm2", args->load_gcm2, "Configured load inertia, 0 .. 15000 g cm^2 (manual 3.5.6)")->capture_default_str();
+  cmd->add_option("--speed-dps", args->speed_dps, range_help("Maximum speed", kSet.speed, "3.5.3"))->capture_default_str();
+  cmd->add_option("--accel-pct", args->accel_pct, range_help("Acceleration factor", kSet.acceleration, "3.5.4"))->capture_default_str();
+  cmd->add_option("--jerk-pct", args->jerk_pct, range_help("Jerk factor", kSet.jerk, "3.5.5"))->capture_default_str();
+  cmd->add_option("--load-gcm2", args->load_gcm2, range_help("Configured load inertia", kSet.load, "3.5.6"))->capture_default_str();
   cmd->add_flag("--json", args->json, "Print one JSON object");
   cmd->callback([args, &exit_code] { exit_code = plan_command(*args); });
 });

@@ -11,6 +11,7 @@
 #include "io/output_path.hpp"
 #include "io/text.hpp"
 #include "tools/command.hpp"
+#include "twin/models_dir.hpp"
 
 namespace sreh::tools {
 namespace {
@@ -43,6 +44,16 @@ int main(int argc, char** argv) {
   using namespace sreh::tools;
   CLI::App app{"sreh-twin: digital twin of the Afag SREH-50-IOL smart rotary module"};
   app.footer(kExitCodes);
+  // --version: the release and where this installation finds its models (issue 13).
+  app.set_version_flag("--version", [] {
+    std::string models;
+    try {
+      models = sreh::models_dir();
+    } catch (const std::exception& e) {
+      models = std::string("not found: ") + e.what();
+    }
+    return std::string("sreh-twin ") + SREH_VERSION + " (models: " + models + ")";
+  });
   app.require_subcommand(1);
   sreh::io::install_interrupt_handlers();
   int exit_code = 0;
@@ -55,6 +66,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     return fail(2, e.what());

@@ -1,4 +1,5 @@
 #include "twin/load_builder.hpp"
+#include "twin/models_dir.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -266,7 +267,7 @@ std::string hard_stops_xml(const std::vector<HardStop>& stops) {
 
 } // namespace
 
-std::string default_module_model_path() { return std::string(SREH_MODELS_DIR) + "/sreh50.xml"; }
+std::string default_module_model_path() { return models_dir() + "/sreh50.xml"; }
 
 std::string describe_load(const LoadSpec& load) {
   struct Describe {

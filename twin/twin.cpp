@@ -1,5 +1,7 @@
 #include "twin/twin.hpp"
 
+#include "device_logic/parameter_ids.hpp"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -45,7 +47,7 @@ struct Twin::Impl {
   // frame when the positive direction is counterclockwise. Only the ghost
   // marker needs this (the planned setpoint is in process-data degrees).
   void refresh_direction() {
-    const IsduResult r = device.isdu_read(82, 0);
+    const IsduResult r = device.isdu_read(param::kPositiveDirection.index, param::kPositiveDirection.subindex);
     direction = (r.ok() && !r.data.empty() && r.data[0] == 1) ? -1.0 : 1.0;
   }
 

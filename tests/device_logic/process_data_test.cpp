@@ -83,4 +83,54 @@ TEST(PositionCoding, ExamplesOfTheTable_2_5) {
 }
 
 } // namespace
+// The layout table (kPdOutFields / kPdInFields, used by the IODD-like
+// export) must say what the codec does: each field set alone to all ones
+// lands exactly on its declared bits (manual 2.2, 2.3).
+template <std::size_t Bytes>
+uint64_t frame_bits(const std::array<uint8_t, Bytes>& f) {
+  uint64_t v = 0;
+  for (uint8_t b : f) v = (v << 8) | b; // byte 0 is the most significant (big-endian)
+  return v;
+}
+uint64_t field_mask(const PdField& f) { return ((uint64_t{1} << f.bit_length) - 1) << f.bit_offset; }
+
+TEST(ProcessDataLayout, OutFieldsMatchTheCodec_2_2) {
+  auto set_all = [](std::string_view name) {
+    ProcessDataOut p;
+    if (name == "target_raw") p.target_position = -1;
+    if (name == "parameter_set") p.parameter_set = 0xFF;
+    p.shortest_path = name == "shortest_path";
+    p.relative = name == "relative";
+    p.set_origin = name == "set_origin";
+    p.reset_error = name == "reset_error";
+    p.stop = name == "stop";
+    p.move = name == "move";
+    p.motor_on = name == "motor_on";
+    return p;
+  };
+  uint64_t covered = 0;
+  for (const PdField& f : kPdOutFields) {
+    EXPECT_EQ(frame_bits(encode(set_all(f.name))), field_mask(f)) << f.name;
+    covered |= field_mask(f);
+  }
+  EXPECT_EQ(covered, 0xFFFFFFFFFFFFull & ~0x80ull); // every bit but the reserved bit 7 (manual 2.2)
+}
+
+TEST(ProcessDataLayout, InFieldsMatchTheCodec_2_3) {
+  auto set_all = [](std::string_view name) {
+    ProcessDataIn p;
+    if (name == "position_raw") p.actual_position = -1;
+    if (name == "error_code") p.error_code = 0xFF;
+    if (name == "warning_code") p.warning_code = 0xFF;
+    p.error = name == "error";
+    p.warning = name == "warning";
+    p.done = name == "done";
+    p.busy = name == "busy";
+    p.ready = name == "ready";
+    p.motor_off = name == "motor_off";
+    return p;
+  };
+  for (const PdField& f : kPdInFields) EXPECT_EQ(frame_bits(encode(set_all(f.name))), field_mask(f)) << f.name;
+}
+
 } // namespace sreh

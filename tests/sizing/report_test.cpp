@@ -27,7 +27,7 @@ TEST(Report, SizeReportHasPlotsNumbersAndWrites) {
   EXPECT_NE(html.find("<svg"), std::string::npos);
   EXPECT_NE(html.find("Motor torque"), std::string::npos);
   EXPECT_NE(html.find("Velocity"), std::string::npos);
-  EXPECT_NE(html.find("isdu_write index 65 sub 1 value 10000"), std::string::npos);
+  EXPECT_NE(html.find("- isdu_write: {index: 65, subindex: 1, value: 10000}"), std::string::npos);
   EXPECT_EQ(html.find("<script"), std::string::npos);
 
   const fs::path dir = fs::path(testing::TempDir()) / "sreh_sizing_report_test";

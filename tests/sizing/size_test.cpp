@@ -3,6 +3,8 @@
 // runtime small.
 #include <gtest/gtest.h>
 
+#include "scenarios/scenario_parser.hpp"
+
 #include <string>
 
 #include "device_logic/motor_model.hpp"
@@ -206,7 +208,26 @@ TEST(ParameterSet, RawWritesForIndex65) {
   EXPECT_EQ(v.writes[8].index, 85);    // 31 V is above the factory 30 V maximum
   EXPECT_EQ(v.writes[8].subindex, 2);
   EXPECT_EQ(v.writes[8].value, 32000);
-  EXPECT_EQ(isdu_write_line(v.writes[0]), "isdu_write index 65 sub 1 value 30000  # speed 3000.0 deg/s");
+  EXPECT_EQ(isdu_write_line(v.writes[0]), "- isdu_write: {index: 65, subindex: 1, value: 30000}  # speed 3000.0 deg/s");
+}
+
+// The printed writes paste into a scenario as they are (issue 16): every line
+// parses as an isdu_write step with the same index, subindex and raw value.
+TEST(ParameterSet, IsduWriteLinesAreScenarioSteps) {
+  SizingRequest rq;
+  rq.voltage_V = 17.0; // adds the 85.1 window write
+  const ParameterSetValues v = make_parameter_set(rq, MotionSetting{1234.5, 40.0, 12.5}, 3000.0);
+  std::string yaml = "name: pasted from size\nsteps:\n";
+  for (const IsduWrite& w : v.writes) yaml += "  " + isdu_write_line(w) + "\n";
+  const Scenario sc = parse_scenario_text(yaml, "pasted.yaml", "");
+  ASSERT_EQ(sc.steps.size(), v.writes.size());
+  for (std::size_t i = 0; i < v.writes.size(); ++i) {
+    const auto* step = std::get_if<IsduWriteStep>(&sc.steps[i].action);
+    ASSERT_NE(step, nullptr);
+    EXPECT_EQ(step->index, v.writes[i].index);
+    EXPECT_EQ(step->subindex, v.writes[i].subindex);
+    EXPECT_EQ(decode_number(find_parameter(step->index, step->subindex)->type, step->data), v.writes[i].value);
+  }
 }
 
 TEST(ParameterSet, TopSpeedFallsWithVoltage_Manual3_5_3) {

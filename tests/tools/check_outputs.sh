@@ -42,6 +42,8 @@ expect 2 "--csv nodir/s.csv" "$twin" sweep --loads-gcm2 100 --angles-deg 90 --cy
 mkdir -p adir
 expect 2 "--trace adir: is a folder" "$twin" run "$scenario" --trace adir
 expect 2 "--trace t.csv/: names a folder" "$twin" run "$scenario" --trace t.csv/
+expect 2 "--iodd adir: is a folder" "$twin" params export --iodd adir
+expect 2 "--iodd s.yaml/: names a folder" "$twin" params export --iodd s.yaml/
 if [ "$render" = 1 ]; then # reports need the renders
   expect 2 "--report missing/rep: the folder 'missing' does not exist" \
     "$twin" size --angle-deg 90 --load-gcm2 100 --cycles 1 --report missing/rep

@@ -64,13 +64,13 @@ double box_z(double m, double x, double y, double d) { return m * (x * x + y * y
 TEST(LoadBuilder, ShippedGripperMatchesItsParts) {
   const double expected = 0.045 * 0.028 * 0.028 / 2 + box_z(0.220, 0.064, 0.032, 0) + box_z(0.020, 0.068, 0.020, 0) +
                           2 * box_z(0.022, 0.008, 0.016, 0.012);
-  EXPECT_NEAR(load_gcm2(MjcfLoad{std::string(SREH_MODELS_DIR) + "/loads/gripper.xml"}), kgm2_to_gcm2(expected), 1e-6);
+  EXPECT_NEAR(load_gcm2(MjcfLoad{std::string(SREH_SOURCE_DIR "/models") + "/loads/gripper.xml"}), kgm2_to_gcm2(expected), 1e-6);
 }
 
 TEST(LoadBuilder, ShippedAsymmetricArmMatchesItsParts) {
   const double expected = 0.040 * 0.020 * 0.020 / 2 + box_z(0.060, 0.140, 0.016, 0.070) +
                           box_z(0.020, 0.024, 0.020, 0.022) + box_z(0.050, 0.024, 0.024, 0.130);
-  EXPECT_NEAR(load_gcm2(MjcfLoad{std::string(SREH_MODELS_DIR) + "/loads/asymmetric_arm.xml"}), kgm2_to_gcm2(expected), 1e-6);
+  EXPECT_NEAR(load_gcm2(MjcfLoad{std::string(SREH_SOURCE_DIR "/models") + "/loads/asymmetric_arm.xml"}), kgm2_to_gcm2(expected), 1e-6);
 }
 
 TEST(LoadBuilder, RelativeLoadPathResolvesInTheSourceTree) {

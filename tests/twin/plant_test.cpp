@@ -160,7 +160,7 @@ TEST(Plant, NanTorqueIsAFatalError) {
 
 TEST(Plant, SameInputsGiveBitIdenticalStates) {
   auto run_once = [] {
-    Plant plant(config_with(MjcfLoad{std::string(SREH_MODELS_DIR) + "/loads/asymmetric_arm.xml"}));
+    Plant plant(config_with(MjcfLoad{std::string(SREH_SOURCE_DIR "/models") + "/loads/asymmetric_arm.xml"}));
     for (int i = 0; i < 3000; ++i) plant.step(MotorCommand{0.3 * std::sin(i * 1e-3), true});
     return std::make_pair(plant.angle_rad(), plant.velocity_rad_s());
   };
