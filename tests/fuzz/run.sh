@@ -7,6 +7,7 @@
 #   tests/fuzz/run.sh 600 scenario      one target for 600 s
 #   SREH_FUZZ_RUNS=10000000 tests/fuzz/run.sh 0 isdu   a number of executions instead of time
 #   SREH_FUZZ_MERGE=1 ...               afterwards merge what was found into the committed corpus
+#                                       (edge coverage only, -use_counters=0, to keep it small)
 # A crash, leak, sanitizer report, timeout (10 s) or out-of-memory (2 GB)
 # fails the script (exit 1); the reproducer is left in build-fuzz/findings/.
 set -euo pipefail
@@ -41,7 +42,7 @@ for t in "${targets[@]}"; do
   grep -E "stat::number_of_executed_units|Done [0-9]+ runs" "$build/findings/$t.log" | tail -2
   if [ -n "${SREH_FUZZ_MERGE:-}" ]; then
     mkdir -p "$corpus"
-    "$build/tests/fuzz/${t}_fuzz" -merge=1 -max_len=16384 "$corpus" "$scratch" > /dev/null 2>&1
+    "$build/tests/fuzz/${t}_fuzz" -merge=1 -use_counters=0 -max_len=16384 "$corpus" "$scratch" > /dev/null 2>&1
   fi
   rm -rf "$scratch"
 done
