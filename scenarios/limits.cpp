@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "scenarios/scenario.hpp"
+#include "twin/firmware_transfer.hpp"
 
 namespace sreh {
 namespace {
@@ -37,9 +38,22 @@ struct Bounder {
           else if constexpr (std::is_same_v<T, WaitStep>) b.sim_s = cycles_s(a.duration_s);
           else if constexpr (std::is_same_v<T, WaitUntilStep>) { b.sim_s = cycles_s(a.within_s); b.checks = 1; }
           else if constexpr (std::is_same_v<T, ExpectStep> || std::is_same_v<T, IsduReadStep> ||
-                             std::is_same_v<T, IsduWriteStep> || std::is_same_v<T, FirmwareStep>) b.checks = 1;
+                             std::is_same_v<T, IsduWriteStep>) b.checks = 1;
           else if constexpr (std::is_same_v<T, TorqueStep>) b.sim_s = a.for_s ? cycles_s(*a.for_s) : 0.0;
-          else if constexpr (std::is_same_v<T, LinkStep>) b.sim_s = cycles_s(a.down_s);
+          else if constexpr (std::is_same_v<T, LinkStep>) {
+            // down for down_s, then one cycle for the master's first exchange; `link: down` alone takes none
+            b.sim_s = a.mode == LinkStep::Mode::Down ? 0.0 : cycles_s(a.down_s) + cycle_s;
+          } else if constexpr (std::is_same_v<T, PowerCycleStep>) b.sim_s = cycles_s(a.off_s);
+          else if constexpr (std::is_same_v<T, FirmwareStep>) {
+            // The transfer over ISDU takes cycles per chunk (twin/firmware_transfer.hpp).
+            const std::vector<uint8_t> image = Device::firmware_image(a.version, a.size_B);
+            double cycles = 0;
+            for (const IsduWriteRequest& w : firmware_requests(image)) {
+              cycles += static_cast<double>(isdu_write_cycles(w.data.size()));
+            }
+            b.sim_s = cycles * cycle_s;
+            b.checks = 1;
+          }
           else if constexpr (std::is_same_v<T, RepeatStep>) {
             const RunBound inner = of(a.steps);
             const double n = static_cast<double>(a.times);

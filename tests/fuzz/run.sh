@@ -21,7 +21,7 @@ build=build-fuzz
 log=$build/fuzz-build.log
 mkdir -p "$build"
 CC=clang CXX=clang++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSREH_FUZZ=ON \
-  -DSREH_BUILD_TESTS=OFF -DSREH_BUILD_BENCH=OFF -DSREH_WITH_RENDER=OFF > "$log" 2>&1 || { cat "$log"; exit 1; }
+  -DSREH_BUILD_TESTS=OFF -DSREH_BUILD_BENCH=OFF -DSREH_WITH_RENDER=OFF -DSREH_WITH_PYTHON=OFF > "$log" 2>&1 || { cat "$log"; exit 1; }
 cmake --build "$build" -j"$(nproc)" --target $(printf '%s_fuzz ' "${targets[@]}") >> "$log" 2>&1 ||
   { tail -50 "$log"; exit 1; }
 mkdir -p "$build/findings"
