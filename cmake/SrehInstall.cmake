@@ -8,7 +8,7 @@
 include(CMakePackageConfigHelpers)
 
 set(SREH_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/sreh_twin)
-set(sreh_installed_libraries device_logic twin)
+set(sreh_installed_libraries io device_logic twin) # twin uses io (atomic files, interrupt flag)
 
 install(TARGETS ${sreh_installed_libraries} EXPORT sreh_twinTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}

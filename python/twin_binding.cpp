@@ -15,7 +15,7 @@
 #include "device_logic/units.hpp"
 #include "python/bindings.hpp"
 #include "scenarios/result_json.hpp"
-#include "scenarios/atomic_file.hpp"
+#include "io/atomic_file.hpp"
 #include "scenarios/isdu_value.hpp"
 #include "scenarios/scenario.hpp"
 #include "sizing/size_options.hpp"
@@ -297,7 +297,7 @@ class PyTwin {
     write_trace_csv(out, twin_->trace());
     if (path) {
       try {
-        write_file_atomic(path->string(), [&](std::ostream& o) { o << out.str(); });
+        io::write_file_atomic(path->string(), [&](std::ostream& o) { o << out.str(); });
       } catch (const std::runtime_error& e) {
         throw input_error(e.what());
       }

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <ostream>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
+#include "io/atomic_file.hpp"
 #include "renders/svg_plot.hpp"
 
 namespace sreh {
@@ -223,32 +225,11 @@ std::string report_html(const ReportInput& in) {
   return o;
 }
 
-void write_file_atomically(const fs::path& path, const std::string& text) {
-  const fs::path tmp = path.string() + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out << text;
-    out.flush();
-    if (!out) {
-      std::error_code ignored;
-      fs::remove(tmp, ignored);
-      throw std::runtime_error("cannot write " + tmp.string());
-    }
-  }
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) {
-    fs::remove(tmp, ec);
-    throw std::runtime_error("cannot write " + path.string() + ": " + ec.message());
-  }
-}
-
 fs::path write_report(const fs::path& dir, const ReportInput& in) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec || !fs::is_directory(dir)) throw std::runtime_error("cannot create report directory " + dir.string());
+  io::make_output_folder(dir.string());
   const fs::path index = dir / "index.html";
-  write_file_atomically(index, report_html(in));
+  const std::string html = report_html(in);
+  io::write_file_atomic(index.string(), [&](std::ostream& out) { out << html; });
   return index;
 }
 

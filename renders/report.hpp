@@ -32,11 +32,9 @@ inline constexpr std::size_t kMaxSettlingPlots = 24;
 // The HTML text of the report.
 std::string report_html(const ReportInput& in);
 
-// Writes dir/index.html atomically (index.html.tmp, then rename); creates
-// `dir` if missing. Returns the file's path. Throws std::runtime_error.
+// Writes dir/index.html atomically (io::AtomicFile); creates `dir` if
+// missing (one level: its parent must exist). Returns the file's path.
+// Throws std::runtime_error.
 std::filesystem::path write_report(const std::filesystem::path& dir, const ReportInput& in);
-
-// Writes `text` to `path` through `path`.tmp and a rename.
-void write_file_atomically(const std::filesystem::path& path, const std::string& text);
 
 } // namespace sreh

@@ -6,6 +6,7 @@
 #include <condition_variable>
 #include <deque>
 #include <exception>
+#include <memory>
 #include <mutex>
 #include <numbers>
 #include <stdexcept>
@@ -14,6 +15,7 @@
 
 #include <fmt/format.h>
 
+#include "io/atomic_file.hpp"
 #include "renders/ffmpeg_encoder.hpp"
 #include "renders/png_writer.hpp"
 
@@ -45,8 +47,6 @@ struct Job {
   uint64_t count = 0;
 };
 
-fs::path with_suffix(const fs::path& p, const char* suffix) { return fs::path(p.string() + suffix); }
-
 } // namespace
 
 struct VideoRecorder::Impl {
@@ -54,7 +54,9 @@ struct VideoRecorder::Impl {
   double frame_rate_sim = 0; // frames per simulated second
   std::unique_ptr<OffscreenRenderer> renderer;
   std::unique_ptr<FfmpegEncoder> encoder;
-  fs::path video_tmp, frames_tmp;
+  std::unique_ptr<io::AtomicFile> video_file; // ffmpeg writes its temporary
+  std::unique_ptr<io::AtomicDir> frames_out;
+  fs::path frames_tmp;
   int flange_qpos = -1;
   uint64_t next_frame = 0;
   bool finished = false;
@@ -117,9 +119,8 @@ struct VideoRecorder::Impl {
 
   void discard_output() {
     encoder.reset();
-    std::error_code ignored;
-    if (!video_tmp.empty()) fs::remove(video_tmp, ignored);
-    if (!frames_tmp.empty()) fs::remove_all(frames_tmp, ignored);
+    video_file.reset(); // removes the temporaries
+    frames_out.reset();
   }
 };
 
@@ -141,9 +142,8 @@ VideoRecorder::VideoRecorder(const mjModel* m, const VideoOptions& o) : impl_(st
     if (fs::exists(o.frames_dir) && !(fs::is_directory(o.frames_dir) && fs::is_empty(o.frames_dir))) {
       throw std::invalid_argument("video: frames directory " + o.frames_dir.string() + " exists and is not empty");
     }
-    s.frames_tmp = with_suffix(o.frames_dir, ".tmp");
-    fs::remove_all(s.frames_tmp);
-    fs::create_directory(s.frames_tmp);
+    s.frames_out = std::make_unique<io::AtomicDir>(o.frames_dir.string());
+    s.frames_tmp = s.frames_out->temp_path();
   }
 
   RenderOptions ro;
@@ -157,7 +157,7 @@ VideoRecorder::VideoRecorder(const mjModel* m, const VideoOptions& o) : impl_(st
     s.renderer = std::make_unique<OffscreenRenderer>(m, ro, o.camera);
     if (!o.path.empty()) {
       check_parent(o.path);
-      s.video_tmp = with_suffix(o.path, ".tmp");
+      s.video_file = std::make_unique<io::AtomicFile>(o.path.string());
       EncoderOptions eo;
       eo.width_px = o.width_px;
       eo.height_px = o.height_px;
@@ -165,7 +165,7 @@ VideoRecorder::VideoRecorder(const mjModel* m, const VideoOptions& o) : impl_(st
       eo.x264_preset = o.x264_preset;
       eo.crf = o.crf;
       eo.bottom_up = true;
-      s.encoder = std::make_unique<FfmpegEncoder>(s.video_tmp, eo);
+      s.encoder = std::make_unique<FfmpegEncoder>(s.video_file->temp_path(), eo);
     }
   } catch (...) {
     s.discard_output();
@@ -250,12 +250,9 @@ void VideoRecorder::finish() {
     if (s.encoder) {
       s.encoder->finish();
       s.encoder.reset();
-      fs::rename(s.video_tmp, s.options.path);
+      s.video_file->commit(); // ffmpeg wrote the temporary; rename it
     }
-    if (!s.frames_tmp.empty()) {
-      if (fs::exists(s.options.frames_dir)) fs::remove(s.options.frames_dir); // checked empty at start
-      fs::rename(s.frames_tmp, s.options.frames_dir);
-    }
+    if (s.frames_out) s.frames_out->commit(); // replaces an empty folder, checked at start
   } catch (...) {
     s.discard_output();
     s.finished = true;

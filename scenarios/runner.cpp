@@ -37,8 +37,10 @@ class ScenarioRun {
   ScenarioRun(const Scenario& s, const RunOptions& o) : s_(s), o_(o) {}
 
   RunResult run() {
+    check_run_bound(s_, o_.limits); // refuse before an hour of simulation, not after
     TwinConfig config = make_twin_config(s_);
     config.record_trace = o_.record_trace;
+    config.trace_sink = o_.trace_sink;
     try {
       twin_ = std::make_unique<Twin>(config);
     } catch (const std::invalid_argument& e) {
@@ -74,6 +76,11 @@ class ScenarioRun {
   }
 
   void cycle() {
+    // Guard for step kinds the static bound does not know (limits.cpp).
+    if (twin_->time_s() >= o_.limits.max_sim_s) {
+      throw ScenarioError(SourceLoc{s_.file, 0, 0}, fmt::format("simulated time reached the limit of {:g} s; raise it "
+                                                                "with --max-sim-s", o_.limits.max_sim_s));
+    }
     twin_->run_cycle();
     const Telemetry t = twin_->telemetry();
     r_.max_temperature_C = std::max(r_.max_temperature_C, t.temperature_C);

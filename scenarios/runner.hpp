@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "scenarios/limits.hpp"
 #include "scenarios/scenario.hpp"
 #include "twin/twin.hpp"
 
@@ -53,7 +54,11 @@ struct RunResult {
 };
 
 struct RunOptions {
-  bool record_trace = false;
+  bool record_trace = false;   // keep the trace in memory: RunResult::trace
+  // Stream the trace instead, row by row as the cycles run (memory flat with
+  // run length, issue 12); RunResult::trace stays empty.
+  std::function<void(const TraceRow&)> trace_sink;
+  Limits limits;               // checked before the run starts (check_run_bound)
   // Called after every IO-Link cycle (video frames, progress).
   std::function<void(const Twin&)> on_cycle;
 };
@@ -63,7 +68,8 @@ struct RunOptions {
 TwinConfig make_twin_config(const Scenario& scenario);
 
 // Throws ScenarioError for input the twin rejects (e.g. an invalid MJCF
-// load), citing the scenario line.
+// load), citing the scenario line, and for a scenario that could exceed
+// options.limits (before running).
 RunResult run_scenario(const Scenario& scenario, const RunOptions& options = {});
 
 } // namespace sreh

@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "io/text.hpp"
+
 namespace sreh {
 
 std::string SourceLoc::str() const {
@@ -11,8 +13,10 @@ std::string SourceLoc::str() const {
   return fmt::format("{}:{}:{}", file, line, column);
 }
 
+// Messages echo values from the file: control characters escaped, one line (issue 12).
 ScenarioError::ScenarioError(const SourceLoc& loc, const std::string& message)
-    : std::runtime_error(loc.str() + ": " + message), loc_(loc), message_(message) {}
+    : std::runtime_error(io::escape_control(loc.str() + ": " + message)), loc_(loc),
+      message_(io::escape_control(message)) {}
 
 std::string Range::str() const {
   if (exact) return fmt::format("{}", (min + max) / 2);

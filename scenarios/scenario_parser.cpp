@@ -20,7 +20,9 @@
 #include "scenarios/conformance_steps.hpp"
 #include "scenarios/isdu_value.hpp"
 #include "scenarios/snapshot.hpp"
+#include "twin/load_builder.hpp"
 #include "scenarios/yaml_reader.hpp"
+#include "scenarios/yaml_safety.hpp"
 
 namespace sreh {
 namespace {
@@ -158,7 +160,12 @@ class Parser {
       return NoLoad{};
     }
     // inertia_gcm2; the manual's parameter range is 0..15000 (6.2, 64.4), the physics allows more.
-    return InertiaLoad{r_.number(v, what, 0.0, 1e6)};
+    const double j = r_.number(v, what, 0.0, 1e6);
+    if (j > 0 && j < kMinInertiaGcm2) {
+      r_.fail(v, fmt::format("{}: {} is above 0 but below {} g cm^2, too small to model; use 0 for no load", what,
+                             v.Scalar(), kMinInertiaGcm2));
+    }
+    return InertiaLoad{j};
   }
 
   // Axis orientation (A-TWIN-24): {axis: vertical|horizontal} or {tilt_deg: T}.
@@ -486,14 +493,9 @@ class Parser {
 
 } // namespace
 
-Scenario parse_scenario_text(const std::string& yaml_text, const std::string& file, const std::string& base_dir) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(yaml_text);
-  } catch (const YAML::Exception& e) {
-    SourceLoc loc{file, e.mark.is_null() ? 0 : e.mark.line + 1, e.mark.is_null() ? 0 : e.mark.column + 1};
-    throw ScenarioError(loc, "YAML syntax: " + e.msg);
-  }
+Scenario parse_scenario_text(const std::string& yaml_text, const std::string& file, const std::string& base_dir,
+                             const Limits& limits) {
+  const YAML::Node root = detail::load_yaml_safely(yaml_text, file, limits);
   if (!root.IsDefined() || root.IsNull()) throw ScenarioError(SourceLoc{file, 1, 1}, "empty scenario (expected name, steps, ...)");
   try {
     return Parser(file, base_dir).parse(root);
@@ -503,13 +505,10 @@ Scenario parse_scenario_text(const std::string& yaml_text, const std::string& fi
   }
 }
 
-Scenario parse_scenario_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ScenarioError(SourceLoc{path, 0, 0}, "cannot open the scenario file");
-  std::ostringstream text;
-  text << in.rdbuf();
+Scenario parse_scenario_file(const std::string& path, const Limits& limits) {
+  const std::string text = detail::read_limited_file(path, limits, "scenario file");
   const fs::path parent = fs::path(path).parent_path();
-  return parse_scenario_text(text.str(), path, parent.string());
+  return parse_scenario_text(text, path, parent.string(), limits);
 }
 
 } // namespace sreh

@@ -4,17 +4,19 @@
 #pragma once
 #include <string>
 
+#include "scenarios/limits.hpp"
 #include "scenarios/scenario.hpp"
 
 namespace sreh {
 
 // Reads and parses a scenario file. Relative paths inside it (MJCF loads,
 // NVM images) are resolved against the file's folder.
-Scenario parse_scenario_file(const std::string& path);
+// Limits (file size, YAML nodes and depth) as in scenarios/limits.hpp.
+Scenario parse_scenario_file(const std::string& path, const Limits& limits = {});
 
 // Parses YAML text; `file` names it in messages, `base_dir` resolves
 // relative paths ("" = current directory).
 Scenario parse_scenario_text(const std::string& yaml_text, const std::string& file,
-                             const std::string& base_dir);
+                             const std::string& base_dir, const Limits& limits = {});
 
 } // namespace sreh

@@ -41,7 +41,10 @@ class YamlReader {
   // A number or [min, max]; a plain number x becomes [x - tol, x + tol].
   Range range(const YAML::Node& node, std::string_view what, double min, double max,
               bool integers, double tol = 0.0) const;
-  bool is_quoted(const YAML::Node& node) const { return node.Tag() == "!"; }
+  // Quoted, or tagged !!str: a text, never a number or a boolean (issue 12).
+  bool is_quoted(const YAML::Node& node) const {
+    return node.Tag() == "!" || node.Tag() == "tag:yaml.org,2002:str";
+  }
 
  private:
   std::string file_;

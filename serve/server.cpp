@@ -9,7 +9,7 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
-#include "scenarios/atomic_file.hpp"
+#include "io/atomic_file.hpp"
 #include "scenarios/runner.hpp"
 #include "scenarios/scenario_parser.hpp"
 #include "serve/http_server.hpp"
@@ -199,7 +199,7 @@ int run_serve(const ServeOptions& o, std::ostream& out, std::ostream& err) {
     for (int p = 1; p <= o.ports; ++p) {
       const auto image = hub->with_port(p, [](Hub::Port& port) { return port.twin.save_nvm(); });
       const std::string path = (fs::path(o.save_nvm_dir) / fmt::format("port{}.nvm", p)).string();
-      write_file_atomic(path, [&](std::ostream& f) {
+      io::write_file_atomic(path, [&](std::ostream& f) {
         f.write(reinterpret_cast<const char*>(image.data()), static_cast<std::streamsize>(image.size()));
       });
       err << "sreh-twin serve: saved " << path << "\n";

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ostream>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
+#include "io/atomic_file.hpp"
 #include "sizing/output.hpp"
 
 #if SREH_SIZING_WITH_REPORT
@@ -67,11 +69,9 @@ std::string row(const std::string& name, const std::string& value) {
 }
 
 std::filesystem::path write_index(const std::filesystem::path& dir, const std::string& html) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir)) throw std::runtime_error("cannot create report directory " + dir.string());
+  io::make_output_folder(dir.string());
   const std::filesystem::path index = dir / "index.html";
-  write_file_atomically(index, html);
+  io::write_file_atomic(index.string(), [&](std::ostream& out) { out << html; });
   return index;
 }
 

@@ -7,7 +7,8 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
-#include "scenarios/scenario_parser.hpp"
+#include "io/output_path.hpp"
+#include "scenarios/load_file.hpp"
 #include "sizing/output.hpp"
 #include "sizing/report.hpp"
 
@@ -41,27 +42,10 @@ std::span<const OptionSpec<SizeOptions>> size_option_table() { return kSizeOptio
 // the same: keys a scenario needs are appended at the end, which keeps every
 // line number of the file.
 LoadSpec load_from_file(const std::string& path, std::string_view option) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw SizingInputError(fmt::format("{} {}: cannot read the file", option, path));
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  std::string text = buffer.str();
-  YAML::Node root;
   try {
-    root = YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    throw SizingInputError(fmt::format("{}:{}:{}: {}", path, e.mark.line + 1, e.mark.column + 1, e.msg));
-  }
-  if (!root.IsMap() || !root["load"]) {
-    throw SizingInputError(
-        fmt::format("{}: expected a top-level 'load:' key (e.g. load: {{disk: {{mass_kg: 0.4, radius_m: 0.1}}}})", path));
-  }
-  if (!root["name"]) text += "\nname: load from " + std::filesystem::path(path).filename().string() + "\n";
-  if (!root["steps"]) text += "\nsteps:\n  - comment: sizing load\n"; // a scenario needs one step
-  try {
-    return parse_scenario_text(text, path, std::filesystem::path(path).parent_path().string()).load;
+    return parse_load_file(path); // the YAML safety layer and limits of scenarios (issue 12)
   } catch (const ScenarioError& e) {
-    throw SizingInputError(e.what());
+    throw SizingInputError(fmt::format("{} {}", option, e.what()));
   }
 }
 
@@ -92,8 +76,13 @@ SizingRequest make_request(const SizeOptions& a) {
 
 SizeOutcome run_size(const SizeOptions& a) {
   SizeOutcome out;
-  out.request = make_request(a);
   if (!a.report.empty() && !reports_available()) throw SizingInputError("--report: this build has no renders");
+  try { // the one output rule, before any work (issue 12)
+    io::check_outputs({{"--report", a.report, io::OutputKind::Folder}}, {a.load});
+  } catch (const io::PathError& e) {
+    throw SizingInputError(e.what());
+  }
+  out.request = make_request(a);
   out.result = size(out.request);
   if (!a.report.empty()) {
     try {

@@ -6,7 +6,8 @@
 
 #include <fmt/format.h>
 
-#include "scenarios/atomic_file.hpp"
+#include "io/atomic_file.hpp"
+#include "io/output_path.hpp"
 #include "sizing/report.hpp"
 
 namespace sreh::sizing {
@@ -75,13 +76,15 @@ SweepRequest make_sweep_request(const SweepOptions& a) {
 }
 
 SweepResult run_sweep_command(const SweepOptions& a, const SweepRequest& rq) {
-  if (!a.csv.empty() && !output_folder_exists(a.csv)) {
-    throw SizingInputError(fmt::format("--csv {}: the folder does not exist", a.csv));
-  }
   if (!a.report.empty() && !reports_available()) throw SizingInputError("--report: this build has no renders");
+  try { // the one output rule, before any work (issue 12)
+    io::check_outputs({{"--csv", a.csv, io::OutputKind::File}, {"--report", a.report, io::OutputKind::Folder}}, {});
+  } catch (const io::PathError& e) {
+    throw SizingInputError(e.what());
+  }
   SweepResult result = run_sweep(rq);
   try {
-    if (!a.csv.empty()) write_file_atomic(a.csv, [&](std::ostream& out) { write_sweep_csv(out, result); });
+    if (!a.csv.empty()) io::write_file_atomic(a.csv, [&](std::ostream& out) { write_sweep_csv(out, result); });
     if (!a.report.empty()) {
       const std::vector<double> targets = a.targets_s.empty() ? default_targets_s(result) : a.targets_s;
       write_sweep_report(a.report, rq, result, targets);

@@ -15,7 +15,8 @@
 #include <nlohmann/json.hpp>
 
 #include "device_logic/parameter_table.hpp"
-#include "scenarios/atomic_file.hpp"
+#include "io/atomic_file.hpp"
+#include "io/output_path.hpp"
 #include "tools/command.hpp"
 #include "tools/iodd_export.hpp"
 
@@ -283,9 +284,8 @@ int show_command(const ParamsArgs& a) {
 // ----------------------------------------------------------------- export
 
 int export_command(const ParamsArgs& a) {
-  if (!output_folder_exists(a.iodd_path))
-    throw InputError(fmt::format("--iodd {}: the folder does not exist", a.iodd_path));
-  write_file_atomic(a.iodd_path, [](std::ostream& os) { os << iodd_document(SREH_VERSION); });
+  io::check_outputs({{"--iodd", a.iodd_path, io::OutputKind::File}}, {});
+  io::write_file_atomic(a.iodd_path, [](std::ostream& os) { os << iodd_document(SREH_VERSION); });
   return 0;
 }
 

@@ -12,7 +12,10 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "scenarios/atomic_file.hpp"
+#include "io/atomic_file.hpp"
+#include "io/output_path.hpp"
+#include "io/text.hpp"
+#include "scenarios/limits.hpp"
 #include "scenarios/result_json.hpp"
 #include "scenarios/runner.hpp"
 #include "scenarios/scenario_parser.hpp"
@@ -27,6 +30,9 @@
 namespace sreh::tools {
 namespace {
 
+constexpr int kMinVideoSide = 16;
+constexpr int kMaxVideoSide = 4096;
+
 struct RunArgs {
   std::string scenario;
   std::string trace;
@@ -40,6 +46,9 @@ struct RunArgs {
   std::string camera = "default";
   std::string report;
   std::string save_nvm;
+  Limits limits;
+  uint64_t max_trace_mb = 2048;
+  uint64_t max_file_mb = 4;
 };
 
 // Progress on stderr, only for a person watching (a TTY) and only once a run
@@ -69,32 +78,42 @@ class Progress {
   bool shown_ = false;
 };
 
-void check_output(const std::string& path, const char* option) {
-  if (!path.empty() && !output_folder_exists(path)) {
-    throw InputError(fmt::format("{} {}: the folder does not exist", option, path));
+// --trace: rows go to the file's temporary as the run makes them (memory
+// flat with run length, issue 12); the same bytes as write_trace_csv over the
+// whole trace in memory. Committed only when the run finished.
+class TraceStream {
+ public:
+  TraceStream(const std::string& path, int every, uint64_t max_bytes)
+      : file_(path), every_(static_cast<uint64_t>(every)), max_bytes_(max_bytes) {
+    write_trace_header(file_.stream());
   }
-}
+  void row(const TraceRow& r) {
+    if (rows_++ % every_ != 0) return;
+    write_trace_row(file_.stream(), r);
+    if (static_cast<uint64_t>(file_.stream().tellp()) > max_bytes_) {
+      throw InputError(fmt::format("--trace {}: the trace is larger than {} MB; raise the limit with --max-trace-mb "
+                                   "or keep fewer rows with --trace-every", file_.path(), max_bytes_ >> 20));
+    }
+  }
+  void commit() { file_.commit(); }
 
-void write_outputs(const RunArgs& a, const RunResult& r) {
-  try {
-    if (!a.trace.empty()) {
-      std::vector<TraceRow> rows;
-      for (std::size_t i = 0; i < r.trace.size(); i += static_cast<std::size_t>(a.trace_every)) rows.push_back(r.trace[i]);
-      write_file_atomic(a.trace, [&](std::ostream& out) { write_trace_csv(out, rows); });
-    }
-    if (!a.save_nvm.empty()) {
-      write_file_atomic(a.save_nvm, [&](std::ostream& out) {
-        out.write(reinterpret_cast<const char*>(r.nvm_image.data()), static_cast<std::streamsize>(r.nvm_image.size()));
-      });
-    }
-  } catch (const std::runtime_error& e) {
-    throw InputError(e.what());
-  }
+ private:
+  io::AtomicFile file_;
+  uint64_t every_;
+  uint64_t max_bytes_;
+  uint64_t rows_ = 0;
+};
+
+void write_nvm(const RunArgs& a, const RunResult& r) {
+  if (a.save_nvm.empty()) return;
+  io::write_file_atomic(a.save_nvm, [&](std::ostream& out) {
+    out.write(reinterpret_cast<const char*>(r.nvm_image.data()), static_cast<std::streamsize>(r.nvm_image.size()));
+  });
 }
 
 void print_summary(const RunResult& r) {
-  std::cout << (r.passed ? "PASS" : "FAIL") << "  " << r.name << "\n";
-  for (const auto& f : r.failures) std::cout << "  " << f << "\n";
+  std::cout << (r.passed ? "PASS" : "FAIL") << "  " << io::escape_control(r.name) << "\n";
+  for (const auto& f : r.failures) std::cout << "  " << io::escape_control(f) << "\n";
   std::size_t passed = 0;
   for (const auto& c : r.checks) passed += c.passed ? 1 : 0;
   std::cout << fmt::format("  {} of {} checks held, {} moves, {:.3f} s simulated{}\n", passed, r.checks.size(),
@@ -142,12 +161,9 @@ VideoOptions video_options(const RunArgs& a) {
   v.frames_dir = a.frames;
   v.fps = a.fps;
   v.slowmo = a.slowmo;
-  const auto x = a.size.find('x');
+  const auto x = a.size.find('x'); // checked by check_size
   v.width_px = std::stoi(a.size.substr(0, x));
   v.height_px = std::stoi(a.size.substr(x + 1));
-  if (v.width_px % 2 != 0 || v.height_px % 2 != 0) {
-    throw InputError(fmt::format("--size {}: width and height must be even (H.264, yuv420p)", a.size));
-  }
   if (a.camera == "top") v.camera = CameraSpec::top();
   return v;
 }
@@ -172,28 +188,75 @@ void write_report_dir(const RunArgs& a, const RunResult& r) {
 }
 #endif
 
-int run_command(const RunArgs& a) {
+// Video size: even (H.264 yuv420p) and within what the off-screen renderer
+// can allocate (A-RENDERS-*: 16 .. 4096 pixels a side).
+void check_size(const std::string& size) {
+  if (!std::regex_match(size, std::regex("[1-9][0-9]{1,4}x[1-9][0-9]{1,4}"))) {
+    throw InputError(fmt::format("--size {}: expected WIDTHxHEIGHT, e.g. 1280x720", size));
+  }
+  const auto x = size.find('x');
+  const int w = std::stoi(size.substr(0, x));
+  const int h = std::stoi(size.substr(x + 1));
+  if (w < kMinVideoSide || h < kMinVideoSide || w > kMaxVideoSide || h > kMaxVideoSide) {
+    throw InputError(fmt::format("--size {}: width and height must be {} .. {} pixels", size, kMinVideoSide, kMaxVideoSide));
+  }
+  if (w % 2 != 0 || h % 2 != 0) {
+    throw InputError(fmt::format("--size {}: width and height must be even (H.264, yuv420p)", size));
+  }
+}
+
+// The files a run reads: outputs may not be any of them.
+std::vector<std::string> inputs_of(const RunArgs& a, const Scenario& s) {
+  std::vector<std::string> in{a.scenario};
+  if (s.device.nvm_image_path) in.push_back(*s.device.nvm_image_path);
+  if (const auto* m = std::get_if<MjcfLoad>(&s.load)) in.push_back(m->path);
+  return in;
+}
+
+int run_command(RunArgs a) {
 #ifndef SREH_WITH_RENDER
   if (!a.video.empty() || !a.frames.empty()) throw InputError("--video: built without rendering (SREH_WITH_RENDER=OFF)");
   if (!a.report.empty()) throw InputError("--report: built without rendering (SREH_WITH_RENDER=OFF)");
 #endif
-  if (!std::regex_match(a.size, std::regex("[1-9][0-9]{1,4}x[1-9][0-9]{1,4}"))) {
-    throw InputError(fmt::format("--size {}: expected WIDTHxHEIGHT, e.g. 1280x720", a.size));
-  }
-  check_output(a.trace, "--trace");
-  check_output(a.save_nvm, "--save-nvm");
-  check_output(a.video, "--video");
-  check_output(a.report, "--report");
+  // Everything a user can get wrong is checked before the run (issue 12).
+  check_size(a.size);
   if (a.camera != "default" && a.camera != "top") {
     throw InputError(fmt::format("--camera {}: expected default or top", a.camera));
   }
+  a.limits.max_trace_bytes = a.max_trace_mb << 20;
+  a.limits.max_file_bytes = static_cast<std::size_t>(a.max_file_mb << 20);
+  Scenario scenario;
+  try {
+    scenario = parse_scenario_file(a.scenario, a.limits);
+    check_run_bound(scenario, a.limits);
+  } catch (const ScenarioError& e) {
+    throw InputError(e.what());
+  }
+  io::check_outputs({{"--trace", a.trace, io::OutputKind::File},
+                     {"--save-nvm", a.save_nvm, io::OutputKind::File},
+                     {"--video", a.video, io::OutputKind::File},
+                     {"--frames", a.frames, io::OutputKind::EmptyFolder},
+                     {"--report", a.report, io::OutputKind::Folder}},
+                    inputs_of(a, scenario));
 
   RunResult result;
+  std::optional<TraceStream> trace;
+  if (!a.trace.empty()) {
+    try {
+      trace.emplace(a.trace, a.trace_every, a.limits.max_trace_bytes);
+    } catch (const std::runtime_error& e) {
+      throw InputError(fmt::format("--trace {}: {}", a.trace, e.what()));
+    }
+  }
+  // The report plots the whole trace, so it keeps it in memory (and --trace
+  // is written from there after the run, the same bytes); --trace alone streams.
+  const bool in_memory = !a.report.empty();
   try {
-    const Scenario scenario = parse_scenario_file(a.scenario);
     Progress progress(isatty(STDERR_FILENO) != 0);
     RunOptions options;
-    options.record_trace = !a.trace.empty() || !a.report.empty();
+    options.limits = a.limits;
+    options.record_trace = in_memory;
+    if (trace && !in_memory) options.trace_sink = [&](const TraceRow& row) { trace->row(row); };
 #ifdef SREH_WITH_RENDER
     std::optional<VideoHook> video;
     if (!a.video.empty() || !a.frames.empty()) video.emplace(video_options(a));
@@ -210,12 +273,25 @@ int run_command(const RunArgs& a) {
   } catch (const ScenarioError& e) {
     throw InputError(e.what());
   }
-  write_outputs(a, result);
+  try {
+    if (trace) {
+      if (in_memory) {
+        for (const TraceRow& row : result.trace) trace->row(row);
+      }
+      trace->commit();
+    }
+    write_nvm(a, result);
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    throw InputError(e.what());
+  }
 #ifdef SREH_WITH_RENDER
   if (!a.report.empty()) write_report_dir(a, result);
 #endif
   if (a.json) {
-    std::cout << to_json(result).dump(2) << "\n";
+    // Names and texts come from the file: invalid UTF-8 is replaced, never an internal error.
+    std::cout << to_json(result).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
   } else {
     print_summary(result);
   }
@@ -228,18 +304,31 @@ SREH_REGISTER_COMMAND(10, [](CLI::App& app, int& exit_code) {
   auto args = std::make_shared<RunArgs>();
   CLI::App* cmd = app.add_subcommand("run", "Simulate a scenario and check its expectations (exit 0 held, 1 failed, 2 bad input)");
   cmd->add_option("scenario", args->scenario, "Scenario file (YAML, see scenarios/README.md)")->required();
-  cmd->add_option("--trace", args->trace, "Write a CSV trace, one row per IO-Link cycle");
+  cmd->add_option("--trace", args->trace, "Write a CSV trace, one row per IO-Link cycle (streamed to disk)");
   cmd->add_option("--trace-every", args->trace_every, "Keep every Nth cycle in the trace")->check(CLI::Range(1, 1000000));
   cmd->add_flag("--json", args->json, "Print one JSON object with the results on stdout");
   cmd->add_option("--video", args->video, "Render an MP4 video of the run");
   cmd->add_option("--fps", args->fps, "Video frames per second")->check(CLI::Range(1, 240));
-  cmd->add_option("--size", args->size, "Video size WIDTHxHEIGHT (even numbers)")->capture_default_str();
+  cmd->add_option("--size", args->size, "Video size WIDTHxHEIGHT (even numbers, 16 .. 4096)")->capture_default_str();
   cmd->add_option("--slowmo", args->slowmo, "Play the video this many times slower than simulated time")
       ->check(CLI::Range(0.01, 1000.0));
-  cmd->add_option("--frames", args->frames, "Also write PNG frames into this folder");
+  cmd->add_option("--frames", args->frames, "Also write PNG frames into this folder (absent or empty)");
   cmd->add_option("--camera", args->camera, "Camera: default (frames module and load) or top")->capture_default_str();
   cmd->add_option("--report", args->report, "Write an HTML report with plots into this folder");
   cmd->add_option("--save-nvm", args->save_nvm, "Save the device's non-volatile memory at the end to this file");
+  // Limits (issue 12, scenarios/README.md "Limits"): exceeding one is exit 2.
+  Limits& l = args->limits;
+  cmd->add_option("--max-sim-s", l.max_sim_s, "Limit: simulated time of the run, s")
+      ->capture_default_str()->check(CLI::Range(0.0, 1e9));
+  cmd->add_option("--max-steps", l.max_steps, "Limit: executed steps (repeats unrolled)")->capture_default_str();
+  cmd->add_option("--max-checks", l.max_checks, "Limit: recorded checks (repeats unrolled)")->capture_default_str();
+  cmd->add_option("--max-trace-mb", args->max_trace_mb, "Limit: size of the --trace file, MB")
+      ->capture_default_str()->check(CLI::Range(uint64_t{1}, uint64_t{1} << 30));
+  cmd->add_option("--max-file-mb", args->max_file_mb, "Limit: size of the scenario file, MB")
+      ->capture_default_str()->check(CLI::Range(uint64_t{1}, uint64_t{1} << 20));
+  cmd->add_option("--max-yaml-nodes", l.max_yaml_nodes, "Limit: YAML nodes once aliases are expanded")->capture_default_str();
+  cmd->add_option("--max-yaml-depth", l.max_yaml_depth, "Limit: nesting depth of YAML lists / mappings")
+      ->capture_default_str()->check(CLI::Range(1, 10000));
   cmd->callback([args, &exit_code] { exit_code = run_command(*args); });
 });
 

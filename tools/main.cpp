@@ -1,10 +1,15 @@
 // sreh-twin: the command line of the SREH-50-IOL digital twin.
-// Exit codes (interfaces.md): 0 ok, 1 expectation failed / infeasible, 2 bad input.
+// Exit codes (interfaces.md, README): 0 ok, 1 expectation failed /
+// infeasible, 2 bad input (file, option, limit), 3 internal error (a bug),
+// 130 / 143 interrupted by SIGINT / SIGTERM (temporary files removed).
 #include <algorithm>
 #include <exception>
 #include <iostream>
 #include <vector>
 
+#include "io/interrupt.hpp"
+#include "io/output_path.hpp"
+#include "io/text.hpp"
 #include "tools/command.hpp"
 #include "twin/models_dir.hpp"
 
@@ -22,9 +27,23 @@ bool register_command(int order, CommandSetup setup) {
 }
 } // namespace sreh::tools
 
+namespace {
+constexpr const char* kExitCodes =
+    "Exit codes: 0 all held / feasible, 1 a check failed / infeasible, 2 bad input (file, option or limit; "
+    "one line on stderr), 3 internal error (a bug: please report), 130 / 143 interrupted by SIGINT / SIGTERM "
+    "(no output written, temporary files removed).";
+
+// Error messages echo user input: one line, control characters escaped.
+int fail(int code, const std::string& what) {
+  std::cerr << "sreh-twin: " << sreh::io::escape_control(what) << "\n";
+  return code;
+}
+} // namespace
+
 int main(int argc, char** argv) {
   using namespace sreh::tools;
   CLI::App app{"sreh-twin: digital twin of the Afag SREH-50-IOL smart rotary module"};
+  app.footer(kExitCodes);
   // --version: the release and where this installation finds its models (issue 13).
   app.set_version_flag("--version", [] {
     std::string models;
@@ -36,6 +55,7 @@ int main(int argc, char** argv) {
     return std::string("sreh-twin ") + SREH_VERSION + " (models: " + models + ")";
   });
   app.require_subcommand(1);
+  sreh::io::install_interrupt_handlers();
   int exit_code = 0;
   auto commands = registry();
   std::stable_sort(commands.begin(), commands.end(),
@@ -50,14 +70,18 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "sreh-twin: " << e.what() << "\n";
-    return 2;
+    return fail(2, e.what());
+  } catch (const sreh::io::Interrupted& e) {
+    return fail(e.exit_code(), e.what());
   } catch (const InputError& e) {
-    std::cerr << "sreh-twin: " << e.what() << "\n";
-    return 2;
+    if (const int s = sreh::io::interrupt_signal()) return fail(128 + s, sreh::io::Interrupted(s).what());
+    return fail(2, e.what());
+  } catch (const sreh::io::PathError& e) {
+    return fail(2, e.what());
   } catch (const std::exception& e) {
-    std::cerr << "sreh-twin: internal error: " << e.what() << "\n";
-    return 3;
+    // A signal also stops child processes (ffmpeg): their failure is the interrupt.
+    if (const int s = sreh::io::interrupt_signal()) return fail(128 + s, sreh::io::Interrupted(s).what());
+    return fail(3, std::string("internal error: ") + e.what());
   }
   return exit_code;
 }

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "device_logic/units.hpp"
+#include "twin/mjcf_checks.hpp"
 
 namespace sreh {
 namespace {
@@ -117,6 +118,11 @@ std::string arm_xml(const ArmLoad& l, const std::string& origin) {
 
 std::string inertia_xml(const InertiaLoad& l, const std::string& origin) {
   require_non_negative(l.inertia_gcm2, "inertia_gcm2", origin);
+  if (l.inertia_gcm2 > 0 && l.inertia_gcm2 < kMinInertiaGcm2) {
+    // Below this the disk's radius and mass underflow (1e-320 gave a NaN mass).
+    throw std::invalid_argument(origin + ": inertia_gcm2 " + num(l.inertia_gcm2) + " is above 0 but below " +
+                                num(kMinInertiaGcm2) + " g cm^2, too small to model; use 0 for no load");
+  }
   if (l.inertia_gcm2 == 0) {
     return {};
   }
@@ -193,6 +199,9 @@ MjcfParts mjcf_load_parts(const MjcfLoad& l, const std::string& module_assets) {
     if (end == std::string::npos) break; // left for MuJoCo's parser to report
     blank_out(text, at, end + 3);
   }
+  // Includes relative to the including file; masses checked (issue 12).
+  text = expand_mjcf_includes(text, std::filesystem::path(path).parent_path().string(), path);
+  check_mjcf_inertials(text, path);
   const std::string base_assets = "<asset>" + one_line(module_assets) + "</asset>";
   MjcfParts parts;
   std::string validation;
@@ -219,7 +228,8 @@ MjcfParts mjcf_load_parts(const MjcfLoad& l, const std::string& module_assets) {
     validation = "<mujoco model=\"load\"><compiler angle=\"radian\" autolimits=\"true\"/>" + base_assets +
                  "<worldbody>" + text + "\n</worldbody></mujoco>";
   }
-  compile_mjcf(validation, path); // throws with MuJoCo's message and the file's line
+  const MjModelPtr alone = compile_mjcf(validation, path); // throws with MuJoCo's message and the file's line
+  check_compiled_inertials(alone.get(), path); // masses MuJoCo derived from geoms (density x volume)
   return parts;
 }
 

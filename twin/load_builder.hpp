@@ -13,6 +13,8 @@ namespace sreh {
 
 // Manual 6.2, index 64..71 subindex 4: load range 0 .. 15'000 g cm^2.
 inline constexpr double kMaxLoad_gcm2 = 15000.0;
+// Smallest non-zero InertiaLoad: below it the modelled disk underflows (A-TWIN-5, issue 12).
+inline constexpr double kMinInertiaGcm2 = 1e-6;
 
 // models/sreh50.xml of this source tree.
 std::string default_module_model_path();

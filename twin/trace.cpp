@@ -28,36 +28,42 @@ void put_hex(std::string& line, const std::array<uint8_t, N>& bytes) {
 
 } // namespace
 
-void write_trace_csv(std::ostream& out, const std::vector<TraceRow>& rows) {
+void write_trace_header(std::ostream& out) {
   out << "t_s,state,setpoint_deg,position_deg,tracking_error_deg,velocity_dps,torque_Nm,supply_V,temperature_C,"
          "error_code,warning_code,pd_out_hex,pd_in_hex,led,torque_limit_Nm,external_torque_Nm,iolink_led\n";
+}
+
+void write_trace_row(std::ostream& out, const TraceRow& r) {
   std::string line;
-  for (const TraceRow& r : rows) {
-    line.clear();
-    put_fixed(line, r.t_s, 4);
-    line.append(state_name(r.state));
-    line.push_back(',');
-    put_fixed(line, r.setpoint_deg, 6);
-    put_fixed(line, r.position_deg, 6);
-    put_fixed(line, r.tracking_error_deg, 6);
-    put_fixed(line, r.velocity_dps, 3);
-    put_fixed(line, r.torque_Nm, 6);
-    put_fixed(line, r.supply_V, 4);
-    put_fixed(line, r.temperature_C, 4);
-    line.append(std::to_string(r.error_code));
-    line.push_back(',');
-    line.append(std::to_string(r.warning_code));
-    line.push_back(',');
-    put_hex(line, r.pd_out);
-    put_hex(line, r.pd_in);
-    line.append(led_name(r.led));
-    line.push_back(',');
-    put_fixed(line, r.torque_limit_Nm, 6);
-    put_fixed(line, r.external_torque_Nm, 6);
-    line.append(iolink_led_name(r.iolink_led));
-    line.push_back('\n');
-    out << line;
-  }
+  line.reserve(192);
+  put_fixed(line, r.t_s, 4);
+  line.append(state_name(r.state));
+  line.push_back(',');
+  put_fixed(line, r.setpoint_deg, 6);
+  put_fixed(line, r.position_deg, 6);
+  put_fixed(line, r.tracking_error_deg, 6);
+  put_fixed(line, r.velocity_dps, 3);
+  put_fixed(line, r.torque_Nm, 6);
+  put_fixed(line, r.supply_V, 4);
+  put_fixed(line, r.temperature_C, 4);
+  line.append(std::to_string(r.error_code));
+  line.push_back(',');
+  line.append(std::to_string(r.warning_code));
+  line.push_back(',');
+  put_hex(line, r.pd_out);
+  put_hex(line, r.pd_in);
+  line.append(led_name(r.led));
+  line.push_back(',');
+  put_fixed(line, r.torque_limit_Nm, 6);
+  put_fixed(line, r.external_torque_Nm, 6);
+  line.append(iolink_led_name(r.iolink_led));
+  line.push_back('\n');
+  out << line;
+}
+
+void write_trace_csv(std::ostream& out, const std::vector<TraceRow>& rows) {
+  write_trace_header(out);
+  for (const TraceRow& r : rows) write_trace_row(out, r);
 }
 
 } // namespace sreh

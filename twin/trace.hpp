@@ -37,5 +37,9 @@ struct TraceRow {
 
 // Writes the CSV header and rows (interfaces.md column order first).
 void write_trace_csv(std::ostream& out, const std::vector<TraceRow>& rows);
+// The same bytes in pieces, for streaming a trace while it is made:
+// header once, then one call per row (write_trace_csv is exactly this).
+void write_trace_header(std::ostream& out);
+void write_trace_row(std::ostream& out, const TraceRow& row);
 
 } // namespace sreh

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "device_logic/units.hpp"
+#include "io/interrupt.hpp"
 #include "twin/firmware_transfer.hpp"
 #include "twin/plant.hpp"
 
@@ -102,7 +103,8 @@ struct Twin::Impl {
     row.pd_in = last_pd_in;
     row.led = device.powered() ? tel.led : LedColor::Off;
     row.iolink_led = device.io_link_led();
-    trace.push_back(row);
+    if (config.trace_sink) config.trace_sink(row); // streamed: memory flat with run length (issue 12)
+    else trace.push_back(row);
   }
 
   void update_visuals() {
@@ -232,6 +234,7 @@ void Twin::power_off_for(double off_s, double turn_deg) {
 }
 
 void Twin::run_cycle() {
+  io::throw_if_interrupted(); // SIGINT / SIGTERM: unwind so outputs' temporaries go (issue 12)
   Impl& s = *impl_;
   const PdOutFrame out_frame = encode(s.pd_out);
   if (s.turning) { // a hand turns the flange evenly (manual 4.1)
@@ -265,7 +268,7 @@ void Twin::run_cycle() {
   s.collect_moves();
   s.max_tracking_error_deg = std::max(s.max_tracking_error_deg, s.device.take_peak_tracking_error_deg());
   s.update_visuals();
-  if (s.config.record_trace) s.record_row(out_frame);
+  if (s.config.record_trace || s.config.trace_sink) s.record_row(out_frame);
 }
 
 uint64_t Twin::cycles() const { return impl_->cycles; }

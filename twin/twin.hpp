@@ -3,6 +3,7 @@
 // data every IO-Link cycle. Deterministic: same inputs, same trace.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -54,7 +55,10 @@ struct TwinConfig {
   double cycle_s = 0.002;        // IO-Link master cycle at the start; an integer multiple of physics_dt_s,
                                  // 0.002 .. 0.1328 s (manual 1, IO-Link MasterCycleTime; A-LINK-2)
   std::optional<std::vector<uint8_t>> nvm_image; // saved memory; factory-new otherwise
-  bool record_trace = true;
+  bool record_trace = true;       // keep every row in memory: trace()
+  // When set, every row goes here instead (streaming; trace() stays empty),
+  // so memory stays flat however long the run (issue 12).
+  std::function<void(const TraceRow&)> trace_sink;
 };
 
 class Plant; // twin/plant.hpp

@@ -1,0 +1,38 @@
+// libFuzzer target: ISDU requests (manual chapter 6) on a factory-new device.
+// The input is a sequence of requests: op (bit 0: write), index (2 bytes),
+// subindex, length, data. Every answer is either data or an IO-Link error
+// code; a write answered with an error leaves the device unchanged (its
+// non-volatile memory image is the same before and after).
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <span>
+#include <vector>
+
+#include "device_logic/device.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  sreh::Device device;
+  const sreh::SensorReadings sensors{};
+  std::size_t i = 0;
+  int requests = 0;
+  while (i + 5 <= size && requests++ < 64) {
+    const uint8_t op = data[i];
+    const uint16_t index = static_cast<uint16_t>(data[i + 1] << 8 | data[i + 2]);
+    const uint8_t sub = data[i + 3];
+    const std::size_t len = std::min<std::size_t>(data[i + 4], size - i - 5);
+    const std::span<const uint8_t> payload(data + i + 5, len);
+    i += 5 + len;
+    if (op & 1) {
+      const std::vector<uint8_t> before = device.save_nvm();
+      const sreh::IsduResult r = device.isdu_write(index, sub, payload);
+      if (!r.ok() && (r.error & 0xFF00) != 0x8000) std::abort(); // error codes are 0x80xx
+      if (!r.ok() && device.save_nvm() != before) std::abort();   // refused: unchanged
+    } else {
+      const sreh::IsduResult r = device.isdu_read(index, sub);
+      if (!r.ok() && (!r.data.empty() || (r.error & 0xFF00) != 0x8000)) std::abort();
+    }
+    if (op & 2) device.tick(1e-4, sensors); // time passes between requests
+  }
+  return 0;
+}
