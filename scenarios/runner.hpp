@@ -58,6 +58,8 @@ struct RunOptions {
   bool record_trace = false;
   // Called after every IO-Link cycle (video frames, progress).
   std::function<void(const Twin&)> on_cycle;
+  // Called when a step begins (the video overlay names it).
+  std::function<void(const Step&)> on_step;
 };
 
 // The twin a scenario describes (load, world, supply, thermal, clocks, NVM).

@@ -20,7 +20,10 @@
 #include "twin/plant.hpp"
 #include "twin/trace.hpp"
 #ifdef SREH_WITH_RENDER
+#include "device_logic/units.hpp"
+#include "renders/ffmpeg_encoder.hpp"
 #include "renders/report.hpp"
+#include "renders/run_recording.hpp"
 #include "renders/video.hpp"
 #endif
 
@@ -35,7 +38,7 @@ struct RunArgs {
   std::string video;
   int fps = 30;
   std::string size = "1280x720";
-  double slowmo = 1.0;
+  double slowmo = 0; // 0: automatic time scaling
   std::string frames;
   std::string camera = "default";
   std::string report;
@@ -105,16 +108,17 @@ void print_summary(const RunResult& r) {
 }
 
 #ifdef SREH_WITH_RENDER
-// Video frames are taken on IO-Link cycle boundaries (issue 7), by integer
-// frame index inside the recorder; the recorder is made when the twin exists.
+// The run is recorded once per IO-Link cycle and rendered after it, when the
+// moves are known: the time map slows every move down and compresses idle
+// stretches (issue 16), unless --slowmo fixes one factor.
 class VideoHook {
  public:
-  explicit VideoHook(VideoOptions options) : options_(std::move(options)) {}
+  void on_step(const Step& step) { step_ = step.number + " " + step.kind; }
   void on_cycle(const Twin& twin) {
     const Plant& plant = twin.plant();
-    if (!recorder_) recorder_ = std::make_unique<VideoRecorder>(plant.model(), options_);
-    if (!recorder_->wants_frame(twin.time_s())) return;
+    if (!recording_) recording_ = std::make_unique<RunRecording>(plant.model());
     const Telemetry t = twin.telemetry();
+    const ProcessDataOut& pd = twin.pd_out();
     FrameInfo info;
     info.t_s = twin.time_s();
     info.state = t.state;
@@ -125,15 +129,19 @@ class VideoHook {
     info.warning_code = t.warning_code;
     info.led = t.led;
     info.ghost_joint_rad = plant.ghost_angle_rad();
-    recorder_->add_frame(plant.model(), plant.data(), info);
+    info.step = step_;
+    info.target_deg = wire_counts_to_deg(pd.target_position);
+    info.parameter_set = pd.parameter_set;
+    recording_->add(plant.data(), info, t.velocity_dps, t.moving || t.settling);
   }
-  void finish() {
-    if (recorder_) recorder_->finish();
+  VideoSummary render(const VideoOptions& options, bool fixed_slowmo) const {
+    if (!recording_) throw std::runtime_error("video: the run has no cycle to show");
+    return recording_->render(options, fixed_slowmo);
   }
 
  private:
-  VideoOptions options_;
-  std::unique_ptr<VideoRecorder> recorder_;
+  std::string step_;
+  std::unique_ptr<RunRecording> recording_;
 };
 
 VideoOptions video_options(const RunArgs& a) {
@@ -141,7 +149,7 @@ VideoOptions video_options(const RunArgs& a) {
   v.path = a.video;
   v.frames_dir = a.frames;
   v.fps = a.fps;
-  v.slowmo = a.slowmo;
+  v.slowmo = a.slowmo > 0 ? a.slowmo : 1.0;
   const auto x = a.size.find('x');
   v.width_px = std::stoi(a.size.substr(0, x));
   v.height_px = std::stoi(a.size.substr(x + 1));
@@ -185,6 +193,11 @@ int run_command(const RunArgs& a) {
   check_output(a.trace, "--trace");
   check_output(a.save_nvm, "--save-nvm");
   check_output(a.video, "--video");
+#ifdef SREH_WITH_RENDER
+  if (!a.video.empty() && !container_for(a.video)) {
+    throw InputError(fmt::format("--video {}: the extension must be .mp4, .webm or .gif", a.video));
+  }
+#endif
   check_output(a.report, "--report");
   if (a.camera != "default" && a.camera != "top") {
     throw InputError(fmt::format("--camera {}: expected default or top", a.camera));
@@ -198,13 +211,20 @@ int run_command(const RunArgs& a) {
     options.record_trace = !a.trace.empty() || !a.report.empty();
 #ifdef SREH_WITH_RENDER
     std::optional<VideoHook> video;
-    if (!a.video.empty() || !a.frames.empty()) video.emplace(video_options(a));
+    if (!a.video.empty() || !a.frames.empty()) video.emplace();
     options.on_cycle = [&](const Twin& twin) {
       if (video) video->on_cycle(twin);
       progress.update(twin.time_s());
     };
+    if (video) options.on_step = [&](const Step& step) { video->on_step(step); };
     result = run_scenario(scenario, options);
-    if (video) video->finish();
+    if (video) {
+      try {
+        video->render(video_options(a), a.slowmo > 0);
+      } catch (const std::invalid_argument& e) {
+        throw InputError(e.what());
+      }
+    }
 #else
     options.on_cycle = [&](const Twin& twin) { progress.update(twin.time_s()); };
     result = run_scenario(scenario, options);
