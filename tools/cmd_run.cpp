@@ -164,16 +164,17 @@ void write_report_dir(const RunArgs& a, const RunResult& r) {
   ReportInput in;
   in.scenario_name = r.name;
   in.passed = r.passed;
-  for (const auto& c : r.checks) in.checks.push_back({fmt::format("step {} (line {}): {}", c.step, c.line, c.description), c.passed});
+  for (const auto& c : r.checks) in.checks.push_back({c.description, c.passed, c.step, c.line, c.t_s, c.actual});
   in.trace = r.trace;
   in.moves = r.moves;
   in.tracking_limit_deg = r.tracking_limit_deg;
   in.tolerance_deg = r.tolerance_deg;
   in.wait_ms.assign(r.moves.size(), r.wait_ms);
-  if (!a.video.empty()) {
-    namespace fs = std::filesystem;
-    in.video_file = fs::relative(fs::absolute(a.video), fs::absolute(a.report)).generic_string();
-  }
+  in.command_line = command_line();
+  in.version = SREH_VERSION;
+  in.sim_time_s = r.sim_time_s;
+  in.max_tracking_error_deg = r.max_tracking_error_deg;
+  if (!a.video.empty()) in.video_source = a.video; // copied in: the folder stays movable
   try {
     write_report(a.report, in);
   } catch (const std::exception& e) {
