@@ -227,7 +227,7 @@ std::string report_html(const ReportInput& in, const std::string& video_name) {
     } else {
       o += fmt::format("<video id=\"video\" src=\"{}\" controls muted preload=\"metadata\" width=\"960\"></video>\n", xml_escape(video_name));
     }
-    o += "<p class=\"note\">Moves are slowed down to at least 1.5 s on screen and long idle stretches sped up; the "
+    o += "<p class=\"note\">Moves are slowed down to at least 2 s on screen and long idle stretches sped up; the "
          "overlay and the banner give the time scale (docs/assumptions/renders.md A-RENDERS-9).</p>\n";
   }
 

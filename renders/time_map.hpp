@@ -23,7 +23,7 @@ struct TimeSegment {
 };
 
 struct TimeScaleOptions {
-  double min_move_video_s = 1.5;   // each stretch of motion lasts at least this long on screen
+  double min_move_video_s = 2.0;   // each stretch of motion lasts at least this long on screen
   double max_slowmo = 100.0;       // never slower than this
   double pad_video_s = 0.3;        // shown at the move's rate before and after it
   double idle_threshold_s = 2.0;   // idle stretches longer than this (simulated) ...

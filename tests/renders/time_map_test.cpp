@@ -25,7 +25,9 @@ TEST(TimeMap, ConstantSlowMotionScalesEverything) {
 
 TEST(TimeMap, ShortMoveIsSlowedToTheMinimumOnScreenDuration) {
   // A 90 ms move in a 0.5 s run: 1.5 s / 0.09 s = 16.7 -> 20x.
-  const TimeMap m = TimeMap::automatic({{0.1, 0.19}}, 0.5);
+  TimeScaleOptions o;
+  o.min_move_video_s = 1.5;
+  const TimeMap m = TimeMap::automatic({{0.1, 0.19}}, 0.5, o);
   const TimeSegment& s = m.segment_at(0.15);
   EXPECT_EQ(s.kind, TimeSegment::Kind::SlowMotion);
   EXPECT_EQ(s.rate, 20.0);
@@ -38,6 +40,7 @@ TEST(TimeMap, ShortMoveIsSlowedToTheMinimumOnScreenDuration) {
 
 TEST(TimeMap, LongMovesPlayInRealTime) {
   const TimeMap m = TimeMap::automatic({{1.0, 4.0}}, 5.0);
+  EXPECT_EQ(TimeScaleOptions{}.min_move_video_s, 2.0); // the default: 2 s on screen at least
   EXPECT_DOUBLE_EQ(m.video_duration_s(), 5.0);
   EXPECT_EQ(m.segments().size(), 1u);
 }
