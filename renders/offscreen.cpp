@@ -214,7 +214,28 @@ struct OffscreenRenderer::Impl {
     }
   }
 
-  void frame_camera(const mjModel* m, const mjData* d) {
+  int text_width(const std::string& text, bool big) const {
+    int w = 0;
+    for (unsigned char c : text) w += c < 127 ? (big ? con.charWidthBig[c] : con.charWidth[c]) : 0;
+    return w;
+  }
+
+  // Normalised-device box the module may fill: right of the overlay's text
+  // columns (sized for the widest value a run shows) and below the banner.
+  FitBox fit_box(const SceneState& state) const {
+    if (!options.leave_overlay_room || state.overlay.empty()) return {-0.9, 0.9, -0.9, 0.9};
+    int labels = 0, values = text_width("fast forward 1000x (idle)", false);
+    for (const auto& [l, v] : state.overlay) {
+      labels = std::max(labels, text_width(l, false));
+      values = std::max(values, text_width(v, false));
+    }
+    const double w = options.width_px, h = options.height_px;
+    const double column_px = labels + values + 4.0 * con.charWidth[static_cast<int>('M')];
+    const double banner_px = con.charHeightBig + 0.5 * con.charHeight;
+    return {std::min(0.2, -1.0 + 2.0 * column_px / w), 0.94, -0.94, std::max(-0.2, 1.0 - 2.0 * banner_px / h)};
+  }
+
+  void frame_camera(const mjModel* m, const mjData* d, const SceneState& state) {
     if (!spec.model_camera.empty()) {
       const int id = mj_name2id(m, mjOBJ_CAMERA, spec.model_camera.c_str());
       if (id < 0) throw std::invalid_argument("the model has no camera named '" + spec.model_camera + "'");
@@ -230,7 +251,7 @@ struct OffscreenRenderer::Impl {
     const double aspect = static_cast<double>(options.width_px) / options.height_px;
     // With an overlay the module keeps right of the text column and below
     // the banner (A-RENDERS-1).
-    const FitBox box = options.leave_overlay_room ? FitBox{-0.30, 0.92, -0.92, 0.72} : FitBox{-0.9, 0.9, -0.9, 0.9};
+    const FitBox box = fit_box(state);
     double lookat[3], distance = 0;
     fit_camera(hull_points(m, d, flange_jnt, ghost_body), cam.azimuth, top ? -89.9 : cam.elevation, m->vis.global.fovy,
                aspect, box, lookat, &distance);
@@ -383,7 +404,7 @@ void OffscreenRenderer::render_into(const mjModel* m, const mjData* d, const Sce
   Impl& s = *impl_;
   s.make_current();
   mjr_setBuffer(mjFB_OFFSCREEN, &s.con);
-  if (!s.framed) s.frame_camera(m, d);
+  if (!s.framed) s.frame_camera(m, d, state);
   // 2.2.2's mjv_updateScene takes mjData* but only reads it.
   mjv_updateScene(m, const_cast<mjData*>(d), &s.opt, nullptr, &s.cam, mjCAT_ALL, &s.scn);
   s.place_pointers(m, d, state.ghost_joint_rad);
