@@ -15,11 +15,12 @@ nlohmann::json time_s(double v) { return number(std::round(v * 1e9) / 1e9); }
 nlohmann::json to_json(const RunResult& r) {
   nlohmann::json moves = nlohmann::json::array();
   for (const MoveRecord& m : r.moves) {
-    moves.push_back({{"start_s", number(m.start_s)},
+    // Move times are whole physics steps (0.1 ms) too (issue 16: no 0.19740000000000002).
+    moves.push_back({{"start_s", time_s(m.start_s)},
                      {"target_deg", number(m.target_deg)},
-                     {"travel_s", number(m.travel_s)},
-                     {"settling_s", m.completed ? number(m.settling_s) : nlohmann::json(nullptr)},
-                     {"positioning_s", m.completed ? number(m.positioning_s) : nlohmann::json(nullptr)},
+                     {"travel_s", time_s(m.travel_s)},
+                     {"settling_s", m.completed ? time_s(m.settling_s) : nlohmann::json(nullptr)},
+                     {"positioning_s", m.completed ? time_s(m.positioning_s) : nlohmann::json(nullptr)},
                      {"max_tracking_error_deg", number(m.max_tracking_error_deg)},
                      {"completed", m.completed}});
   }
