@@ -251,17 +251,22 @@ SREH_REGISTER_COMMAND(10, [](CLI::App& app, int& exit_code) {
   auto args = std::make_shared<RunArgs>();
   CLI::App* cmd = app.add_subcommand("run", "Simulate a scenario and check its expectations (exit 0 held, 1 failed, 2 bad input)");
   cmd->add_option("scenario", args->scenario, "Scenario file (YAML, see scenarios/README.md)")->required();
-  cmd->add_option("--trace", args->trace, "Write a CSV trace, one row per IO-Link cycle");
-  cmd->add_option("--trace-every", args->trace_every, "Keep every Nth cycle in the trace")->check(CLI::Range(1, 1000000));
+  cmd->add_option("--trace", args->trace, "Write a CSV trace to this file, one row per 2 ms IO-Link cycle");
+  cmd->add_option("--trace-every", args->trace_every, "Keep every Nth cycle in the trace, 1 .. 1000000")
+      ->check(CLI::Range(1, 1000000))
+      ->capture_default_str();
   cmd->add_flag("--json", args->json, "Print one JSON object with the results on stdout");
-  cmd->add_option("--video", args->video, "Render an MP4 video of the run");
-  cmd->add_option("--fps", args->fps, "Video frames per second")->check(CLI::Range(1, 240));
-  cmd->add_option("--size", args->size, "Video size WIDTHxHEIGHT (even numbers)")->capture_default_str();
-  cmd->add_option("--slowmo", args->slowmo, "Play the video this many times slower than simulated time")
+  cmd->add_option("--video", args->video, "Render a video of the run: .mp4 (H.264), .webm (VP8) or .gif");
+  cmd->add_option("--fps", args->fps, "Video frames per second, 1 .. 240")->check(CLI::Range(1, 240))->capture_default_str();
+  cmd->add_option("--size", args->size, "Video size WIDTHxHEIGHT in pixels (even numbers)")->capture_default_str();
+  cmd->add_option("--slowmo", args->slowmo,
+                  "Play the whole video this many times slower than simulated time, 0.01 .. 1000 [default: automatic: "
+                  "each move >= 2 s on screen, idle > 2 s sped up to 1 s]")
       ->check(CLI::Range(0.01, 1000.0));
-  cmd->add_option("--frames", args->frames, "Also write PNG frames into this folder");
-  cmd->add_option("--camera", args->camera, "Camera: default (frames module and load) or top")->capture_default_str();
-  cmd->add_option("--report", args->report, "Write an HTML report with plots into this folder");
+  cmd->add_option("--frames", args->frames, "Also write PNG frames into this folder (new or empty)");
+  cmd->add_option("--camera", args->camera, "Camera: default (fits module and load, 135 deg azimuth, 30 deg down) or top")
+      ->capture_default_str();
+  cmd->add_option("--report", args->report, "Write an HTML report folder (index.html, the video copied in) here");
   cmd->add_option("--save-nvm", args->save_nvm, "Save the device's non-volatile memory at the end to this file");
   cmd->callback([args, &exit_code] { exit_code = run_command(*args); });
 });

@@ -122,19 +122,19 @@ SREH_REGISTER_COMMAND(30, [](CLI::App& app, int& exit_code) {
       "size", "Size one move back and forth like Afag's PerfectCycle: times, torque, temperature, a recommended "
               "parameter set (exit 0 feasible, 1 infeasible, 2 bad input)");
   cmd->add_option("--angle-deg", a->angle_deg, "Move angle in degrees (the cycle is 0 -> A -> 0)")->required();
-  auto* load = cmd->add_option("--load-gcm2", a->load_gcm2, "Load inertia about the axis, 0 .. 15000 g cm^2");
+  auto* load = cmd->add_option("--load-gcm2", a->load_gcm2, "Load inertia about the axis, 0 .. 15000 g cm^2 [default: 0 unless --load]");
   auto* file = cmd->add_option("--load", a->load_file, "Load file: YAML with a 'load:' key as in a scenario");
   load->excludes(file);
   file->excludes(load);
   cmd->add_option("--voltage-V", a->voltage_V, "Motor supply 16 .. 32 V (index 85)")->capture_default_str();
   cmd->add_option("--dwell-s", a->dwell_s, "Pause after each move, s")->capture_default_str();
-  cmd->add_option("--tolerance-deg", a->tolerance_deg, "Position tolerance (index 64+n.5)")->capture_default_str();
-  cmd->add_option("--wait-ms", a->wait_ms, "Waiting time in the window (index 64+n.6)")->capture_default_str();
-  cmd->add_option("--timeout-ms", a->timeout_ms, "Settling timeout (index 64+n.7); default: wait + 75 ms, >= 100 ms");
+  cmd->add_option("--tolerance-deg", a->tolerance_deg, "Position tolerance in deg (index 64+n.5)")->capture_default_str();
+  cmd->add_option("--wait-ms", a->wait_ms, "Waiting time in the window in ms (index 64+n.6)")->capture_default_str();
+  cmd->add_option("--timeout-ms", a->timeout_ms, "Settling timeout in ms (index 64+n.7) [default: wait + 75 ms, >= 100 ms]");
   cmd->add_option("--ambient-C", a->ambient_C, "Ambient temperature 0 .. 50 degC")->capture_default_str();
-  cmd->add_option("--speed-dps", a->speed_dps, "Evaluate this speed, 0.1 .. 4300 deg/s (no recommendation)");
-  cmd->add_option("--accel-pct", a->accel_pct, "Evaluate this acceleration, 0.1 .. 100 %");
-  cmd->add_option("--jerk-pct", a->jerk_pct, "Evaluate this jerk, 0.1 .. 100 %");
+  cmd->add_option("--speed-dps", a->speed_dps, "Evaluate this speed, 0.1 .. 4300 deg/s [default: recommend a set]");
+  cmd->add_option("--accel-pct", a->accel_pct, "Evaluate this acceleration, 0.1 .. 100 % [default: recommended]");
+  cmd->add_option("--jerk-pct", a->jerk_pct, "Evaluate this jerk, 0.1 .. 100 % [default: recommended]");
   cmd->add_option("--parameter-set", a->parameter_set, "Parameter set 0 .. 7 (index 64 + n)")->capture_default_str();
   cmd->add_option("--cycles", a->cycles, "Back-and-forth cycles simulated, 1 .. 20")->capture_default_str();
   cmd->add_flag("--json", a->json, "Print one JSON object on stdout");

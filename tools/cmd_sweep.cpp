@@ -91,23 +91,23 @@ SREH_REGISTER_COMMAND(31, [](CLI::App& app, int& exit_code) {
       "sweep", "Sizing over a grid of loads x angles x voltages (x speeds): CSV and plots (exit 0 ran, 2 bad input)");
   cmd->add_option("--loads-gcm2", a->loads_gcm2, "Load inertias, comma separated, 0 .. 15000 g cm^2")
       ->delimiter(',')->required();
-  cmd->add_option("--angles-deg", a->angles_deg, "Move angles, comma separated")->delimiter(',')->required();
+  cmd->add_option("--angles-deg", a->angles_deg, "Move angles in deg, comma separated")->delimiter(',')->required();
   cmd->add_option("--voltages-V", a->voltages_V, "Supply voltages 16 .. 32 V, comma separated")
       ->delimiter(',')->capture_default_str();
-  cmd->add_option("--speeds-dps", a->speeds_dps, "Evaluate these speeds (comma separated) instead of recommending")
+  cmd->add_option("--speeds-dps", a->speeds_dps, "Evaluate these speeds in deg/s (comma separated) instead of recommending [default: recommend]")
       ->delimiter(',');
-  cmd->add_option("--accel-pct", a->accel_pct, "Acceleration with --speeds-dps")->capture_default_str();
-  cmd->add_option("--jerk-pct", a->jerk_pct, "Jerk with --speeds-dps")->capture_default_str();
+  cmd->add_option("--accel-pct", a->accel_pct, "Acceleration with --speeds-dps, 0.1 .. 100 %")->capture_default_str();
+  cmd->add_option("--jerk-pct", a->jerk_pct, "Jerk with --speeds-dps, 0.1 .. 100 %")->capture_default_str();
   cmd->add_option("--dwell-s", a->dwell_s, "Pause after each move, s")->capture_default_str();
-  cmd->add_option("--tolerance-deg", a->tolerance_deg, "Position tolerance (index 64+n.5)")->capture_default_str();
-  cmd->add_option("--wait-ms", a->wait_ms, "Waiting time (index 64+n.6)")->capture_default_str();
-  cmd->add_option("--timeout-ms", a->timeout_ms, "Settling timeout (index 64+n.7)");
+  cmd->add_option("--tolerance-deg", a->tolerance_deg, "Position tolerance in deg (index 64+n.5)")->capture_default_str();
+  cmd->add_option("--wait-ms", a->wait_ms, "Waiting time in ms (index 64+n.6)")->capture_default_str();
+  cmd->add_option("--timeout-ms", a->timeout_ms, "Settling timeout in ms (index 64+n.7) [default: wait + 75 ms, >= 100 ms]");
   cmd->add_option("--ambient-C", a->ambient_C, "Ambient temperature, degC")->capture_default_str();
   cmd->add_option("--cycles", a->cycles, "Back-and-forth cycles simulated per evaluation")->capture_default_str();
-  cmd->add_option("--threads", a->threads, "Worker threads (default: one per core)")->check(CLI::Range(1, 64));
-  cmd->add_option("--csv", a->csv, "Write the results here (one row per grid point)")->required();
+  cmd->add_option("--threads", a->threads, "Worker threads, 1 .. 64 [default: one per core]")->check(CLI::Range(1, 64));
+  cmd->add_option("--csv", a->csv, "Write the results to this CSV file (one row per grid point)")->required();
   cmd->add_option("--report", a->report, "Write an HTML report with plots into this folder");
-  cmd->add_option("--targets-s", a->targets_s, "Target positioning times for the heaviest-load plot, comma separated")
+  cmd->add_option("--targets-s", a->targets_s, "Target positioning times in s for the heaviest-load plot, comma separated [default: 8 spanning the feasible times]")
       ->delimiter(',');
   cmd->callback([a, &exit_code] { exit_code = sweep_command(*a); });
 });
