@@ -87,7 +87,7 @@ std::string figure(const svg::Plot& p, bool interactive) {
   for (const svg::Series& s : p.series) {
     shared_x = shared_x && !s.markers && s.x == p.series.front().x && s.y.size() == s.x.size();
   }
-  std::string o = "<div class=\"fig\">\n";
+  std::string o = fmt::format("<div class=\"fig\" id=\"fig-{}\">\n", svg::xml_escape(p.id));
   if (shared_x) {
     const std::string id = "dy-" + svg::xml_escape(p.id);
     o += fmt::format("<div class=\"dy\" id=\"{}\"></div><div class=\"hint\">drag to zoom, shift-drag to pan, double-click to reset</div>\n", id);

@@ -228,10 +228,10 @@ std::string report_html(const ReportInput& in, const std::string& video_name) {
       o += fmt::format("<video id=\"video\" src=\"{}\" controls muted preload=\"metadata\" width=\"960\"></video>\n", xml_escape(video_name));
     }
     o += "<p class=\"note\">Moves are slowed down to at least 2 s on screen and long idle stretches sped up; the "
-         "overlay and the banner give the time scale (docs/assumptions/renders.md A-RENDERS-9).</p>\n";
+         "overlay and the banner give the time scale (docs/assumptions/renders.md A-RENDERS-12).</p>\n";
   }
 
-  o += "<h2>Over time</h2>\n";
+  o += "<h2 id=\"over-time\">Over time</h2>\n";
   if (in.trace.empty()) {
     o += "<p class=\"note\">No trace was recorded.</p>\n";
   } else {
@@ -239,7 +239,7 @@ std::string report_html(const ReportInput& in, const std::string& video_name) {
   }
 
   if (!in.moves.empty() && !in.trace.empty()) {
-    o += "<h2>Settling per move (manual 3.5.2 Fig. 3)</h2>\n";
+    o += "<h2 id=\"settling\">Settling per move (manual 3.5.2 Fig. 3)</h2>\n";
     o += "<p class=\"note\">(b) target trajectory completed; (5) tolerance window; (3) waiting time; (f) positioning complete.</p>\n";
     const std::size_t n = std::min(in.moves.size(), kMaxSettlingPlots);
     for (std::size_t i = 0; i < n; ++i) o += settling_plot(in, c, i);

@@ -98,7 +98,7 @@ VideoSummary RunRecording::render(VideoOptions o, bool fixed_slowmo, const TimeS
       f.t_s = std::max(t, info_.front().t_s);
       rec.add_frame(m, d, f);
     }
-    // The end state stays on screen a moment (A-RENDERS-9).
+    // The end state stays on screen a moment (A-RENDERS-12).
     FrameInfo last = info_.back();
     const double tail_s = std::max(0.0, scale.end_hold_video_s);
     rec.hold(m, d, last, static_cast<uint64_t>(std::llround(tail_s * o.fps)));

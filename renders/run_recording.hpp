@@ -43,7 +43,7 @@ class RunRecording {
   // Renders the video: `options.time_map` if set; otherwise constant
   // `options.slowmo` when `fixed_slowmo`, else the automatic time map.
   // Frames between two cycles show the flange pose interpolated between
-  // them (A-RENDERS-9). Throws like VideoRecorder.
+  // them (A-RENDERS-12). Throws like VideoRecorder.
   VideoSummary render(VideoOptions options, bool fixed_slowmo, const TimeScaleOptions& scale = {}) const;
 
  private:

@@ -1,6 +1,6 @@
 // Video time as a function of simulated time (issue 16): every move slowed
 // down to a watchable on-screen duration, long idle stretches compressed,
-// real time in between (docs/assumptions/renders.md A-RENDERS-9). Pure: no
+// real time in between (docs/assumptions/renders.md A-RENDERS-12). Pure: no
 // MuJoCo, no files; the recorder asks it when each frame is due.
 #pragma once
 #include <cstdint>

@@ -1,4 +1,4 @@
-// Automatic time scaling of videos (issue 16, A-RENDERS-9).
+// Automatic time scaling of videos (issue 16, A-RENDERS-12).
 #include "renders/time_map.hpp"
 
 #include <gtest/gtest.h>
