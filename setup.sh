@@ -19,7 +19,7 @@ packages=(
   libxml2-utils                                           # xmllint: checks the IODD-like export against our XSD
   libmodbus-dev libcpp-httplib-dev libmosquitto-dev       # serve: Modbus TCP, HTTP/JSON, MQTT
   mosquitto mbpoll curl python3-pymodbus                  # serve's tests: broker and real PLC-style clients
-  pybind11-dev python3-pybind11 python3-numpy python3-pytest  # Python API and its tests (Debian's /usr/bin/python3)
+  pybind11-dev python3-pybind11 python3-dev python3-numpy python3-pytest  # Python API (headers: python3-dev) and its tests, Debian's /usr/bin/python3
   parallel                                                # sharded sweeps and scenario runs
 )
 if [ "${SREH_WITH_EXAMPLES:-0}" = 1 ]; then

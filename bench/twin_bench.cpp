@@ -83,6 +83,28 @@ void BM_TwinCycle(benchmark::State& state) {
   state.counters["realtime_x"] = benchmark::Counter(2e-3 * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 
+// The workload of python/bench_python.py's run_cycles (issue 19): one
+// constant output frame (motor on, Move to 90 deg with set 1), trace off, so
+// that the Python figure can be set against this one.
+void BM_TwinRunCycles(benchmark::State& state) {
+  TwinConfig c;
+  c.load = InertiaLoad{kLoad_gcm2};
+  c.record_trace = false;
+  Twin twin(c);
+  const uint8_t load_raw[2] = {static_cast<uint8_t>(2000 >> 8), static_cast<uint8_t>(2000 & 0xFF)};
+  twin.isdu_write(65, 4, load_raw);
+  ProcessDataOut pd;
+  pd.motor_on = true;
+  pd.parameter_set = 1;
+  pd.move = true;
+  pd.target_position = static_cast<int32_t>(deg_to_wire_counts(90));
+  twin.set_pd_out(pd);
+  for (auto _ : state) {
+    twin.run_cycle();
+  }
+  state.counters["realtime_x"] = benchmark::Counter(2e-3 * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+
 // Interleaved: 10 IO-Link cycles of bare mj_step, then 10 of the twin, each
 // timed with the thread's CPU clock, so both see the same machine load (the
 // shared 2-core machine is noisy). Counters: us per physics step, ratio.
@@ -133,6 +155,7 @@ BENCHMARK(BM_PairedTwinVsBare)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_BareMjStep)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_PlantStep)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_TwinCycle)->Arg(0)->Arg(1)->ArgName("trace")->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_TwinRunCycles)->Unit(benchmark::kMicrosecond);
 
 // Console output plus the ratio twin / bare at the end.
 class RatioReporter : public benchmark::ConsoleReporter {

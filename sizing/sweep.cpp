@@ -9,15 +9,14 @@
 
 #include <fmt/format.h>
 
+#include "sizing/sweep_options.hpp"
+
 namespace sreh::sizing {
 namespace {
 
 constexpr std::size_t kMaxPoints = 100000; // A-SIZE-11
 
 std::string csv_number(double v) { return fmt::format("{}", v); } // shortest round-trip text: deterministic
-
-// Empty where the moves did not all complete (the times mean nothing then).
-std::string csv_time(bool completed, double v) { return completed ? csv_number(v) : std::string(); }
 
 std::string csv_text(const std::string& s) {
   std::string q = "\"";
@@ -102,21 +101,19 @@ SweepResult run_sweep(const SweepRequest& rq) {
 }
 
 void write_sweep_csv(std::ostream& out, const SweepResult& result) {
-  out << "load_gcm2,angle_deg,voltage_V,mode,speed_dps,accel_pct,jerk_pct,travel_s,settling_s,positioning_s,"
-         "cycle_s,cycles_per_min,peak_torque_Nm,rms_torque_Nm,max_tracking_error_deg,steady_temperature_C,"
-         "time_to_warning_s,feasible,simulations,reason\n";
+  const auto columns = sweep_columns();
+  for (std::size_t c = 0; c < columns.size(); ++c) out << (c > 0 ? "," : "") << columns[c].name;
+  out << '\n';
   for (const SweepPoint& p : result.points) {
-    const Evaluation& e = p.result.evaluation;
-    out << csv_number(p.load_gcm2) << ',' << csv_number(p.angle_deg) << ',' << csv_number(p.voltage_V) << ','
-        << (p.result.recommended ? "recommend" : "evaluate") << ',' << csv_number(e.set.tidy.speed_dps) << ','
-        << csv_number(e.set.tidy.accel_pct) << ',' << csv_number(e.set.tidy.jerk_pct) << ','
-        << csv_number(e.travel_s) << ',' << csv_time(e.completed, e.settling_s) << ','
-        << csv_time(e.completed, e.positioning_s) << ',' << csv_time(e.completed, e.cycle_s) << ','
-        << csv_time(e.completed, e.cycles_per_min) << ',' << csv_number(e.peak_torque_Nm) << ','
-        << csv_number(e.rms_torque_Nm) << ',' << csv_number(e.max_tracking_error_deg) << ','
-        << csv_number(e.steady_temperature_C) << ','
-        << (e.time_to_warning_s ? csv_number(*e.time_to_warning_s) : std::string()) << ','
-        << (e.feasible ? 1 : 0) << ',' << p.result.simulations << ',' << csv_text(e.reason) << '\n';
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      if (c > 0) out << ',';
+      const SweepCell cell = sweep_cell(p, c);
+      if (const auto* v = std::get_if<double>(&cell)) out << csv_number(*v);
+      else if (const auto* b = std::get_if<bool>(&cell)) out << (*b ? 1 : 0);
+      else if (const auto* n = std::get_if<int64_t>(&cell)) out << *n;
+      else if (const auto* t = std::get_if<std::string>(&cell)) out << (columns[c].kind == SweepColumnKind::Text ? csv_text(*t) : *t);
+    }
+    out << '\n';
   }
 }
 

@@ -44,6 +44,15 @@ Plant::Plant(const PlantConfig& config)
   set_led_rgba(led_rgba(LedColor::Off));
 }
 
+void Plant::set_flange_blocked(bool blocked) {
+  if (blocked && !blocked_) blocked_angle_rad_ = data_->qpos[qpos_adr_];
+  blocked_ = blocked;
+  if (blocked_) {
+    data_->qvel[dof_adr_] = 0;
+    mj_forward(model_.get(), data_.get());
+  }
+}
+
 double Plant::angle_rad() const { return data_->qpos[qpos_adr_]; }
 double Plant::velocity_rad_s() const { return data_->qvel[dof_adr_]; }
 
@@ -67,6 +76,10 @@ const SensorReadings& Plant::step(const MotorCommand& cmd) {
   }
   check_warnings();
   ++steps_;
+  if (blocked_) { // the clamp takes whatever moved the flange
+    d->qpos[qpos_adr_] = blocked_angle_rad_;
+    d->qvel[dof_adr_] = 0;
+  }
 
   // Electrical side with the torque held over the step (zero-order hold).
   copper_loss_W_ = motor_.copper_loss_W(applied_torque_Nm_);

@@ -46,6 +46,11 @@ class Plant {
 
   void set_external_torque(double torque_Nm) { external_torque_Nm_ = torque_Nm; } // physical frame
   double external_torque_Nm() const { return external_torque_Nm_; }
+  // A rigid clamp at the present angle: after every step the flange is put
+  // back there at rest, so the motor works against it (stall, no motion).
+  void set_flange_blocked(bool blocked);
+  bool flange_blocked() const { return blocked_; }
+  void set_ambient_C(double ambient_C) { thermal_.set_ambient_C(ambient_C); }
   void set_supply_voltage(double volts) { supply_.set_source_voltage(volts); sensors_.supply_V = supply_.bus_voltage_V(); }
 
   // State, physical frame.
@@ -98,6 +103,8 @@ class Plant {
   double copper_loss_W_ = 0;
   uint64_t steps_ = 0;
   bool failed_ = false;
+  bool blocked_ = false;
+  double blocked_angle_rad_ = 0;
   SensorReadings sensors_;
 };
 

@@ -74,6 +74,10 @@ class Twin {
   // World side.
   void set_external_torque(double torque_Nm);
   void set_supply_voltage(double volts);
+  // The flange held by something rigid (a clamp, a jammed load): it stays at
+  // its angle whatever torque acts; released with false.
+  void set_flange_blocked(bool blocked);
+  void set_ambient_C(double ambient_C); // the air around the module, from now on
   void power_cycle();                   // off and on again; non-volatile memory kept
   // Manual 9: hand a firmware image to the device in boot mode (0 or an ISDU error code).
   uint16_t firmware_update(std::span<const uint8_t> image);

@@ -171,6 +171,46 @@ TEST(Twin, ExternalTorqueIsResistedWhileHolding) {
   EXPECT_LT(twin.trace().back().torque_Nm, -0.1); // the motor holds against it
 }
 
+// A-TWIN-15: a blocked flange stays where it is, whatever the motor does;
+// the device's own monitor then reports the tracking error (manual 7.2 114.5).
+TEST(Twin, BlockedFlangeHoldsAndGivesTrackingError_Manual7_2_114_5) {
+  Twin twin(config_2000());
+  write_u16(twin, 65, 4, 2000);
+  switch_on_and_move(twin, 120.0);
+  ASSERT_GT(run_until(twin, [&] { return rad_to_deg(twin.plant().angle_rad()) > 10.0; }, 200), 0);
+  twin.set_flange_blocked(true);
+  const double held_rad = twin.plant().angle_rad();
+  ASSERT_GT(run_until(twin, [&] { return twin.pd_in().error; }, 500), 0);
+  EXPECT_EQ(twin.plant().angle_rad(), held_rad);
+  EXPECT_EQ(twin.plant().velocity_rad_s(), 0.0);
+  EXPECT_NE(twin.telemetry().error_code & 0x08, 0);
+  EXPECT_FALSE(twin.moves().back().completed);
+}
+
+TEST(Twin, ReleasedFlangeMovesAgain) {
+  Twin twin(config_2000());
+  write_u16(twin, 65, 4, 2000);
+  twin.set_flange_blocked(true);
+  twin.set_flange_blocked(false);
+  switch_on_and_move(twin, 45.0);
+  ASSERT_GT(run_until(twin, [&] { return twin.pd_in().done; }, 500), 0);
+  EXPECT_NEAR(twin.telemetry().position_deg, 45.0, 0.1);
+}
+
+// A-TWIN-16: a new ambient is followed with the model's time constants.
+TEST(Twin, AmbientChangeIsFollowedNotJumped) {
+  TwinConfig c;
+  c.thermal.time_scale = 200; // minutes in seconds (A-TWIN-THERMAL-3)
+  Twin twin(c);
+  twin.set_ambient_C(45.0);
+  twin.run_cycle();
+  EXPECT_LT(twin.plant().sensors().temperature_C, 25.1);
+  for (int i = 0; i < 1000; ++i) twin.run_cycle(); // 2 s x 200
+  const double t = twin.plant().sensors().temperature_C;
+  EXPECT_GT(t, 26.0);
+  EXPECT_LT(t, 45.0);
+}
+
 TEST(Twin, GhostShowsThePlannedSetpoint) {
   Twin twin(config_2000());
   write_u16(twin, 65, 4, 2000);

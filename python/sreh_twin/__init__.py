@@ -1,0 +1,87 @@
+"""sreh_twin: the Afag SREH-50-IOL digital twin from Python (issue 19).
+
+The device is reached as from a PLC: ``Twin.exchange()`` sends the 6-byte
+output process data and returns the 7-byte input frame (manual 2.2, 2.3),
+``Twin.isdu_read()`` / ``isdu_write()`` are its parameters (manual 6).
+``run_scenario``, ``size`` and ``sweep`` are the CLI's ``run --json``,
+``size --json`` and ``sweep`` on the same C++ code paths. ``sreh_twin.env``
+holds a Gymnasium-shaped positioning environment.
+"""
+import os as _os
+import re as _re
+
+from . import _core
+
+# An installed package carries its own copy of the models (cmake --install)
+# and points the twin at it, unless the user chose a folder
+# (twin/models_dir.hpp); in the build tree the usual search applies.
+_models = _os.path.join(_os.path.dirname(__file__), "models")
+if _os.path.isfile(_os.path.join(_models, "sreh50.xml")):
+    _os.environ.setdefault("SREH_TWIN_MODELS_DIR", _models)
+
+from ._core import (  # noqa: E402
+    IsduError,
+    InputError,
+    Twin,
+    pd_out,
+    decode_pd_in,
+    decode_pd_out,
+    STATES,
+    LEDS,
+    SIZE_OPTIONS,
+    SWEEP_OPTIONS,
+    models_dir,
+)
+
+__all__ = [
+    "Twin", "IsduError", "InputError", "run_scenario", "size", "sweep", "pd_out", "decode_pd_in",
+    "decode_pd_out", "STATES", "LEDS", "SIZE_OPTIONS", "SWEEP_OPTIONS", "models_dir", "env",
+]
+
+
+def _python_names(error):
+    """The CLI's messages name options (--angle-deg); here they are keywords (angle_deg)."""
+    text = _re.sub(r"--([A-Za-z][A-Za-z0-9-]*)", lambda m: m.group(1).replace("-", "_"), str(error))
+    return InputError(text)
+
+
+def run_scenario(path):
+    """Run a scenario file (scenarios/README.md) and return the dict of
+    ``sreh-twin run --json``: name, passed, failures, stopped_early, moves,
+    final, checks, sim_time_s, cycles and the run's extremes. A failed check
+    gives ``passed == False``; a bad scenario raises InputError."""
+    return _core.run_scenario(_os.fspath(path))
+
+
+def size(**options):
+    """PerfectCycle-style sizing, the dict of ``sreh-twin size --json``.
+
+    Keywords are the CLI's long options with '-' as '_' (SIZE_OPTIONS):
+    angle_deg (required), load_gcm2 or load (a YAML load file), voltage_V,
+    dwell_s, tolerance_deg, wait_ms, timeout_ms, ambient_C, speed_dps,
+    accel_pct, jerk_pct (evaluate this set instead of recommending one),
+    parameter_set, cycles, report (an HTML report folder).
+    Bad values raise InputError naming the keyword."""
+    try:
+        return _core.size(**options)
+    except InputError as e:
+        raise _python_names(e) from None
+
+
+def sweep(**options):
+    """Sizing over a grid (``sreh-twin sweep``): a dict of the CSV's columns
+    as 1-D numpy arrays, one entry per grid point in grid order (loads
+    outermost, then angles, voltages, speeds). Times of runs whose moves did
+    not complete are NaN; mode and reason are str arrays.
+
+    Keywords (SWEEP_OPTIONS): loads_gcm2, angles_deg (required), voltages_V,
+    speeds_dps (lists or arrays), accel_pct, jerk_pct, dwell_s,
+    tolerance_deg, wait_ms, timeout_ms, ambient_C, cycles, threads, and
+    optionally csv / report / targets_s to also write the CLI's files."""
+    try:
+        return _core.sweep(**options)
+    except InputError as e:
+        raise _python_names(e) from None
+
+
+from . import env  # noqa: E402  (sreh_twin.env is available after import sreh_twin)

@@ -1,0 +1,109 @@
+#include "sizing/size_options.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include "scenarios/scenario_parser.hpp"
+#include "sizing/output.hpp"
+#include "sizing/report.hpp"
+
+namespace sreh::sizing {
+namespace {
+
+using S = SizeOptions;
+const OptionSpec<S> kSizeOptions[] = {
+    {"angle-deg", "Move angle in degrees (the cycle is 0 -> A -> 0)", &S::angle_deg, true},
+    {"load-gcm2", "Load inertia about the axis, 0 .. 15000 g cm^2", &S::load_gcm2},
+    {"load", "Load file: YAML with a 'load:' key as in a scenario", &S::load},
+    {"voltage-V", "Motor supply 16 .. 32 V (index 85)", &S::voltage_V, false, true},
+    {"dwell-s", "Pause after each move, s", &S::dwell_s, false, true},
+    {"tolerance-deg", "Position tolerance (index 64+n.5)", &S::tolerance_deg, false, true},
+    {"wait-ms", "Waiting time in the window (index 64+n.6)", &S::wait_ms, false, true},
+    {"timeout-ms", "Settling timeout (index 64+n.7); default: wait + 75 ms, >= 100 ms", &S::timeout_ms},
+    {"ambient-C", "Ambient temperature 0 .. 50 degC", &S::ambient_C, false, true},
+    {"speed-dps", "Evaluate this speed, 0.1 .. 4300 deg/s (no recommendation)", &S::speed_dps},
+    {"accel-pct", "Evaluate this acceleration, 0.1 .. 100 %", &S::accel_pct},
+    {"jerk-pct", "Evaluate this jerk, 0.1 .. 100 %", &S::jerk_pct},
+    {"parameter-set", "Parameter set 0 .. 7 (index 64 + n)", &S::parameter_set, false, true},
+    {"cycles", "Back-and-forth cycles simulated, 1 .. 20", &S::cycles, false, true},
+    {"report", "Write an HTML sizing report into this folder", &S::report},
+};
+
+} // namespace
+
+std::span<const OptionSpec<SizeOptions>> size_option_table() { return kSizeOptions; }
+
+// The scenario parser reads the file, so keys, errors and MJCF paths behave
+// the same: keys a scenario needs are appended at the end, which keeps every
+// line number of the file.
+LoadSpec load_from_file(const std::string& path, std::string_view option) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SizingInputError(fmt::format("{} {}: cannot read the file", option, path));
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  std::string text = buffer.str();
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw SizingInputError(fmt::format("{}:{}:{}: {}", path, e.mark.line + 1, e.mark.column + 1, e.msg));
+  }
+  if (!root.IsMap() || !root["load"]) {
+    throw SizingInputError(
+        fmt::format("{}: expected a top-level 'load:' key (e.g. load: {{disk: {{mass_kg: 0.4, radius_m: 0.1}}}})", path));
+  }
+  if (!root["name"]) text += "\nname: load from " + std::filesystem::path(path).filename().string() + "\n";
+  if (!root["steps"]) text += "\nsteps:\n  - comment: sizing load\n"; // a scenario needs one step
+  try {
+    return parse_scenario_text(text, path, std::filesystem::path(path).parent_path().string()).load;
+  } catch (const ScenarioError& e) {
+    throw SizingInputError(e.what());
+  }
+}
+
+SizingRequest make_request(const SizeOptions& a) {
+  SizingRequest rq;
+  rq.angle_deg = a.angle_deg;
+  if (a.load_gcm2 && !a.load.empty()) throw SizingInputError("--load-gcm2 and --load: give only one of them");
+  if (a.load_gcm2) rq.load = InertiaLoad{*a.load_gcm2};
+  else if (!a.load.empty()) rq.load = load_from_file(a.load);
+  else throw SizingInputError("size: give the load with --load-gcm2 J or --load LOAD.yaml");
+  rq.voltage_V = a.voltage_V;
+  rq.dwell_s = a.dwell_s;
+  rq.tolerance_deg = a.tolerance_deg;
+  rq.wait_ms = a.wait_ms;
+  rq.timeout_ms = a.timeout_ms;
+  rq.ambient_C = a.ambient_C;
+  rq.parameter_set = a.parameter_set;
+  rq.cycles = a.cycles;
+  if (a.speed_dps || a.accel_pct || a.jerk_pct) {
+    // Options left out keep the factory value of sets 1..7 (manual 6.2).
+    const MotionSetting factory;
+    rq.setting = MotionSetting{a.speed_dps.value_or(factory.speed_dps), a.accel_pct.value_or(factory.accel_pct),
+                               a.jerk_pct.value_or(factory.jerk_pct)};
+  }
+  rq.keep_trace = !a.report.empty();
+  return rq;
+}
+
+SizeOutcome run_size(const SizeOptions& a) {
+  SizeOutcome out;
+  out.request = make_request(a);
+  if (!a.report.empty() && !reports_available()) throw SizingInputError("--report: this build has no renders");
+  out.result = size(out.request);
+  if (!a.report.empty()) {
+    try {
+      write_size_report(a.report, out.request, out.result);
+    } catch (const std::runtime_error& e) {
+      throw SizingInputError(fmt::format("--report {}: {}", a.report, e.what()));
+    }
+  }
+  out.json = to_json(out.request, out.result);
+  return out;
+}
+
+} // namespace sreh::sizing

@@ -1,0 +1,52 @@
+// `sreh-twin size` and `sreh_twin.size()`: the options (interfaces.md), how
+// they become a SizingRequest, and the command itself up to its JSON object.
+#pragma once
+#include <optional>
+#include <span>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "sizing/option_table.hpp"
+#include "sizing/sizing.hpp"
+
+namespace sreh::sizing {
+
+struct SizeOptions {
+  double angle_deg = 0;
+  std::optional<double> load_gcm2;
+  std::string load;          // --load LOAD.yaml
+  double voltage_V = 24.0;
+  double dwell_s = 0.0;
+  double tolerance_deg = 0.1;
+  double wait_ms = 25.0;
+  std::optional<double> timeout_ms;
+  double ambient_C = 25.0;
+  std::optional<double> speed_dps, accel_pct, jerk_pct;
+  int parameter_set = 1;
+  int cycles = 2;
+  std::string report;        // HTML report folder ("" none)
+};
+
+// Every option of `size` except the CLI's own --json.
+std::span<const OptionSpec<SizeOptions>> size_option_table();
+
+// A load file is YAML with a top-level `load:` key, exactly as in a scenario
+// (scenarios/README.md); a scenario file works too (only its load is used).
+// Throws SizingInputError naming `option` and the file.
+LoadSpec load_from_file(const std::string& path, std::string_view option = "--load");
+
+// Throws SizingInputError (no load given, both given, a bad load file).
+SizingRequest make_request(const SizeOptions& options);
+
+struct SizeOutcome {
+  SizingRequest request;
+  SizingResult result;
+  nlohmann::json json; // the `size --json` object
+};
+
+// make_request + size + the report when asked; throws SizingInputError for
+// bad input (the CLI's exit 2).
+SizeOutcome run_size(const SizeOptions& options);
+
+} // namespace sreh::sizing

@@ -1,0 +1,124 @@
+#include "sizing/sweep_options.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "scenarios/atomic_file.hpp"
+#include "sizing/report.hpp"
+
+namespace sreh::sizing {
+namespace {
+
+using W = SweepOptions;
+const OptionSpec<W> kSweepOptions[] = {
+    {"loads-gcm2", "Load inertias, comma separated, 0 .. 15000 g cm^2", &W::loads_gcm2, true},
+    {"angles-deg", "Move angles, comma separated", &W::angles_deg, true},
+    {"voltages-V", "Supply voltages 16 .. 32 V, comma separated", &W::voltages_V, false, true},
+    {"speeds-dps", "Evaluate these speeds (comma separated) instead of recommending", &W::speeds_dps},
+    {"accel-pct", "Acceleration with --speeds-dps", &W::accel_pct, false, true},
+    {"jerk-pct", "Jerk with --speeds-dps", &W::jerk_pct, false, true},
+    {"dwell-s", "Pause after each move, s", &W::dwell_s, false, true},
+    {"tolerance-deg", "Position tolerance (index 64+n.5)", &W::tolerance_deg, false, true},
+    {"wait-ms", "Waiting time (index 64+n.6)", &W::wait_ms, false, true},
+    {"timeout-ms", "Settling timeout (index 64+n.7)", &W::timeout_ms},
+    {"ambient-C", "Ambient temperature, degC", &W::ambient_C, false, true},
+    {"cycles", "Back-and-forth cycles simulated per evaluation", &W::cycles, false, true},
+    {"threads", "Worker threads 1 .. 64 (default: one per core)", &W::threads},
+    {"csv", "Write the results here (one row per grid point)", &W::csv},
+    {"report", "Write an HTML report with plots into this folder", &W::report},
+    {"targets-s", "Target positioning times for the heaviest-load plot, comma separated", &W::targets_s},
+};
+
+constexpr SweepColumnSpec kColumns[] = {
+    {"load_gcm2", SweepColumnKind::Number},       {"angle_deg", SweepColumnKind::Number},
+    {"voltage_V", SweepColumnKind::Number},       {"mode", SweepColumnKind::Word},
+    {"speed_dps", SweepColumnKind::Number},       {"accel_pct", SweepColumnKind::Number},
+    {"jerk_pct", SweepColumnKind::Number},        {"travel_s", SweepColumnKind::Number},
+    {"settling_s", SweepColumnKind::Number},      {"positioning_s", SweepColumnKind::Number},
+    {"cycle_s", SweepColumnKind::Number},         {"cycles_per_min", SweepColumnKind::Number},
+    {"peak_torque_Nm", SweepColumnKind::Number},  {"rms_torque_Nm", SweepColumnKind::Number},
+    {"max_tracking_error_deg", SweepColumnKind::Number}, {"steady_temperature_C", SweepColumnKind::Number},
+    {"time_to_warning_s", SweepColumnKind::Number}, {"feasible", SweepColumnKind::Flag},
+    {"simulations", SweepColumnKind::Count},      {"reason", SweepColumnKind::Text},
+};
+
+// Times of an evaluation whose moves did not all complete mean nothing: missing.
+SweepCell time_if(bool completed, double v) { return completed ? SweepCell(v) : SweepCell(); }
+
+} // namespace
+
+std::span<const OptionSpec<SweepOptions>> sweep_option_table() { return kSweepOptions; }
+
+SweepRequest make_sweep_request(const SweepOptions& a) {
+  if (a.threads < 0 || a.threads > 64) throw SizingInputError(fmt::format("--threads {}: expected 1 .. 64", a.threads));
+  for (double t : a.targets_s) {
+    if (!(t > 0)) throw SizingInputError(fmt::format("--targets-s {}: target times must be positive", t));
+  }
+  SweepRequest rq;
+  rq.loads_gcm2 = a.loads_gcm2;
+  rq.angles_deg = a.angles_deg;
+  rq.voltages_V = a.voltages_V;
+  rq.speeds_dps = a.speeds_dps;
+  rq.accel_pct = a.accel_pct;
+  rq.jerk_pct = a.jerk_pct;
+  rq.base.dwell_s = a.dwell_s;
+  rq.base.tolerance_deg = a.tolerance_deg;
+  rq.base.wait_ms = a.wait_ms;
+  rq.base.timeout_ms = a.timeout_ms;
+  rq.base.ambient_C = a.ambient_C;
+  rq.base.cycles = a.cycles;
+  rq.threads = a.threads > 0 ? a.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  return rq;
+}
+
+SweepResult run_sweep_command(const SweepOptions& a, const SweepRequest& rq) {
+  if (!a.csv.empty() && !output_folder_exists(a.csv)) {
+    throw SizingInputError(fmt::format("--csv {}: the folder does not exist", a.csv));
+  }
+  if (!a.report.empty() && !reports_available()) throw SizingInputError("--report: this build has no renders");
+  SweepResult result = run_sweep(rq);
+  try {
+    if (!a.csv.empty()) write_file_atomic(a.csv, [&](std::ostream& out) { write_sweep_csv(out, result); });
+    if (!a.report.empty()) {
+      const std::vector<double> targets = a.targets_s.empty() ? default_targets_s(result) : a.targets_s;
+      write_sweep_report(a.report, rq, result, targets);
+    }
+  } catch (const std::runtime_error& e) {
+    throw SizingInputError(e.what());
+  }
+  return result;
+}
+
+std::span<const SweepColumnSpec> sweep_columns() { return kColumns; }
+
+SweepCell sweep_cell(const SweepPoint& p, std::size_t column) {
+  const Evaluation& e = p.result.evaluation;
+  switch (column) {
+    case 0: return p.load_gcm2;
+    case 1: return p.angle_deg;
+    case 2: return p.voltage_V;
+    case 3: return std::string(p.result.recommended ? "recommend" : "evaluate");
+    case 4: return e.set.tidy.speed_dps;
+    case 5: return e.set.tidy.accel_pct;
+    case 6: return e.set.tidy.jerk_pct;
+    case 7: return e.travel_s;
+    case 8: return time_if(e.completed, e.settling_s);
+    case 9: return time_if(e.completed, e.positioning_s);
+    case 10: return time_if(e.completed, e.cycle_s);
+    case 11: return time_if(e.completed, e.cycles_per_min);
+    case 12: return e.peak_torque_Nm;
+    case 13: return e.rms_torque_Nm;
+    case 14: return e.max_tracking_error_deg;
+    case 15: return e.steady_temperature_C;
+    case 16: return e.time_to_warning_s ? SweepCell(*e.time_to_warning_s) : SweepCell();
+    case 17: return e.feasible;
+    case 18: return static_cast<int64_t>(p.result.simulations);
+    case 19: return e.reason;
+    default: return {};
+  }
+}
+
+} // namespace sreh::sizing
