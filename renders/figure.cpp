@@ -104,7 +104,10 @@ std::string figure(const svg::Plot& p, bool interactive) {
     std::string labels = js_string(axis_title(p.x)), colors, dashed, data;
     std::set<std::string> seen;
     for (std::size_t k = 0; k < p.series.size(); ++k) {
-      std::string label = p.series[k].label.empty() ? fmt::format("({})", k + 1) : p.series[k].label;
+      // An unlabelled series is the other side of the one before (e.g. -limit).
+      std::string label = !p.series[k].label.empty() ? p.series[k].label
+                          : k > 0 && !p.series[k - 1].label.empty() ? p.series[k - 1].label + " (-)"
+                                                                   : fmt::format("({})", k + 1);
       while (!seen.insert(label).second) label.push_back('\'');
       labels.append(",").append(js_string(label));
       if (k) colors.append(","), dashed.append(",");

@@ -110,6 +110,7 @@ std::string settling_plot(const ReportInput& in, const Columns& c, std::size_t i
   const double b = mv.start_s + mv.travel_s;
   const double t_end = c.t.empty() ? b : c.t.back();
   const double wait_s = i < in.wait_ms.size() ? in.wait_ms[i] * 1e-3 : 0.0;
+  const double tol = i < in.tolerances_deg.size() ? in.tolerances_deg[i] : in.tolerance_deg;
   double x_lo = 0, x_hi = 0;
   if (mv.completed && mv.positioning_s >= 0) {
     const double f = mv.start_s + mv.positioning_s;
@@ -131,7 +132,7 @@ std::string settling_plot(const ReportInput& in, const Columns& c, std::size_t i
   }
   // Scaled to the tolerance window (issue 16): +-3 windows; larger
   // excursions leave the plot at its edge.
-  const double y_half = in.tolerance_deg > 0 ? 3.0 * in.tolerance_deg : 1.15 * std::max(max_dev, 1e-3);
+  const double y_half = tol > 0 ? 3.0 * tol : 1.15 * std::max(max_dev, 1e-3);
 
   svg::Plot p;
   p.id = fmt::format("p-settle-{}", i + 1);
@@ -140,8 +141,8 @@ std::string settling_plot(const ReportInput& in, const Columns& c, std::size_t i
   p.y = {"deviation from target", "deg", -y_half, y_half};
   p.series = {{"setpoint - target (A)", c.t, dev_setpoint, kSetpointColor, 1.5, false},
               {"actual - target (B)", c.t, dev_actual, kActualColor, 1.4, false}};
-  if (in.tolerance_deg > 0) {
-    p.bands.push_back({{}, {}, -in.tolerance_deg, in.tolerance_deg, fmt::format("tolerance window (5) +-{:g} deg", in.tolerance_deg), "#2ca02c", 0.14});
+  if (tol > 0) {
+    p.bands.push_back({{}, {}, -tol, tol, fmt::format("tolerance window (5) +-{:.3g} deg", tol), "#2ca02c", 0.14});
   }
   p.vlines.push_back({b, "(b)", "#555555"});
   if (mv.completed && mv.positioning_s >= 0) {

@@ -31,6 +31,7 @@ struct ReportInput {
   double tracking_limit_deg = 0; // index 87 limit drawn on the tracking-error plot; 0: none
   double tolerance_deg = 0;      // position tolerance (5), the window half width; 0: none
   std::vector<double> wait_ms;   // waiting time (3) per move; missing entries: not drawn
+  std::vector<double> tolerances_deg; // tolerance (5) per move (the latched set's); missing: tolerance_deg
   std::string command_line;      // how the run was started
   std::string version;           // sreh-twin version
   double sim_time_s = 0;

@@ -258,7 +258,7 @@ std::string to_svg(const Plot& p) {
                        xml_escape(color), dashed ? R"( stroke-dasharray="4 2")" : "");
     }
     o += fmt::format(R"(<text x="{:.1f}" y="{:.1f}">{}</text>)", lx + 20, ly, xml_escape(label));
-    lx += 30 + 6.2 * static_cast<double>(label.size());
+    lx += 28 + 6.0 * static_cast<double>(label.size());
   };
   for (const Series& s : p.series) legend_item(s.label, s.color, false, s.dashed);
   for (const HLine& l : p.hlines) legend_item(l.label, l.color, false, l.dashed);
