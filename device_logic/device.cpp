@@ -35,6 +35,7 @@ void Device::Impl::power_on(const SensorReadings& s) {
   init_origin();
   hold_phys = encoder;
   boot_mode = firmware_failed; // manual 9: only boot mode until a good image
+  link_up = true; // Startup until the master moves on, or off once the watchdog expires (A-LINK-3)
 }
 
 // ---------------------------------------------------------------------------
@@ -329,6 +330,7 @@ std::optional<PdInFrame> Device::exchange(const PdOutFrame& out, bool outputs_va
   if (!d.powered || d.comm_blocked) return std::nullopt;
   d.since_exchange_ns = 0;
   d.link_up = true;
+  d.com_phase = ComPhase::Operate;
   if (!d.boot_mode) {
     if (outputs_valid) {
       d.last_out_frame = out;
@@ -360,7 +362,7 @@ MotorCommand Device::tick(double dt_s, const SensorReadings& sensors) {
 
   // Communication watchdog (manual 5, A-LINK-1).
   d.since_exchange_ns += dt_ns;
-  if (d.link_up && d.since_exchange_ns > kLinkWatchdog_ns) {
+  if (d.link_up && d.since_exchange_ns > d.watchdog_ns()) {
     d.link_up = false;
     d.outputs_valid = false;
     d.store.abort_block(); // an open block download is discarded (iolink.md)
@@ -387,11 +389,38 @@ bool Device::in_boot_mode() const { return impl_->boot_mode; }
 LedColor Device::led() const { return impl_->led(); }
 std::vector<uint8_t> Device::save_nvm() const { return save_nvm_image(*impl_); }
 
+// Manual 1: Startup after every power-on until the master moves on;
+// Operate also with the outputs marked invalid (DeviceOperate, manual 5:
+// the device is in OPERATE then); off when the link is lost (A-LINK-3).
 IoLinkLedMode Device::io_link_led() const {
   const Impl& d = *impl_;
   if (!d.powered || d.comm_blocked) return IoLinkLedMode::NotConnected;
-  if (!d.link_up) return d.time_ns == 0 ? IoLinkLedMode::Startup : IoLinkLedMode::NotConnected;
-  return d.outputs_valid ? IoLinkLedMode::Operate : IoLinkLedMode::Preoperate;
+  switch (d.com_phase) {
+    case ComPhase::Startup: return d.link_up ? IoLinkLedMode::Startup : IoLinkLedMode::NotConnected;
+    case ComPhase::Preoperate: return d.link_up ? IoLinkLedMode::Preoperate : IoLinkLedMode::NotConnected;
+    case ComPhase::Operate: return d.link_up ? IoLinkLedMode::Operate : IoLinkLedMode::NotConnected;
+  }
+  return IoLinkLedMode::NotConnected;
+}
+
+bool Device::startup_cycle(ComPhase phase) {
+  Impl& d = *impl_;
+  if (!d.powered || d.comm_blocked) return false;
+  d.since_exchange_ns = 0;
+  d.link_up = true;
+  d.com_phase = phase == ComPhase::Operate ? ComPhase::Preoperate : phase; // OPERATE is exchange()
+  return true;
+}
+
+ComPhase Device::com_phase() const { return impl_->com_phase; }
+
+void Device::set_master_cycle_time(double cycle_s) {
+  impl_->master_cycle_ns = std::max<int64_t>(seconds_to_ns(cycle_s), 0);
+}
+
+// A-LINK-1: a link silent for longer than max(20 ms, 3 master cycles) is interrupted.
+int64_t Device::Impl::watchdog_ns() const {
+  return std::max(kLinkWatchdogMin_ns, kLinkWatchdogCycles * master_cycle_ns);
 }
 
 Telemetry Device::telemetry() const {

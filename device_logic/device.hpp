@@ -35,6 +35,19 @@ class Device {
   // (powered off, or after Back-To-Box until the next power cycle).
   std::optional<PdInFrame> exchange(const PdOutFrame& out, bool outputs_valid = true);
 
+  // One master cycle before OPERATE (IO-Link STARTUP or PREOPERATE): on-request
+  // data only, no process data; feeds the watchdog and sets the IO-Link LED
+  // (manual 1). After every power-on the device is in STARTUP until the master
+  // moves it on; exchange() is OPERATE. false: the device does not communicate.
+  bool startup_cycle(ComPhase phase);
+  ComPhase com_phase() const;
+
+  // The master's cycle time as the master announces it (IO-Link direct
+  // parameter MasterCycleTime, written during start-up). The link watchdog is
+  // max(20 ms, 3 master cycles) (A-LINK-1). Volatile: 2 ms after power-on
+  // until the master writes it again.
+  void set_master_cycle_time(double cycle_s);
+
   // One control step of dt_s seconds. Also runs the communication watchdog:
   // no exchange() for longer than the watchdog time is a link loss (manual 5).
   MotorCommand tick(double dt_s, const SensorReadings& sensors);
@@ -55,13 +68,21 @@ class Device {
   bool in_boot_mode() const;                 // manual 9
 
   // Manual 9: in boot mode (system commands 80, 81, 82 in order) a master
-  // transfers an update image. A valid image (see firmware_image()) restarts
-  // the device in normal mode with its configuration kept; an invalid one
-  // leaves it in boot mode, across power cycles, until a valid one arrives.
-  // Returns 0 or an ISDU error code (0x8020 when not in boot mode, 0x8041 bad image).
+  // transfers an update image over ISDU in chunks (A-FW-4: index 17344
+  // subindex 1 the chunks, subindex 2 start 0 / end 1). From the first chunk
+  // on the old application is gone: a power loss before a good image is
+  // complete leaves the module in boot mode. A valid image (firmware_image())
+  // restarts the device in normal mode with its configuration kept; an
+  // invalid one leaves it in boot mode, across power cycles, until a valid
+  // one arrives. firmware_update() is that whole sequence at once (no time
+  // passes); returns 0 or an ISDU error code (0x8020 when not in boot mode,
+  // 0x8041 bad image).
   uint16_t firmware_update(std::span<const uint8_t> image);
-  // A well-formed update image for `version` (format: A-FW-3).
-  static std::vector<uint8_t> firmware_image(std::string_view version);
+  // A well-formed update image for `version` (format: A-FW-3), padded with
+  // `size_B - 9 - version.size()` filler octets to `size_B` octets when larger.
+  static std::vector<uint8_t> firmware_image(std::string_view version, std::size_t size_B = 0);
+  static constexpr uint16_t kFirmwareDataIndex = 17344; // A-FW-4
+  static constexpr std::size_t kFirmwareChunk_B = 232;  // ISDU data maximum (IO-Link 1.1.3)
 
   struct Impl; // opaque: device_logic/device_impl.hpp
 

@@ -3,6 +3,7 @@
 #pragma once
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 #include "device_logic/device.hpp"
 #include "device_logic/faults.hpp"
@@ -17,7 +18,9 @@ namespace sreh {
 
 // Timing of monitors and the watchdog; see ASSUMPTIONS.md.
 inline constexpr int64_t kNsPerS = 1'000'000'000;
-inline constexpr int64_t kLinkWatchdog_ns = 20'000'000;      // A-LINK-1: 10 missed 2 ms cycles
+inline constexpr int64_t kLinkWatchdogMin_ns = 20'000'000;   // A-LINK-1: at least 20 ms ...
+inline constexpr int kLinkWatchdogCycles = 3;                 // ... and at least 3 master cycles
+inline constexpr int64_t kDefaultMasterCycle_ns = 2'000'000;  // manual 1: minimum cycle time 2 ms
 inline constexpr int64_t kVoltageDebounce_ns = 2'000'000;    // A-MON-1
 inline constexpr double kTemperatureWarning_C = 70.0;        // manual 7.3 (>= 70 C)
 inline constexpr double kTemperatureError_C = 75.0;          // manual 7.2 (>= 75 C)
@@ -28,6 +31,14 @@ inline constexpr double kTrackingErrorRawUnit_deg = 0.1;      // A-PARAM-1: raw 
 inline constexpr double kVelocityFilter_s = 0.001;           // A-MON-3: telemetry / torque-limit speed filter
 
 enum class MotionPhase : uint8_t { Hold, Travel, Settle };
+
+// Firmware transfer over ISDU (A-FW-4): the image arrives in chunks at
+// index 17344 subindex 1; subindex 2 takes the transfer commands.
+inline constexpr uint8_t kFirmwareChunkSub = 1;
+inline constexpr uint8_t kFirmwareCommandSub = 2;
+inline constexpr uint8_t kFirmwareCommandStart = 0;
+inline constexpr uint8_t kFirmwareCommandEnd = 1;
+inline constexpr std::size_t kFirmwareMaxImage = 4u << 20; // 4 MiB: far above any module image
 
 // Boot mode status, index 17343 (A-FW-1).
 enum class BootStatus : uint8_t { Normal = 0, BootMode = 1, BootModeAfterFailedUpdate = 2 };
@@ -45,6 +56,9 @@ struct Device::Impl {
   bool comm_blocked = false;  // Back-To-Box until the next power cycle (manual 6.6, 131)
   bool boot_mode = false;
   uint8_t fw_unlock_step = 0; // system commands 80, 81, 82 in order
+  std::vector<uint8_t> fw_image; // firmware chunks received so far (A-FW-4)
+  ComPhase com_phase = ComPhase::Startup; // IO-Link start-up after power-on (A-LINK-3)
+  int64_t master_cycle_ns = kDefaultMasterCycle_ns; // MasterCycleTime the master announced (A-LINK-1)
   int64_t time_ns = 0;        // since power-on
   int64_t since_exchange_ns = 0;
   bool link_up = false;       // cycles arriving (watchdog not expired)
@@ -123,6 +137,8 @@ struct Device::Impl {
   IsduResult read(uint16_t index, uint8_t subindex) const;
   IsduResult write(uint16_t index, uint8_t subindex, std::span<const uint8_t> data);
   uint16_t system_command(uint8_t cmd);
+  uint16_t firmware_write(uint8_t sub, std::span<const uint8_t> data); // device_firmware.cpp
+  int64_t watchdog_ns() const;
   uint8_t device_status() const;
   std::vector<uint8_t> detailed_device_status() const;
 

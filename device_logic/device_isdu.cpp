@@ -46,6 +46,7 @@ std::vector<uint8_t> Device::Impl::detailed_device_status() const {
 
 IsduResult Device::Impl::read(uint16_t index, uint8_t sub) const {
   if (!powered || comm_blocked) return isdu_error(kIsduServiceTempUnavailable);
+  if (index == Device::kFirmwareDataIndex) return isdu_error(kIsduAccessDenied); // write-only (A-FW-4)
   if (boot_mode && index != 17343 && index != 17342 && !(index >= 13 && index <= 23)) {
     return isdu_error(kIsduServiceTempUnavailable); // manual 9: normal functions disabled
   }
@@ -76,9 +77,10 @@ IsduResult Device::Impl::read(uint16_t index, uint8_t sub) const {
       return isdu_data({all[sub - 1]});
     }
     case 17343: {
-      const BootStatus st = !boot_mode ? BootStatus::Normal
-                            : firmware_failed ? BootStatus::BootModeAfterFailedUpdate
-                                              : BootStatus::BootMode;
+      // During a transfer: boot mode; after a failed or interrupted one: 2 (A-FW-1).
+      const BootStatus st = !boot_mode                             ? BootStatus::Normal
+                            : firmware_failed && fw_image.empty() ? BootStatus::BootModeAfterFailedUpdate
+                                                                  : BootStatus::BootMode;
       return plain(ParamType::UInt8, static_cast<int64_t>(st));
     }
     default:
@@ -93,6 +95,10 @@ IsduResult Device::Impl::write(uint16_t index, uint8_t sub, std::span<const uint
     if (data.size() > 1) return isdu_error(kIsduLengthOverrun);
     if (data.empty()) return isdu_error(kIsduLengthUnderrun);
     const uint16_t err = system_command(data[0]);
+    return err ? isdu_error(err) : IsduResult{};
+  }
+  if (index == Device::kFirmwareDataIndex) {
+    const uint16_t err = firmware_write(sub, data);
     return err ? isdu_error(err) : IsduResult{};
   }
   if (boot_mode) return isdu_error(kIsduServiceTempUnavailable);

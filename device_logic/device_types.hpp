@@ -34,6 +34,11 @@ std::string_view led_name(LedColor c);
 
 // IO-Link status LED next to the connector (manual 1).
 enum class IoLinkLedMode : uint8_t { NotConnected, Startup, Preoperate, Operate };
+std::string_view iolink_led_name(IoLinkLedMode m); // "off", "startup", "preoperate", "operate"
+
+// Where the master has taken the device's communication since power-on
+// (IO-Link 1.1.3: STARTUP, PREOPERATE, OPERATE; A-LINK-3).
+enum class ComPhase : uint8_t { Startup, Preoperate, Operate };
 
 // A snapshot for traces and renderers; the PLC never sees this.
 struct Telemetry {

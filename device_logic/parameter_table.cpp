@@ -119,8 +119,8 @@ constexpr std::array kHead = {
     text(18, 0, "Product name", PT::String, AC::R, ST::Identification, "Smart Rotary Module SREH-50-IOL", 0,
          "6.5"),
     text(19, 0, "Product ID", PT::String, AC::R, ST::Identification, "SREH-50-IOL", 0, "6.5"),
-    text(20, 0, "Product text", PT::String, AC::R, ST::Identification,
-         "Smart electrical rotary module with hollow shaft SREH-50-IOL", 0, "6.5"),
+    text(20, 0, "Product text", PT::String, AC::R, ST::Identification, // German original (sic), A-PARAM-15
+         "Smart electrical rotatary module with hollow shaft SREH-50-IOL", 0, "6.5"),
     text(21, 0, "Serial number", PT::String, AC::R, ST::Identification, kSerialNumber, 0,
          "6.5"),
     text(22, 0, "Hardware revision", PT::String, AC::R, ST::Identification, kHardwareRevision, 0, "6.5"),

@@ -100,4 +100,15 @@ std::string_view led_name(LedColor c) {
   return "?";
 }
 
+// Manual 1: the IO-Link status LED's four states.
+std::string_view iolink_led_name(IoLinkLedMode m) {
+  switch (m) {
+    case IoLinkLedMode::NotConnected: return "off";
+    case IoLinkLedMode::Startup: return "startup";
+    case IoLinkLedMode::Preoperate: return "preoperate";
+    case IoLinkLedMode::Operate: return "operate";
+  }
+  return "?";
+}
+
 } // namespace sreh

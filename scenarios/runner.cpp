@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "scenarios/isdu_value.hpp"
+#include "twin/firmware_transfer.hpp"
 #include "scenarios/snapshot.hpp"
 
 namespace sreh {
@@ -67,7 +68,7 @@ class ScenarioRun {
   // ---- time ----
   uint64_t cycles_for(double duration_s) const {
     // Rounded up to whole IO-Link cycles (A-SCN-3).
-    return static_cast<uint64_t>(std::ceil(duration_s / s_.sim.cycle_s - 1e-9));
+    return static_cast<uint64_t>(std::ceil(duration_s / twin_->master_cycle_s() - 1e-9));
   }
 
   void cycle() {
@@ -126,18 +127,27 @@ class ScenarioRun {
   void execute(const Step&, const std::string&, const WaitStep& a) { cycles(cycles_for(a.duration_s)); }
 
   void execute(const Step& step, const std::string& id, const WaitUntilStep& a) {
-    const std::string description = fmt::format("wait_until {} within {}", describe(a.until), seconds(a.within_s));
+    std::string description = fmt::format("wait_until {}", describe(a.until));
+    if (a.after_s > 0) description += " after " + seconds(a.after_s);
+    description += " within " + seconds(a.within_s);
     const uint64_t limit = cycles_for(a.within_s);
-    Evaluation e = evaluate(a.until, take_snapshot(*twin_));
-    for (uint64_t i = 0; i < limit && !e.passed; ++i) {
+    const uint64_t earliest = cycles_for(a.after_s); // whole cycles, as every duration (A-SCN-3)
+    uint64_t waited = 0;
+    Evaluation e = evaluate(a.until, take_snapshot(*twin_), vars_);
+    for (; waited < limit && !e.passed; ++waited) {
       cycle();
-      e = evaluate(a.until, take_snapshot(*twin_));
+      e = evaluate(a.until, take_snapshot(*twin_), vars_);
+    }
+    if (e.passed && waited < earliest) { // an exact window: not before after_s
+      record(id, step.loc, description, false, e.actual,
+             fmt::format("held already after {}, before after_s", seconds(static_cast<double>(waited) * twin_->master_cycle_s())));
+      return;
     }
     record(id, step.loc, description, e.passed, e.actual, "not reached; " + e.mismatch);
   }
 
   void execute(const Step& step, const std::string& id, const ExpectStep& a) {
-    const Evaluation e = evaluate(a.check, take_snapshot(*twin_));
+    const Evaluation e = evaluate(a.check, take_snapshot(*twin_), vars_);
     record(id, step.loc, "expect " + e.expected, e.passed, e.actual, e.mismatch);
   }
 
@@ -152,6 +162,13 @@ class ScenarioRun {
     }
     if (!res.ok()) {
       record(id, step.loc, description, false, "error " + hex_code(res.error), "answered error " + hex_code(res.error));
+      return;
+    }
+    if (a.save_as && !save_isdu_number(step, id, a, res)) return;
+    if (a.expect_bytes) {
+      description += " expect_bytes " + pattern_hex(*a.expect_bytes);
+      record(id, step.loc, description, bytes_match(*a.expect_bytes, res.data), "data " + bytes_hex(res.data),
+             "read " + bytes_hex(res.data));
       return;
     }
     if (!a.expect) {
@@ -172,8 +189,36 @@ class ScenarioRun {
       return;
     }
     const double v = static_cast<double>(*value);
-    record(id, step.loc, description, a.expect->number->contains(v), std::to_string(*value),
-           "read " + std::to_string(*value));
+    std::string why;
+    const bool ok = a.expect->number->holds(v, vars_, &why);
+    record(id, step.loc, description, ok, std::to_string(*value),
+           "read " + std::to_string(*value) + (why.empty() ? "" : " (" + why + ")"));
+  }
+
+  // save_as: the answer's number, decoded as for `expect`.
+  bool save_isdu_number(const Step& step, const std::string& id, const IsduReadStep& a, const IsduResult& res) {
+    const auto value = detail::decode_isdu_number(a.index, a.subindex, res.data);
+    if (!value) {
+      record(id, step.loc, fmt::format("isdu_read {}.{} save_as {}", a.index, a.subindex, *a.save_as), false,
+             "data " + bytes_hex(res.data), "not a number to save: data " + bytes_hex(res.data));
+      return false;
+    }
+    vars_[*a.save_as] = static_cast<double>(*value);
+    return true;
+  }
+
+  static std::string pattern_hex(const std::vector<std::optional<uint8_t>>& p) {
+    std::string s;
+    for (const auto& b : p) s += b ? fmt::format("{:02X}", *b) : "xx";
+    return s;
+  }
+
+  static bool bytes_match(const std::vector<std::optional<uint8_t>>& p, const std::vector<uint8_t>& data) {
+    if (p.size() != data.size()) return false;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (p[i] && *p[i] != data[i]) return false;
+    }
+    return true;
   }
 
   void execute(const Step&, const std::string& id, const IsduWriteStep& a) { isdu_write(a, id); }
@@ -197,21 +242,65 @@ class ScenarioRun {
   void execute(const Step&, const std::string&, const SupplyStep& a) { twin_->set_supply_voltage(a.voltage_V); }
 
   void execute(const Step&, const std::string&, const LinkStep& a) {
-    twin_->set_link_up(false);
+    if (a.mode != LinkStep::Mode::Up) twin_->set_link_up(false);
+    if (a.mode == LinkStep::Mode::Down) return; // stays down until `link: up`
     cycles(cycles_for(a.down_s));
+    // Back up: the master's first exchange is part of the step, so the next
+    // check reads the device's state now, not the frame from before the loss.
     twin_->set_link_up(true);
+    cycle();
   }
 
   void execute(const Step&, const std::string&, const PdValidStep& a) { twin_->set_outputs_valid(a.valid); }
-  void execute(const Step&, const std::string&, const PowerCycleStep&) { twin_->power_cycle(); }
+
+  // Manual 4.1: off for off_s (the world runs on) while a hand turns the
+  // flange, then on; the start-up follows in the next cycles (A-LINK-3).
+  void execute(const Step&, const std::string&, const PowerCycleStep& a) {
+    twin_->power_off();
+    twin_->turn_flange(a.turn_deg, a.off_s);
+    cycles(cycles_for(a.off_s));
+    twin_->power_on();
+  }
+
+  void execute(const Step&, const std::string&, const SetStep& a) {
+    if (a.ambient_C) twin_->set_ambient_C(*a.ambient_C);
+    if (a.master_cycle_s) twin_->set_master_cycle_s(*a.master_cycle_s); // checked by the parser
+  }
+
+  void execute(const Step&, const std::string&, const SaveStep& a) {
+    const Snapshot now = take_snapshot(*twin_);
+    for (const auto& [key, name] : a.quantity_to_name) vars_[name] = *quantity(key, now);
+  }
   void execute(const Step&, const std::string&, const CommentStep&) {}
 
+  // Manual 9 over ISDU in chunks (A-FW-4, A-FW-5): each write takes its
+  // cycles; with power_off_at the supply fails once that fraction is sent
+  // and returns at once (the module restarts).
   void execute(const Step&, const std::string& id, const FirmwareStep& a) {
-    std::vector<uint8_t> image = Device::firmware_image(a.version);
+    std::vector<uint8_t> image = Device::firmware_image(a.version, a.size_B);
     if (a.corrupt) image[image.size() / 2] ^= 0xFF;
-    const uint16_t err = twin_->firmware_update(image);
+    std::string description = fmt::format("firmware {} image {} ({} octets)", a.corrupt ? "corrupt" : "good",
+                                          a.version, image.size());
+    uint16_t err = 0;
+    for (const IsduWriteRequest& w : firmware_requests(image)) {
+      // The supply fails before the chunk that would pass F, at the latest
+      // before the end command (F = 1: the image is in, but never checked).
+      const bool end = w.subindex == 2 && w.data == std::vector<uint8_t>{1};
+      if (a.power_off_at && w.image_octets_after > 0 &&
+          (end || static_cast<double>(w.image_octets_after) > *a.power_off_at * static_cast<double>(image.size()))) {
+        twin_->power_cycle(); // the supply fails with this fraction sent
+        return;
+      }
+      cycles(isdu_write_cycles(w.data.size()));
+      err = twin_->isdu_write(w.index, w.subindex, w.data).error;
+      if (err != 0) break;
+    }
+    if (a.power_off_at) { // the transfer ended before the supply failed
+      record(id, a.loc, description + fmt::format(" power_off_at {:g}", *a.power_off_at), false,
+             err == 0 ? "ok" : "error " + hex_code(err), "the transfer ended before the supply failed");
+      return;
+    }
     const uint16_t want = a.expect_error.value_or(0);
-    std::string description = fmt::format("firmware {} image {}", a.corrupt ? "corrupt" : "good", a.version);
     description += a.expect_error ? " expect_error " + hex_code(*a.expect_error) : "";
     const std::string actual = err == 0 ? "ok" : "error " + hex_code(err);
     record(id, a.loc, description, err == want, actual, "answered " + actual);
@@ -222,7 +311,7 @@ class ScenarioRun {
     for (int i = 0; i < a.times; ++i) {
       pass_ = fmt::format("{}, pass {}/{}", outer, i + 1, a.times);
       run_steps(a.steps);
-      if (a.until && evaluate(*a.until, take_snapshot(*twin_)).passed) break;
+      if (a.until && evaluate(*a.until, take_snapshot(*twin_), vars_).passed) break;
     }
     pass_ = outer;
   }
@@ -297,6 +386,7 @@ class ScenarioRun {
   ProcessDataOut pd_{}; // the PLC's outputs; kept across power cycles like a real PLC's
   RunResult r_;
   std::string pass_; // ", pass 2/5" inside a repeat
+  Variables vars_;   // save_as / save, by name
 };
 
 std::vector<uint8_t> read_bytes(const std::string& path, const SourceLoc& loc) {

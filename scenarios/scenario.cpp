@@ -24,7 +24,7 @@ std::string Range::str() const {
 
 bool Conditions::empty() const {
   return state.empty() && !position_deg && !position_raw && !error_code && !warning_code && !error && !warning &&
-         led.empty() && !temperature_C && !supply_V && !velocity_dps && !tracking_error_deg;
+         led.empty() && iolink_led.empty() && !temperature_C && !supply_V && !velocity_dps && !tracking_error_deg;
 }
 
 } // namespace sreh

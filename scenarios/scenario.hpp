@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "device_logic/device_types.hpp"
+#include "scenarios/comparison.hpp"
 #include "twin/twin.hpp"
 
 namespace sreh {
@@ -34,32 +35,23 @@ class ScenarioError : public std::runtime_error {
   std::string message_;
 };
 
-// A closed interval. A plain number in a scenario becomes [x - tol, x + tol]
-// with `exact` set (tol is 0 for integers, half a wire count for degrees).
-struct Range {
-  double min = 0;
-  double max = 0;
-  bool exact = false; // written as one number, not [min, max]
-  bool contains(double v) const { return v >= min && v <= max; }
-  std::string str() const; // "90" or "[89.9, 90.1]"
-};
-
 // What a PLC (process data in) or the world (LED band, sensors) shows at an
 // instant. Every present field must hold; `state` and `led` hold when the
 // value is any of the listed ones.
 struct Conditions {
   std::vector<State> state;
-  std::optional<Range> position_deg;       // process data in, manual 2.5
-  std::optional<Range> position_raw;       // wire counts, 2^16 per revolution
-  std::optional<Range> error_code;         // bit field, manual 2.4
-  std::optional<Range> warning_code;
-  std::optional<bool> error;               // summary bits, manual 2.3
+  std::optional<Comparison> position_deg;       // process data in, manual 2.5
+  std::optional<Comparison> position_raw;       // wire counts, 2^16 per revolution
+  std::optional<Comparison> error_code;         // bit field, manual 2.4
+  std::optional<Comparison> warning_code;
+  std::optional<bool> error;                    // summary bits, manual 2.3
   std::optional<bool> warning;
-  std::vector<LedColor> led;               // LED band, manual 3.1 / index 83
-  std::optional<Range> temperature_C;      // world side (twin telemetry)
-  std::optional<Range> supply_V;           // world side: motor voltage at the module
-  std::optional<Range> velocity_dps;       // world side
-  std::optional<Range> tracking_error_deg; // world side
+  std::vector<LedColor> led;                    // LED band, manual 3.1 / index 83
+  std::vector<IoLinkLedMode> iolink_led;        // IO-Link status LED, manual 1
+  std::optional<Comparison> temperature_C;      // world side (twin telemetry)
+  std::optional<Comparison> supply_V;           // world side: motor voltage at the module
+  std::optional<Comparison> velocity_dps;       // world side
+  std::optional<Comparison> tracking_error_deg; // world side
   bool empty() const;
 };
 
@@ -77,13 +69,14 @@ struct PdStep {
 };
 
 struct WaitStep { double duration_s = 0; };
-struct WaitUntilStep { Conditions until; double within_s = 0; };
+// `after_s`: the conditions must not hold before it (an exact time window).
+struct WaitUntilStep { Conditions until; double within_s = 0; double after_s = 0; };
 struct ExpectStep { Conditions check; };
 
 // Expected value of an ISDU read: a number / range (raw wire value decoded
 // with the parameter table's type) or a string.
 struct IsduValueCheck {
-  std::optional<Range> number;
+  std::optional<Comparison> number;
   std::optional<std::string> text;
 };
 
@@ -92,6 +85,9 @@ struct IsduReadStep {
   uint8_t subindex = 0;
   std::optional<IsduValueCheck> expect;
   std::optional<uint16_t> expect_error; // the ISDU error code the device must answer
+  // expect_bytes: the whole answer octet by octet; nullopt = "xx", not checked.
+  std::optional<std::vector<std::optional<uint8_t>>> expect_bytes;
+  std::optional<std::string> save_as;   // remember the decoded number as $NAME
 };
 
 struct IsduWriteStep {
@@ -105,14 +101,30 @@ struct IsduWriteStep {
 
 struct TorqueStep { double torque_Nm = 0; std::optional<double> for_s; }; // no for_s: stays on
 struct SupplyStep { double voltage_V = 24; };
-struct LinkStep { double down_s = 0; };
+// `link: {down_s}` = down, wait, up; `link: down` / `link: up` alone. Going
+// up takes one cycle: the master's first exchange (scenarios/README.md Timing).
+struct LinkStep {
+  enum class Mode { DownFor, Down, Up };
+  Mode mode = Mode::DownFor;
+  double down_s = 0;
+};
 struct PdValidStep { bool valid = true; };
-struct PowerCycleStep {};
+// `power: cycle` (off_s 0) or `power: {off_s, turn_deg}` (manual 4.1).
+struct PowerCycleStep { double off_s = 0; double turn_deg = 0; };
+// `set:`: rig settings that change mid-run.
+struct SetStep {
+  std::optional<double> ambient_C;
+  std::optional<double> master_cycle_s;
+};
+// `save:`: remember a condition quantity (position_deg, ...) as $NAME.
+struct SaveStep { std::vector<std::pair<std::string, std::string>> quantity_to_name; };
 struct CommentStep { std::string text; };
 // Manual 9: transfer a firmware image in boot mode; `corrupt` spoils its checksum.
 struct FirmwareStep {
   bool corrupt = false;
   std::string version = "1.1.0";
+  std::size_t size_B = 0;               // 0: the smallest image for `version`
+  std::optional<double> power_off_at;   // the supply fails when this fraction is transferred
   std::optional<uint16_t> expect_error; // absent: the update must succeed
   SourceLoc loc;
 };
@@ -126,7 +138,7 @@ struct RepeatStep {
 
 using StepAction = std::variant<PdStep, WaitStep, WaitUntilStep, ExpectStep, IsduReadStep, IsduWriteStep,
                                 TorqueStep, SupplyStep, LinkStep, PdValidStep, PowerCycleStep, CommentStep,
-                                FirmwareStep, RepeatStep>;
+                                FirmwareStep, RepeatStep, SetStep, SaveStep>;
 
 struct Step {
   std::string number; // "3", or "5.2" inside a repeat

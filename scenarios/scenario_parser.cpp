@@ -4,17 +4,22 @@
 #include "scenarios/scenario_parser.hpp"
 #include "twin/models_dir.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <set>
 #include <sstream>
 
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
 #include "device_logic/units.hpp"
+#include "scenarios/comparison_parser.hpp"
+#include "scenarios/conformance_steps.hpp"
 #include "scenarios/isdu_value.hpp"
+#include "scenarios/snapshot.hpp"
 #include "scenarios/yaml_reader.hpp"
 
 namespace sreh {
@@ -36,11 +41,11 @@ constexpr int kMaxRepeat = 100000;
 
 const std::vector<std::string_view> kConditionKeys = {
     "state", "position_deg", "position_raw", "error_code", "warning_code", "error", "warning",
-    "led", "temperature_C", "supply_V", "velocity_dps", "tracking_error_deg"};
+    "led", "iolink_led", "temperature_C", "supply_V", "velocity_dps", "tracking_error_deg"};
 
 const std::vector<std::string_view> kStepKinds = {
     "pd", "wait_s", "wait_until", "expect", "isdu_read", "isdu_write", "torque", "supply",
-    "link", "pd_valid", "power", "comment", "firmware", "repeat"};
+    "link", "pd_valid", "power", "comment", "firmware", "repeat", "set", "save"};
 
 std::optional<State> state_from_name(const std::string& s) {
   for (State st : {State::MotorOff, State::Ready, State::Busy, State::Done, State::ErrorOn, State::ErrorOff}) {
@@ -53,6 +58,14 @@ std::optional<LedColor> led_from_name(const std::string& s) {
   for (LedColor c : {LedColor::Off, LedColor::Green, LedColor::Yellow, LedColor::Blue, LedColor::Red, LedColor::Orange,
                      LedColor::White, LedColor::Violet}) {
     if (led_name(c) == s) return c;
+  }
+  return std::nullopt;
+}
+
+std::optional<IoLinkLedMode> iolink_led_from_name(const std::string& s) {
+  for (IoLinkLedMode m : {IoLinkLedMode::NotConnected, IoLinkLedMode::Startup, IoLinkLedMode::Preoperate,
+                          IoLinkLedMode::Operate}) {
+    if (iolink_led_name(m) == s) return m;
   }
   return std::nullopt;
 }
@@ -74,6 +87,7 @@ class Parser {
     }
     if (root["world"]) s.hard_stops = parse_world(root["world"]);
     if (root["sim"]) s.sim = parse_sim(root["sim"]);
+    sim_ = s.sim;
     if (root["stop_on_failure"]) s.stop_on_failure = r_.boolean(root["stop_on_failure"], "stop_on_failure");
     const YAML::Node steps = r_.require(root, "steps", "scenario");
     s.steps = parse_steps(steps, "", "steps");
@@ -165,9 +179,8 @@ class Parser {
     SimSetup s;
     if (n["physics_dt_s"]) s.physics_dt_s = r_.number(n["physics_dt_s"], "sim.physics_dt_s", 1e-6, 1e-3);
     // manual 1: minimum IO-Link cycle time 2 ms.
-    if (n["cycle_s"]) s.cycle_s = r_.number(n["cycle_s"], "sim.cycle_s", 0.002, 1.0);
-    const double ratio = s.cycle_s / s.physics_dt_s;
-    if (std::abs(ratio - std::round(ratio)) > 1e-6) {
+    if (n["cycle_s"]) s.cycle_s = r_.number(n["cycle_s"], "sim.cycle_s", detail::kMinCycleS, detail::kMaxCycleS);
+    if (!detail::integer_multiple(s.cycle_s, s.physics_dt_s)) {
       r_.fail(n["cycle_s"] ? n["cycle_s"] : n["physics_dt_s"],
               fmt::format("sim: cycle_s {} must be an integer multiple of physics_dt_s {}", s.cycle_s, s.physics_dt_s));
     }
@@ -226,6 +239,8 @@ class Parser {
     const std::string& k = step.kind;
     if (k == "pd") step.action = parse_pd(v, kw);
     else if (k == "wait_s") step.action = WaitStep{r_.number(v, kw, 0.0, kMaxDurationS)};
+    else if (k == "set") step.action = detail::parse_set(r_, v, kw, sim_.physics_dt_s);
+    else if (k == "save") step.action = detail::parse_save(r_, v, kw, saved_);
     else if (k == "wait_until") step.action = parse_wait_until(v, kw);
     else if (k == "expect") {
       r_.check_map(v, kw, kConditionKeys);
@@ -243,23 +258,11 @@ class Parser {
       r_.check_map(v, kw, {"V"});
       step.action = SupplyStep{r_.number(r_.require(v, "V", kw), kw + ".V", 0.0, kMaxSupplyV)};
     } else if (k == "link") {
-      r_.check_map(v, kw, {"down_s"});
-      step.action = LinkStep{r_.number(r_.require(v, "down_s", kw), kw + ".down_s", 0.0, kMaxDurationS)};
+      step.action = detail::parse_link(r_, v, kw);
     } else if (k == "pd_valid") step.action = PdValidStep{r_.boolean(v, kw)};
-    else if (k == "power") {
-      if (r_.text(v, kw) != "cycle") r_.fail(v, fmt::format("{}: only 'cycle' is known, got '{}'", kw, v.Scalar()));
-      step.action = PowerCycleStep{};
-    } else if (k == "comment") step.action = CommentStep{r_.text(v, kw)};
+    else if (k == "power") step.action = detail::parse_power(r_, v, kw); else if (k == "comment") step.action = CommentStep{r_.text(v, kw)};
     else if (k == "firmware") {
-      r_.check_map(v, kw, {"image", "version", "expect_error"});
-      FirmwareStep f;
-      const std::string image = r_.text(r_.require(v, "image", kw), kw + ".image");
-      if (image != "good" && image != "corrupt") {
-        r_.fail(v["image"], fmt::format("{}.image: 'good' or 'corrupt', got '{}'", kw, image));
-      }
-      f.corrupt = image == "corrupt";
-      if (v["version"]) f.version = r_.text(v["version"], kw + ".version");
-      if (v["expect_error"]) f.expect_error = isdu_error_code(v["expect_error"], kw + ".expect_error");
+      FirmwareStep f = detail::parse_firmware(r_, v, kw);
       f.loc = step.loc;
       step.action = f;
     }
@@ -314,9 +317,16 @@ class Parser {
   WaitUntilStep parse_wait_until(const YAML::Node& n, const std::string& what) {
     std::vector<std::string_view> keys = kConditionKeys;
     keys.push_back("within_s");
+    keys.push_back("after_s");
     r_.check_map(n, what, keys);
     WaitUntilStep w;
     w.within_s = r_.number(r_.require(n, "within_s", what), what + ".within_s", 0.0, kMaxDurationS);
+    if (n["after_s"]) {
+      w.after_s = r_.number(n["after_s"], what + ".after_s", 0.0, kMaxDurationS);
+      if (w.after_s > w.within_s) {
+        r_.fail(n["after_s"], fmt::format("{}.after_s: {} is later than within_s {}", what, w.after_s, w.within_s));
+      }
+    }
     w.until = parse_conditions(n, what);
     if (w.until.empty()) r_.fail(n, what + ": no condition to wait for");
     return w;
@@ -342,8 +352,9 @@ class Parser {
     };
     names("state", state_from_name, c.state, "MotorOff, Ready, Busy, Done, ErrorOn, ErrorOff");
     names("led", led_from_name, c.led, "off, green, yellow, blue, red, orange, white, violet");
-    auto num = [&](const char* key, std::optional<Range>& out, double min, double max, bool ints, double tol) {
-      if (n[key]) out = r_.range(n[key], fmt::format("{}.{}", what, key), min, max, ints, tol);
+    names("iolink_led", iolink_led_from_name, c.iolink_led, "off, startup, preoperate, operate");
+    auto num = [&](const char* key, std::optional<Comparison>& out, double min, double max, bool ints, double tol) {
+      if (n[key]) out = detail::read_comparison(r_, n[key], fmt::format("{}.{}", what, key), {min, max, ints, tol}, saved_);
     };
     if (n["position_deg"] && n["position_raw"]) r_.fail(n["position_raw"], what + ": give position_deg or position_raw, not both");
     num("position_deg", c.position_deg, -kWireLimitDeg, kWireLimitDeg, false, kHalfWireCountDeg);
@@ -365,20 +376,33 @@ class Parser {
   }
 
   IsduReadStep parse_isdu_read(const YAML::Node& n, const std::string& what) {
-    r_.check_map(n, what, {"index", "subindex", "expect", "expect_error"});
+    r_.check_map(n, what, {"index", "subindex", "expect", "expect_error", "expect_bytes", "save_as"});
     IsduReadStep s;
     s.index = static_cast<uint16_t>(r_.integer(r_.require(n, "index", what), what + ".index", 0, 0xFFFF));
     if (n["subindex"]) s.subindex = static_cast<uint8_t>(r_.integer(n["subindex"], what + ".subindex", 0, 0xFF));
-    if (n["expect"] && n["expect_error"]) r_.fail(n["expect_error"], what + ": give expect or expect_error, not both");
+    const int given = (n["expect"] ? 1 : 0) + (n["expect_error"] ? 1 : 0) + (n["expect_bytes"] ? 1 : 0);
+    if (given > 1) {
+      r_.fail(n["expect_error"] ? n["expect_error"] : n["expect_bytes"],
+              what + ": give one of expect, expect_bytes, expect_error");
+    }
+    if (n["save_as"] && n["expect_error"]) r_.fail(n["save_as"], what + ": save_as needs an answer, not expect_error");
+    if (n["save_as"] && detail::is_text_parameter(s.index, s.subindex)) {
+      r_.fail(n["save_as"], fmt::format("{}.save_as: index {}.{} is a text, only numbers can be saved", what, s.index, s.subindex));
+    }
+    if (n["expect_bytes"]) s.expect_bytes = detail::parse_hex_pattern(r_, n["expect_bytes"], what + ".expect_bytes");
     if (n["expect_error"]) s.expect_error = isdu_error_code(n["expect_error"], what + ".expect_error");
     if (const YAML::Node e = n["expect"]) {
       IsduValueCheck check;
       if (detail::is_text_parameter(s.index, s.subindex) || (e.IsScalar() && r_.is_quoted(e))) {
         check.text = r_.text(e, what + ".expect");
       } else {
-        check.number = r_.range(e, what + ".expect", -4294967296.0, 4294967295.0, true, 0);
+        check.number = detail::read_comparison(r_, e, what + ".expect", {-4294967296.0, 4294967295.0, true, 0}, saved_);
       }
       s.expect = check;
+    }
+    if (n["save_as"]) { // after expect: a check may compare with the value saved before
+      s.save_as = detail::read_variable_name(r_, n["save_as"], what + ".save_as");
+      saved_.insert(*s.save_as);
     }
     return s;
   }
@@ -440,6 +464,8 @@ class Parser {
 
   YamlReader r_;
   std::string base_dir_;
+  SimSetup sim_;                // for checks of later steps (set.master_cycle_s)
+  std::set<std::string> saved_; // names saved so far, in file order
 };
 
 } // namespace

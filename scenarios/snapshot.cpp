@@ -26,6 +26,7 @@ Snapshot take_snapshot(const Twin& twin) {
   s.telemetry = twin.telemetry();
   s.state = state_from_status_bits(s.in, s.telemetry.state);
   s.position_deg = wire_counts_to_deg(s.in.actual_position);
+  s.iolink_led = twin.iolink_led();
   return s;
 }
 
@@ -33,9 +34,12 @@ namespace {
 
 class Evaluator {
  public:
-  void number(const char* name, const std::optional<Range>& want, double actual, int decimals) {
+  explicit Evaluator(const Variables& vars) : vars_(vars) {}
+  void number(const char* name, const std::optional<Comparison>& want, double actual, int decimals) {
     if (!want) return;
-    add(name, want->str(), fmt::format("{:.{}f}", actual, decimals), want->contains(actual));
+    std::string why;
+    const bool ok = want->holds(actual, vars_, &why);
+    add(name, want->str(), fmt::format("{:.{}f}", actual, decimals) + (why.empty() ? "" : " (" + why + ")"), ok);
   }
   void flag(const char* name, const std::optional<bool>& want, bool actual) {
     if (!want) return;
@@ -66,13 +70,14 @@ class Evaluator {
       append(e_.mismatch, fmt::format("{} {} (want {})", name, actual, want));
     }
   }
+  const Variables& vars_;
   Evaluation e_;
 };
 
 } // namespace
 
-Evaluation evaluate(const Conditions& c, const Snapshot& s) {
-  Evaluator ev;
+Evaluation evaluate(const Conditions& c, const Snapshot& s, const Variables& vars) {
+  Evaluator ev(vars);
   ev.one_of("state", c.state, s.state, state_name);
   ev.number("position_deg", c.position_deg, s.position_deg, 4);
   ev.number("position_raw", c.position_raw, static_cast<double>(s.in.actual_position), 0);
@@ -81,11 +86,24 @@ Evaluation evaluate(const Conditions& c, const Snapshot& s) {
   ev.flag("error", c.error, s.in.error);
   ev.flag("warning", c.warning, s.in.warning);
   ev.one_of("led", c.led, s.telemetry.led, led_name);
+  ev.one_of("iolink_led", c.iolink_led, s.iolink_led, iolink_led_name);
   ev.number("temperature_C", c.temperature_C, s.telemetry.temperature_C, 2);
   ev.number("supply_V", c.supply_V, s.telemetry.supply_V, 3);
   ev.number("velocity_dps", c.velocity_dps, s.telemetry.velocity_dps, 2);
   ev.number("tracking_error_deg", c.tracking_error_deg, s.telemetry.tracking_error_deg, 4);
   return ev.result();
+}
+
+std::optional<double> quantity(std::string_view key, const Snapshot& s) {
+  if (key == "position_deg") return s.position_deg;
+  if (key == "position_raw") return static_cast<double>(s.in.actual_position);
+  if (key == "error_code") return s.in.error_code;
+  if (key == "warning_code") return s.in.warning_code;
+  if (key == "temperature_C") return s.telemetry.temperature_C;
+  if (key == "supply_V") return s.telemetry.supply_V;
+  if (key == "velocity_dps") return s.telemetry.velocity_dps;
+  if (key == "tracking_error_deg") return s.telemetry.tracking_error_deg;
+  return std::nullopt;
 }
 
 } // namespace sreh

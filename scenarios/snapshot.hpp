@@ -1,7 +1,9 @@
 // What a scenario can check at an instant: the PLC's view (process data in,
 // manual 2.3) plus the world's (LED band, temperature, supply, motion).
 #pragma once
+#include <optional>
 #include <string>
+#include <string_view>
 
 #include "device_logic/process_data.hpp"
 #include "scenarios/scenario.hpp"
@@ -15,6 +17,7 @@ struct Snapshot {
   Telemetry telemetry;
   State state = State::MotorOff; // from the status bits of `in` (manual 3.1 table)
   double position_deg = 0;       // from `in`, 2^16 counts per 360 deg
+  IoLinkLedMode iolink_led = IoLinkLedMode::NotConnected; // manual 1
 };
 
 // State as the PLC reads it from the status bits; `fallback` where the bits
@@ -29,6 +32,14 @@ struct Evaluation {
   std::string mismatch; // only the failing ones: "state Busy (want Done)"
 };
 
-Evaluation evaluate(const Conditions& c, const Snapshot& s);
+// `vars`: values saved earlier in the run, for $NAME comparisons.
+Evaluation evaluate(const Conditions& c, const Snapshot& s, const Variables& vars = {});
+
+// The numeric condition quantities a `save` step can remember, by key
+// ("position_deg", ...); nullopt for a key that is not one.
+std::optional<double> quantity(std::string_view key, const Snapshot& s);
+inline constexpr std::string_view kSavableQuantities[] = {"position_deg", "position_raw", "error_code", "warning_code",
+                                                          "temperature_C", "supply_V", "velocity_dps",
+                                                          "tracking_error_deg"};
 
 } // namespace sreh

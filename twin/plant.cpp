@@ -93,6 +93,14 @@ const SensorReadings& Plant::step(const MotorCommand& cmd) {
   return sensors_;
 }
 
+void Plant::set_flange_angle(double angle_rad, double velocity_rad_s) {
+  mjData* d = data_.get();
+  d->qpos[qpos_adr_] = angle_rad;
+  d->qvel[dof_adr_] = velocity_rad_s;
+  mj_forward(model_.get(), d);
+  sensors_.encoder_counts = rad_to_internal_counts(angle_rad);
+}
+
 void Plant::check_warnings() {
   // 2.2.2 silently resets the data on bad numbers (mujoco.md): fatal here.
   static constexpr std::pair<int, const char*> kFatal[] = {

@@ -50,8 +50,13 @@ class Plant {
   // back there at rest, so the motor works against it (stall, no motion).
   void set_flange_blocked(bool blocked);
   bool flange_blocked() const { return blocked_; }
-  void set_ambient_C(double ambient_C) { thermal_.set_ambient_C(ambient_C); }
   void set_supply_voltage(double volts) { supply_.set_source_voltage(volts); sensors_.supply_V = supply_.bus_voltage_V(); }
+  void set_ambient_C(double celsius) { thermal_.set_ambient_C(celsius); }
+  // Puts the flange at `angle_rad` (physical frame) moving at `velocity_rad_s`,
+  // as a hand turning it does (manual 4.1: moved while switched off); the
+  // encoder reading follows at once. The only place the plant's joint state is
+  // set from outside.
+  void set_flange_angle(double angle_rad, double velocity_rad_s = 0.0);
 
   // State, physical frame.
   double angle_rad() const;

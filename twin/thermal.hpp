@@ -33,7 +33,7 @@ class Thermal {
   double housing_C() const { return housing_C_; }
   double sensor_C() const { return winding_C_; } // A-TWIN-THERMAL-4: the sensor reads the winding node
   double ambient_C() const { return spec_.ambient_C; }
-  void set_ambient_C(double ambient_C) { spec_.ambient_C = ambient_C; } // nodes follow with their time constants
+  void set_ambient_C(double celsius) { spec_.ambient_C = celsius; } // the room warms or cools; the nodes follow
   // Steady state for a constant loss: ambient + P (R_wh + R_ha) at the winding.
   double steady_winding_C(double loss_W) const;
   const ThermalConstants& constants() const { return constants_; }

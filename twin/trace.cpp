@@ -30,7 +30,7 @@ void put_hex(std::string& line, const std::array<uint8_t, N>& bytes) {
 
 void write_trace_csv(std::ostream& out, const std::vector<TraceRow>& rows) {
   out << "t_s,state,setpoint_deg,position_deg,tracking_error_deg,velocity_dps,torque_Nm,supply_V,temperature_C,"
-         "error_code,warning_code,pd_out_hex,pd_in_hex,led,torque_limit_Nm,external_torque_Nm\n";
+         "error_code,warning_code,pd_out_hex,pd_in_hex,led,torque_limit_Nm,external_torque_Nm,iolink_led\n";
   std::string line;
   for (const TraceRow& r : rows) {
     line.clear();
@@ -54,7 +54,8 @@ void write_trace_csv(std::ostream& out, const std::vector<TraceRow>& rows) {
     line.push_back(',');
     put_fixed(line, r.torque_limit_Nm, 6);
     put_fixed(line, r.external_torque_Nm, 6);
-    line.back() = '\n';
+    line.append(iolink_led_name(r.iolink_led));
+    line.push_back('\n');
     out << line;
   }
 }

@@ -28,6 +28,7 @@ struct TraceRow {
   PdOutFrame pd_out{};
   PdInFrame pd_in{};
   LedColor led = LedColor::Off;
+  IoLinkLedMode iolink_led = IoLinkLedMode::NotConnected; // manual 1
 };
 
 // One executed move command (interfaces.md `moves`), manual 3.5.2 terms.

@@ -6,20 +6,30 @@
 #include <stdexcept>
 
 #include "device_logic/units.hpp"
+#include "twin/firmware_transfer.hpp"
 #include "twin/plant.hpp"
 
 namespace sreh {
 namespace {
 
-int steps_per_cycle(const TwinConfig& c) {
-  if (!(c.physics_dt_s > 0) || !(c.cycle_s > 0)) {
+// Manual 1: at least 2 ms; IO-Link's MasterCycleTime encoding ends at 132.8 ms (A-LINK-2).
+constexpr double kMinCycle_s = 0.002;
+constexpr double kMaxCycle_s = 0.1328;
+constexpr int kStartupCycles = 2; // one STARTUP, one PREOPERATE cycle (A-LINK-3)
+
+int steps_per_cycle(double cycle_s, double physics_dt_s) {
+  if (!(physics_dt_s > 0) || !(cycle_s > 0)) {
     throw std::invalid_argument("twin: physics_dt_s and cycle_s must be positive");
   }
-  const double ratio = c.cycle_s / c.physics_dt_s;
+  if (cycle_s < kMinCycle_s - 1e-12 || cycle_s > kMaxCycle_s + 1e-12) {
+    throw std::invalid_argument("twin: master cycle " + std::to_string(cycle_s) +
+                                " s is outside 0.002 .. 0.1328 s (manual 1, IO-Link MasterCycleTime)");
+  }
+  const double ratio = cycle_s / physics_dt_s;
   const double rounded = std::round(ratio);
   if (rounded < 1 || std::abs(ratio - rounded) > 1e-9 * ratio) {
-    throw std::invalid_argument("twin: cycle_s (" + std::to_string(c.cycle_s) +
-                                ") must be an integer multiple of physics_dt_s (" + std::to_string(c.physics_dt_s) + ")");
+    throw std::invalid_argument("twin: cycle_s (" + std::to_string(cycle_s) +
+                                ") must be an integer multiple of physics_dt_s (" + std::to_string(physics_dt_s) + ")");
   }
   return static_cast<int>(rounded);
 }
@@ -40,7 +50,10 @@ Device make_device(const TwinConfig& c) { return c.nvm_image ? Device(*c.nvm_ima
 
 struct Twin::Impl {
   explicit Impl(const TwinConfig& c)
-      : config(c), steps(steps_per_cycle(c)), plant(plant_config(c)), device(make_device(c)) {}
+      : config(c), steps(steps_per_cycle(c.cycle_s, c.physics_dt_s)), plant(plant_config(c)), device(make_device(c)) {
+    cycle_ns = seconds_to_ns(c.cycle_s);
+    device.set_master_cycle_time(c.cycle_s); // announced before t = 0 (the run starts in OPERATE)
+  }
 
   // Manual 4.2 (index 82): process-data degrees run against the physical
   // frame when the positive direction is counterclockwise. Only the ghost
@@ -86,7 +99,7 @@ struct Twin::Impl {
   void record_row(const PdOutFrame& out_frame) {
     const Telemetry tel = device.telemetry();
     TraceRow row;
-    row.t_s = static_cast<double>(cycles) * config.cycle_s;
+    row.t_s = static_cast<double>(time_ns) * 1e-9;
     row.state = tel.state;
     row.setpoint_deg = tel.setpoint_deg;
     row.position_deg = tel.position_deg;
@@ -101,7 +114,8 @@ struct Twin::Impl {
     row.warning_code = tel.warning_code;
     row.pd_out = out_frame;
     row.pd_in = last_pd_in;
-    row.led = tel.led;
+    row.led = device.powered() ? tel.led : LedColor::Off;
+    row.iolink_led = device.io_link_led();
     trace.push_back(row);
   }
 
@@ -122,6 +136,13 @@ struct Twin::Impl {
   bool link_up = true;
   PdInFrame last_pd_in{};
   uint64_t cycles = 0;
+  int64_t time_ns = 0;     // sum of the master cycles run
+  int64_t cycle_ns = 0;    // the master cycle now
+  int startup_left = 0;    // master cycles of STARTUP / PREOPERATE still to run after a power-on
+  // A hand turning the flange (turn_flange): from start_rad by total_rad over n cycles.
+  double turn_start_rad = 0, turn_total_rad = 0;
+  uint64_t turn_cycles = 0, turn_done = 0;
+  bool turning = false;
   double direction = 1.0;
   std::vector<TraceRow> trace;
   std::vector<MoveRecord> moves;
@@ -132,6 +153,9 @@ struct Twin::Impl {
 };
 
 Twin::Twin(const TwinConfig& config) : impl_(std::make_unique<Impl>(config)) {
+  // A run starts on a running rig: the master took the port through STARTUP
+  // and PREOPERATE before t = 0 and has exchanged once (A-LINK-3).
+  if (const auto in = impl_->device.exchange(encode(impl_->pd_out), impl_->outputs_valid)) impl_->last_pd_in = *in;
   impl_->refresh_direction();
   impl_->update_visuals();
 }
@@ -147,28 +171,94 @@ ProcessDataIn Twin::pd_in() const { return decode_in(impl_->last_pd_in); }
 IsduResult Twin::isdu_read(uint16_t index, uint8_t subindex) { return impl_->device.isdu_read(index, subindex); }
 
 IsduResult Twin::isdu_write(uint16_t index, uint8_t subindex, std::span<const uint8_t> data) {
-  IsduResult r = impl_->device.isdu_write(index, subindex, data);
-  impl_->refresh_direction(); // index 82, or a reset to factory settings
+  Impl& s = *impl_;
+  const ComPhase before = s.device.com_phase();
+  IsduResult r = s.device.isdu_write(index, subindex, data);
+  s.refresh_direction(); // index 82, or a reset to factory settings
+  // A completed firmware update restarts the device (manual 9): the master
+  // starts the port up again.
+  if (before != ComPhase::Startup && s.device.com_phase() == ComPhase::Startup) {
+    s.moves_seen = 0;
+    s.move_open = false;
+    s.startup_left = kStartupCycles;
+  }
   return r;
 }
 
 void Twin::set_external_torque(double torque_Nm) { impl_->plant.set_external_torque(torque_Nm); }
 void Twin::set_supply_voltage(double volts) { impl_->plant.set_supply_voltage(volts); }
 void Twin::set_flange_blocked(bool blocked) { impl_->plant.set_flange_blocked(blocked); }
-void Twin::set_ambient_C(double ambient_C) { impl_->plant.set_ambient_C(ambient_C); }
+
+void Twin::set_ambient_C(double celsius) { impl_->plant.set_ambient_C(celsius); }
+
+void Twin::set_master_cycle_s(double cycle_s) {
+  Impl& s = *impl_;
+  s.steps = steps_per_cycle(cycle_s, s.config.physics_dt_s); // throws before anything changes
+  s.config.cycle_s = cycle_s;
+  s.cycle_ns = seconds_to_ns(cycle_s);
+  s.device.set_master_cycle_time(cycle_s); // the master announces it (MasterCycleTime)
+}
+
+double Twin::master_cycle_s() const { return impl_->config.cycle_s; }
+
+void Twin::power_off() { impl_->device.power_off(); }
+
+void Twin::power_on() {
+  Impl& s = *impl_;
+  if (s.device.powered()) return;
+  s.device.power_on(s.plant.sensors());
+  s.moves_seen = 0;
+  s.move_open = false;
+  s.startup_left = kStartupCycles;
+  s.refresh_direction();
+}
+
+bool Twin::powered() const { return impl_->device.powered(); }
 
 void Twin::power_cycle() {
-  impl_->device.power_off();
-  impl_->device.power_on(impl_->plant.sensors());
-  impl_->moves_seen = 0;
-  impl_->refresh_direction();
+  power_off();
+  power_on();
+}
+
+void Twin::turn_flange(double turn_deg, double over_s) {
+  Impl& s = *impl_;
+  const uint64_t n = over_s > 0 ? static_cast<uint64_t>(std::ceil(over_s / s.config.cycle_s - 1e-9)) : 0;
+  const double start = s.plant.angle_rad();
+  if (n == 0) {
+    s.plant.set_flange_angle(start + deg_to_rad(turn_deg));
+    return;
+  }
+  s.turning = true;
+  s.turn_start_rad = start;
+  s.turn_total_rad = deg_to_rad(turn_deg);
+  s.turn_cycles = n;
+  s.turn_done = 0;
+}
+
+void Twin::power_off_for(double off_s, double turn_deg) {
+  power_off();
+  turn_flange(turn_deg, off_s);
+  const uint64_t n = off_s > 0 ? static_cast<uint64_t>(std::ceil(off_s / impl_->config.cycle_s - 1e-9)) : 0;
+  for (uint64_t i = 0; i < n; ++i) run_cycle();
+  power_on();
 }
 
 void Twin::run_cycle() {
   Impl& s = *impl_;
   const PdOutFrame out_frame = encode(s.pd_out);
+  if (s.turning) { // a hand turns the flange evenly (manual 4.1)
+    const double per_cycle = s.turn_total_rad / static_cast<double>(s.turn_cycles);
+    const double at = s.turn_start_rad + per_cycle * static_cast<double>(s.turn_done);
+    s.plant.set_flange_angle(at, per_cycle / s.config.cycle_s);
+  }
   if (s.link_up && s.device.powered()) {
-    if (const auto in = s.device.exchange(out_frame, s.outputs_valid)) {
+    // After a power-on the master wakes the device up and runs STARTUP and
+    // PREOPERATE (no process data) before OPERATE (A-LINK-3).
+    if (s.startup_left > 0) {
+      const bool first = s.startup_left == kStartupCycles;
+      if (first) s.device.set_master_cycle_time(s.config.cycle_s); // MasterCycleTime, written in STARTUP
+      if (s.device.startup_cycle(first ? ComPhase::Startup : ComPhase::Preoperate)) --s.startup_left;
+    } else if (const auto in = s.device.exchange(out_frame, s.outputs_valid)) {
       s.last_pd_in = *in;
     }
   }
@@ -180,13 +270,19 @@ void Twin::run_cycle() {
     s.plant.step(cmd);
     s.track_move(t_s);
   }
+  if (s.turning && ++s.turn_done == s.turn_cycles) {
+    s.turning = false;
+    s.plant.set_flange_angle(s.turn_start_rad + s.turn_total_rad, 0.0); // exactly there, at rest
+  }
   ++s.cycles;
+  s.time_ns += s.cycle_ns;
   s.update_visuals();
   if (s.config.record_trace) s.record_row(out_frame);
 }
 
 uint64_t Twin::cycles() const { return impl_->cycles; }
-double Twin::time_s() const { return static_cast<double>(impl_->cycles) * impl_->config.cycle_s; }
+double Twin::time_s() const { return static_cast<double>(impl_->time_ns) * 1e-9; }
+IoLinkLedMode Twin::iolink_led() const { return impl_->device.io_link_led(); }
 Telemetry Twin::telemetry() const { return impl_->device.telemetry(); }
 const std::vector<TraceRow>& Twin::trace() const { return impl_->trace; }
 const std::vector<MoveRecord>& Twin::moves() const { return impl_->moves; }
@@ -194,6 +290,13 @@ double Twin::load_inertia_gcm2() const { return kgm2_to_gcm2(impl_->plant.load_i
 const Device& Twin::device() const { return impl_->device; }
 const Plant& Twin::plant() const { return impl_->plant; }
 std::vector<uint8_t> Twin::save_nvm() const { return impl_->device.save_nvm(); }
-uint16_t Twin::firmware_update(std::span<const uint8_t> image) { return impl_->device.firmware_update(image); }
+uint16_t Twin::firmware_update(std::span<const uint8_t> image) {
+  for (const IsduWriteRequest& w : firmware_requests(image)) {
+    for (uint64_t i = isdu_write_cycles(w.data.size()); i > 0; --i) run_cycle();
+    const IsduResult r = isdu_write(w.index, w.subindex, w.data);
+    if (!r.ok()) return r.error;
+  }
+  return 0;
+}
 
 } // namespace sreh

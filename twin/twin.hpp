@@ -48,7 +48,8 @@ struct TwinConfig {
   SupplySpec supply;
   ThermalSpec thermal;
   double physics_dt_s = 1e-4;
-  double cycle_s = 0.002;        // IO-Link cycle; an integer multiple of physics_dt_s
+  double cycle_s = 0.002;        // IO-Link master cycle at the start; an integer multiple of physics_dt_s,
+                                 // 0.002 .. 0.1328 s (manual 1, IO-Link MasterCycleTime; A-LINK-2)
   std::optional<std::vector<uint8_t>> nvm_image; // saved memory; factory-new otherwise
   bool record_trace = true;
 };
@@ -77,15 +78,41 @@ class Twin {
   // The flange held by something rigid (a clamp, a jammed load): it stays at
   // its angle whatever torque acts; released with false.
   void set_flange_blocked(bool blocked);
-  void set_ambient_C(double ambient_C); // the air around the module, from now on
-  void power_cycle();                   // off and on again; non-volatile memory kept
-  // Manual 9: hand a firmware image to the device in boot mode (0 or an ISDU error code).
+  void set_ambient_C(double celsius);   // room temperature from now on (thermal model follows)
+  // The master's cycle time from the next cycle on (a rig reconfiguring its
+  // master): 0.002 .. 0.1328 s and an integer multiple of physics_dt_s, else
+  // std::invalid_argument and nothing changes. The master announces it to the
+  // device (MasterCycleTime), whose link watchdog follows (A-LINK-1).
+  void set_master_cycle_s(double cycle_s);
+  double master_cycle_s() const;
+
+  // Supply interruption (manual 4.1, 5, 9). power_cycle(): off and on at once.
+  // power_off_for(): off for off_s (whole master cycles, the world keeps
+  // running), while a hand turns the flange by turn_deg (physical frame:
+  // clockwise seen from above positive, as hard stops; evenly over the off
+  // time), then on. After every power-on the master takes the device through
+  // STARTUP and PREOPERATE (one cycle each) to OPERATE (A-LINK-3), so the
+  // module has started up within 3 master cycles (< 0.4 s, well under 1 s).
+  // Non-volatile memory is kept.
+  void power_cycle();
+  void power_off_for(double off_s, double turn_deg = 0.0);
+  void power_off();                     // the primitives: supply off ...
+  void power_on();                      // ... and on again (start-up follows)
+  bool powered() const;
+  // A hand turns the flange by turn_deg (physical frame) evenly over the next
+  // over_s (whole master cycles; 0: at once). Meant for an unpowered module.
+  void turn_flange(double turn_deg, double over_s);
+
+  // Manual 9: transfer a firmware image to the device in boot mode, in ISDU
+  // chunks over simulated time (twin/firmware_transfer.hpp, A-FW-4, A-FW-5).
+  // Returns 0 or the ISDU error code of the first request that failed.
   uint16_t firmware_update(std::span<const uint8_t> image);
 
   // Advance one IO-Link cycle (exchange, then cycle_s / physics_dt_s steps).
   void run_cycle();
   uint64_t cycles() const;
-  double time_s() const;                // cycles * cycle_s
+  double time_s() const;                // sum of the master cycles run (integer nanoseconds)
+  IoLinkLedMode iolink_led() const;     // the IO-Link status LED now (manual 1)
 
   Telemetry telemetry() const;
   const std::vector<TraceRow>& trace() const;

@@ -167,7 +167,7 @@ TEST(ParameterTable, IdentificationRowsMatchManual6_5) {
   EXPECT_EQ(text(17), "www.afag.com");
   EXPECT_EQ(text(18), "Smart Rotary Module SREH-50-IOL");
   EXPECT_EQ(text(19), "SREH-50-IOL");
-  EXPECT_EQ(text(20), "Smart electrical rotary module with hollow shaft SREH-50-IOL");
+  EXPECT_EQ(text(20), "Smart electrical rotatary module with hollow shaft SREH-50-IOL"); // manual 6.5 DE (sic)
   for (uint16_t i : Ids{21, 22, 23, 17342}) {
     EXPECT_FALSE(text(i).empty()) << i;
     EXPECT_EQ(find_parameter(i, 0)->access, Access::R);

@@ -11,11 +11,14 @@ complete_words() { # words... -> COMPREPLY for the last word
   printf '%s\n' "${COMPREPLY[@]}"
 }
 fail() { echo "completion: $*" >&2; exit 1; }
-complete_words "" | grep -qx run || fail "no 'run' at the top level"
-complete_words "" | grep -qx params || fail "no 'params' at the top level"
+# offers WORD WORDS...: the completion of WORDS includes WORD. No pipe into
+# grep -q: with pipefail its early exit would fail the pipeline by SIGPIPE.
+offers() { local want=$1; shift; local got; got=$(complete_words "$@"); grep -qx -- "$want" <<< "$got"; }
+offers run "" || fail "no 'run' at the top level"
+offers params "" || fail "no 'params' at the top level"
 [ "$(complete_words pa)" = params ] || fail "'pa' does not complete to params"
-complete_words params "" | grep -qx export || fail "no 'export' under params"
-complete_words run --js | grep -qx -- --json || fail "run --js does not complete to --json"
-complete_words params export --io | grep -qx -- --iodd || fail "params export --io"
-complete_words --ver | grep -qx -- --version || fail "--ver"
+offers export params "" || fail "no 'export' under params"
+offers --json run --js || fail "run --js does not complete to --json"
+offers --iodd params export --io || fail "params export --io"
+offers --version --ver || fail "--ver"
 echo "completion: subcommands and options offered"

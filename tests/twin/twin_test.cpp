@@ -115,7 +115,7 @@ TEST(Twin, SameRunTwiceGivesIdenticalTraceBytes) {
   EXPECT_EQ(a, run_once());
   EXPECT_EQ(a.substr(0, a.find('\n')),
             "t_s,state,setpoint_deg,position_deg,tracking_error_deg,velocity_dps,torque_Nm,supply_V,temperature_C,"
-            "error_code,warning_code,pd_out_hex,pd_in_hex,led,torque_limit_Nm,external_torque_Nm");
+            "error_code,warning_code,pd_out_hex,pd_in_hex,led,torque_limit_Nm,external_torque_Nm,iolink_led");
   EXPECT_NE(a.find("Done"), std::string::npos);
 }
 
@@ -171,7 +171,7 @@ TEST(Twin, ExternalTorqueIsResistedWhileHolding) {
   EXPECT_LT(twin.trace().back().torque_Nm, -0.1); // the motor holds against it
 }
 
-// A-TWIN-15: a blocked flange stays where it is, whatever the motor does;
+// A-TWIN-30: a blocked flange stays where it is, whatever the motor does;
 // the device's own monitor then reports the tracking error (manual 7.2 114.5).
 TEST(Twin, BlockedFlangeHoldsAndGivesTrackingError_Manual7_2_114_5) {
   Twin twin(config_2000());
@@ -197,7 +197,7 @@ TEST(Twin, ReleasedFlangeMovesAgain) {
   EXPECT_NEAR(twin.telemetry().position_deg, 45.0, 0.1);
 }
 
-// A-TWIN-16: a new ambient is followed with the model's time constants.
+// A-TWIN-31: a new ambient is followed with the model's time constants.
 TEST(Twin, AmbientChangeIsFollowedNotJumped) {
   TwinConfig c;
   c.thermal.time_scale = 200; // minutes in seconds (A-TWIN-THERMAL-3)
