@@ -30,6 +30,20 @@ LedLook led_look(LedColor c) {
   return {{0.18f, 0.18f, 0.19f, 1.0f}, 0.0f};
 }
 
+double flange_angle_rad(const mjModel* m, const mjData* d) {
+  // Two-mass plant (issue 14): the flange hangs on the rotor, so its angle
+  // is the sum of the co-axial hinges from the flange body up to the world.
+  const int jnt = mj_name2id(m, mjOBJ_JOINT, "flange");
+  if (jnt < 0) return 0.0;
+  double angle = 0;
+  for (int b = m->jnt_bodyid[jnt]; b > 0; b = m->body_parentid[b]) {
+    for (int j = m->body_jntadr[b]; j >= 0 && j < m->body_jntadr[b] + m->body_jntnum[b]; ++j) {
+      if (m->jnt_type[j] == mjJNT_HINGE) angle += d->qpos[m->jnt_qposadr[j]];
+    }
+  }
+  return angle;
+}
+
 void flip_rows(uint8_t* rgb, int width, int height) {
   const std::size_t row = static_cast<std::size_t>(width) * 3;
   std::vector<uint8_t> tmp(row);
@@ -287,7 +301,7 @@ struct OffscreenRenderer::Impl {
       for (int k = 0; k < 9; ++k) g.mat[k] = static_cast<float>(gmat[k]);
     };
     const int n = scn.ngeom;
-    const double flange_rad = d->qpos[m->jnt_qposadr[flange_jnt]];
+    const double flange_rad = flange_angle_rad(m, d);
     for (int i = 0; i < n; ++i) {
       if (scn.geoms[i].objtype != mjOBJ_GEOM || m->geom_bodyid[scn.geoms[i].objid] != ghost_body) continue;
       // The actual-position pointer: an opaque copy at the flange angle.

@@ -96,6 +96,10 @@ class OffscreenRenderer {
   std::unique_ptr<Impl> impl_;
 };
 
+// The flange's angle (MuJoCo sense, rad) in `d`: the sum of the hinges from
+// the flange body to the world (rotor + compliance on the two-mass plant).
+double flange_angle_rad(const mjModel_* m, const mjData_* d);
+
 // Flips an RGB image with `height` rows of `width` pixels in place.
 void flip_rows(uint8_t* rgb, int width, int height);
 

@@ -231,7 +231,7 @@ void VideoRecorder::hold(const mjModel* m, const mjData* d, const FrameInfo& inf
   if (info.ghost_joint_rad) {
     scene.ghost_joint_rad = info.ghost_joint_rad;
   } else if (s.flange_qpos >= 0) {
-    scene.ghost_joint_rad = d->qpos[s.flange_qpos] + (info.setpoint_deg - info.position_deg) * std::numbers::pi / 180.0;
+    scene.ghost_joint_rad = flange_angle_rad(m, d) + (info.setpoint_deg - info.position_deg) * std::numbers::pi / 180.0;
   }
   if (s.options.overlay) {
     FrameInfo shown = info;

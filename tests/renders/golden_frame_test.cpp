@@ -46,8 +46,9 @@ std::pair<RgbImage, RgbImage> render_golden_scene() {
   const Plant& plant = twin.plant();
   const mjModel* m = plant.model();
   mjData* d = mj_makeData(m);
-  const int q = m->jnt_qposadr[mj_name2id(m, mjOBJ_JOINT, "flange")];
-  d->qpos[q] = -35.0 * M_PI / 180.0;
+  // The flange at -35 deg (on the two-mass plant: the rotor turned, the compliance relaxed).
+  const int rotor = mj_name2id(m, mjOBJ_JOINT, "rotor");
+  d->qpos[m->jnt_qposadr[rotor >= 0 ? rotor : mj_name2id(m, mjOBJ_JOINT, "flange")]] = -35.0 * M_PI / 180.0;
   mj_forward(m, d);
   RenderOptions ro;
   ro.width_px = 640;
