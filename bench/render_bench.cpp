@@ -4,7 +4,8 @@
 // VideoRecorder uses by default (writer thread; 4x MSAA, no shadows, no
 // reflections). `fps` is wall-clock throughput; `cpu_ms_per_frame` counts
 // every thread of this process and the ffmpeg child, so it stays meaningful
-// on a loaded machine. Figures: docs/performance-renders.md.
+// on a loaded machine. Frames carry the full overlay, the time-scale banner
+// and the automatic framing (issue 16). Figures: docs/performance-renders.md.
 #include <benchmark/benchmark.h>
 #include <mujoco/mujoco.h>
 #include <sys/resource.h>
@@ -75,6 +76,9 @@ void BM_VideoFrames(benchmark::State& state) {
     o.shadows = v.shadows;
     o.shadow_size = v.shadow_size;
     o.reflections = v.reflections;
+    // Issue 16: the full overlay, the time-scale banner (a time map at 20x)
+    // and the automatic framing that keeps clear of them.
+    o.time_map = sreh::TimeMap::constant(20.0, kFrames / 30.0 / 20.0);
     sreh::VideoRecorder rec(m, o);
     const double cpu0 = cpu_s();
     state.ResumeTiming();
@@ -82,7 +86,11 @@ void BM_VideoFrames(benchmark::State& state) {
       d->qpos[0] = 0.05 * k; // the flange turns: every frame differs
       mj_kinematics(m, d);
       sreh::FrameInfo f;
-      f.t_s = k / 30.0;
+      f.t_s = k / 30.0 / 20.0;
+      f.step = "4 wait_until";
+      f.target_deg = 270.0;
+      f.parameter_set = 1;
+      f.state = sreh::State::Busy;
       f.setpoint_deg = 3.0 * k;
       f.position_deg = 2.9 * k;
       f.led = sreh::LedColor::Green;

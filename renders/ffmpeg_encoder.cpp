@@ -5,6 +5,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <csignal>
 #include <cstring>
@@ -19,6 +21,24 @@
 extern char** environ;
 
 namespace sreh {
+
+std::optional<VideoContainer> container_for(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".mp4") return VideoContainer::Mp4;
+  if (ext == ".webm") return VideoContainer::WebM;
+  if (ext == ".gif") return VideoContainer::Gif;
+  return std::nullopt;
+}
+
+const char* container_name(VideoContainer c) {
+  switch (c) {
+    case VideoContainer::Mp4: return "MP4 (H.264)";
+    case VideoContainer::WebM: return "WebM (VP8)";
+    case VideoContainer::Gif: return "GIF";
+  }
+  return "";
+}
 
 namespace {
 
@@ -63,9 +83,26 @@ FfmpegEncoder::FfmpegEncoder(const std::filesystem::path& out_path, const Encode
                                    "-f", "rawvideo", "-pix_fmt", "rgb24",
                                    "-s", fmt::format("{}x{}", o.width_px, o.height_px),
                                    "-framerate", fmt::format("{}", o.fps), "-i", "pipe:0"};
-  if (o.bottom_up) args.insert(args.end(), {"-vf", "vflip"});
-  args.insert(args.end(), {"-c:v", "libx264", "-preset", o.x264_preset, "-crf", std::to_string(o.crf),
-                           "-pix_fmt", "yuv420p", "-movflags", "+faststart", "-f", "mp4", "-y", out_path.string()});
+  switch (o.container) {
+    case VideoContainer::Mp4:
+      if (o.bottom_up) args.insert(args.end(), {"-vf", "vflip"});
+      args.insert(args.end(), {"-c:v", "libx264", "-preset", o.x264_preset, "-crf", std::to_string(o.crf),
+                               "-pix_fmt", "yuv420p", "-movflags", "+faststart", "-f", "mp4"});
+      break;
+    case VideoContainer::WebM:
+      // VP8 at constant quality; realtime deadline keeps it near H.264's speed (A-RENDERS-4).
+      if (o.bottom_up) args.insert(args.end(), {"-vf", "vflip"});
+      args.insert(args.end(), {"-c:v", "libvpx", "-deadline", "realtime", "-cpu-used", "8", "-b:v", "0", "-crf",
+                               std::to_string(std::clamp(o.crf - 10, 4, 63)), "-pix_fmt", "yuv420p", "-f", "webm"});
+      break;
+    case VideoContainer::Gif:
+      // One palette per video for clean colours (two passes inside ffmpeg).
+      args.insert(args.end(), {"-vf", std::string(o.bottom_up ? "vflip," : "") +
+                                           "split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse=dither=bayer",
+                               "-f", "gif"});
+      break;
+  }
+  args.insert(args.end(), {"-y", out_path.string()});
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);

@@ -1,4 +1,4 @@
-// H.264 MP4 by piping raw RGB frames into the `ffmpeg` program (issue 7).
+// H.264 MP4 (or VP8 WebM, GIF) by piping raw RGB frames into the `ffmpeg` program (issue 7).
 // Why the program and not libav*: the command line is stable across ffmpeg
 // releases (the libav* API is not), the encoder runs in its own process and
 // so on the other core for free, and a crash or error there cannot take the
@@ -8,11 +8,23 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace sreh {
 
+// The container and codec, chosen by the file's extension (issue 16).
+enum class VideoContainer : uint8_t {
+  Mp4,  // H.264, yuv420p: plays everywhere (A-RENDERS-4)
+  WebM, // VP8: browsers without H.264
+  Gif,  // palette GIF for a README; large, so keep it short and small
+};
+// ".mp4", ".webm", ".gif" (any case); nullopt otherwise.
+std::optional<VideoContainer> container_for(const std::filesystem::path& path);
+const char* container_name(VideoContainer c);
+
 struct EncoderOptions {
+  VideoContainer container = VideoContainer::Mp4;
   int width_px = 1280;
   int height_px = 720;
   double fps = 30.0;
@@ -23,7 +35,7 @@ struct EncoderOptions {
 
 class FfmpegEncoder {
  public:
-  // Starts `ffmpeg` writing an MP4 to `out_path` (exactly that path; the
+  // Starts `ffmpeg` writing the container to `out_path` (exactly that path; the
   // caller does the tmp-then-rename). ffmpeg's messages go to
   // `out_path`.log, removed after success. Throws std::runtime_error if
   // ffmpeg cannot be started.

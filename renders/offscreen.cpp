@@ -5,6 +5,7 @@
 #include <mujoco/mujoco.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -29,6 +30,20 @@ LedLook led_look(LedColor c) {
   return {{0.18f, 0.18f, 0.19f, 1.0f}, 0.0f};
 }
 
+double flange_angle_rad(const mjModel* m, const mjData* d) {
+  // Two-mass plant (issue 14): the flange hangs on the rotor, so its angle
+  // is the sum of the co-axial hinges from the flange body up to the world.
+  const int jnt = mj_name2id(m, mjOBJ_JOINT, "flange");
+  if (jnt < 0) return 0.0;
+  double angle = 0;
+  for (int b = m->jnt_bodyid[jnt]; b > 0; b = m->body_parentid[b]) {
+    for (int j = m->body_jntadr[b]; j >= 0 && j < m->body_jntadr[b] + m->body_jntnum[b]; ++j) {
+      if (m->jnt_type[j] == mjJNT_HINGE) angle += d->qpos[m->jnt_qposadr[j]];
+    }
+  }
+  return angle;
+}
+
 void flip_rows(uint8_t* rgb, int width, int height) {
   const std::size_t row = static_cast<std::size_t>(width) * 3;
   std::vector<uint8_t> tmp(row);
@@ -50,34 +65,144 @@ int font_scale_for(int height_px) {
   return mjFONTSCALE_200;
 }
 
-struct Framing { double center[3]; double radius; };
+// Height along `up` of the top of everything that turns with the flange.
+double axial_half_extent(const mjModel* m, const mjData* d, int g, const double* up) {
+  const double* x = d->geom_xmat + 9 * g;
+  const double* size = m->geom_size + 3 * g;
+  const double c[3][3] = {{x[0], x[3], x[6]}, {x[1], x[4], x[7]}, {x[2], x[5], x[8]}}; // geom axes in world
+  const double along_z = std::abs(mju_dot3(up, c[2]));
+  switch (m->geom_type[g]) {
+    case mjGEOM_BOX: return std::abs(mju_dot3(up, c[0])) * size[0] + std::abs(mju_dot3(up, c[1])) * size[1] + along_z * size[2];
+    case mjGEOM_CYLINDER: return along_z * size[1] + std::sqrt(std::max(0.0, 1 - along_z * along_z)) * size[0];
+    case mjGEOM_CAPSULE: return along_z * size[1] + size[0];
+    case mjGEOM_SPHERE: return size[0];
+    default: return m->geom_rbound[g];
+  }
+}
 
-// Bounding cylinder about the flange axis of every visible non-plane geom:
-// invariant under flange rotation, so the camera does not breathe with an
-// off-centre load (A-RENDERS-1). Falls back to MuJoCo's model statistics.
-Framing frame_module(const mjModel* m, const mjData* d, int flange_jnt) {
-  Framing f{{m->stat.center[0], m->stat.center[1], m->stat.center[2]}, m->stat.extent};
-  if (flange_jnt < 0) return f;
+double rotating_top(const mjModel* m, const mjData* d, int flange_jnt, const double* up) {
   const double* a = d->xanchor + 3 * flange_jnt;
-  const double* u = d->xaxis + 3 * flange_jnt;
+  const int root = m->body_rootid[m->jnt_bodyid[flange_jnt]];
+  double top = -std::numeric_limits<double>::max();
+  for (int g = 0; g < m->ngeom; ++g) {
+    if (m->body_rootid[m->geom_bodyid[g]] != root || m->geom_group[g] > 2) continue;
+    const double* p = d->geom_xpos + 3 * g;
+    const double rel[3] = {p[0] - a[0], p[1] - a[1], p[2] - a[2]};
+    top = std::max(top, mju_dot3(rel, up) + axial_half_extent(m, d, g, up));
+  }
+  return top;
+}
+
+// Points on the hull the camera must show: a cylinder about the flange axis
+// around every visible non-plane geom, raised to the lifted pointers
+// (A-RENDERS-1). Invariant under flange rotation, so the camera does not
+// breathe with an off-centre load.
+std::vector<std::array<double, 3>> hull_points(const mjModel* m, const mjData* d, int flange_jnt, int ghost_body) {
+  std::vector<std::array<double, 3>> pts;
+  if (flange_jnt < 0) {
+    const double* c = m->stat.center;
+    const double e = m->stat.extent;
+    for (int i = 0; i < 8; ++i) pts.push_back({c[0] + (i & 1 ? e : -e), c[1] + (i & 2 ? e : -e), c[2] + (i & 4 ? e : -e)});
+    return pts;
+  }
+  const double* a = d->xanchor + 3 * flange_jnt;
+  const double* u0 = d->xaxis + 3 * flange_jnt;
+  const double sign = u0[2] >= 0 ? 1.0 : -1.0;
+  const double u[3] = {sign * u0[0], sign * u0[1], sign * u0[2]};
   double r_max = 0, h_min = std::numeric_limits<double>::max(), h_max = -h_min;
   for (int g = 0; g < m->ngeom; ++g) {
     if (m->geom_type[g] == mjGEOM_PLANE || m->geom_group[g] > 2) continue;
+    if (ghost_body >= 0 && m->geom_bodyid[g] == ghost_body) continue; // placed on top below
     const double* p = d->geom_xpos + 3 * g;
     const double rel[3] = {p[0] - a[0], p[1] - a[1], p[2] - a[2]};
     const double h = mju_dot3(rel, u);
     const double radial[3] = {rel[0] - h * u[0], rel[1] - h * u[1], rel[2] - h * u[2]};
-    const double rb = m->geom_rbound[g];
+    const double rb = std::min(m->geom_rbound[g], 0.5); // huge geoms (walls) would frame nothing
     r_max = std::max(r_max, mju_norm3(radial) + rb);
-    h_min = std::min(h_min, h - rb);
-    h_max = std::max(h_max, h + rb);
+    h_min = std::min(h_min, h - axial_half_extent(m, d, g, u));
+    h_max = std::max(h_max, h + axial_half_extent(m, d, g, u));
   }
-  if (h_min > h_max) return f;
-  const double hc = 0.5 * (h_min + h_max);
-  for (int i = 0; i < 3; ++i) f.center[i] = a[i] + hc * u[i];
-  const double half_h = 0.5 * (h_max - h_min);
-  f.radius = std::sqrt(r_max * r_max + half_h * half_h);
-  return f;
+  if (ghost_body >= 0) {
+    const double top = rotating_top(m, d, flange_jnt, u);
+    for (int g = 0; g < m->ngeom; ++g) {
+      if (m->geom_bodyid[g] != ghost_body) continue;
+      const double* gp = m->geom_pos + 3 * g;
+      r_max = std::max(r_max, std::hypot(gp[0], gp[1]) + m->geom_rbound[g]);
+      h_max = std::max(h_max, top + 0.0015 + gp[2] + m->geom_rbound[g]);
+    }
+  }
+  if (h_min > h_max) return hull_points(m, d, -1, -1);
+  double n[3] = {1, 0, 0};
+  if (std::abs(u[0]) > 0.9) n[0] = 0, n[1] = 1;
+  const double along = mju_dot3(n, u);
+  double p1[3] = {n[0] - along * u[0], n[1] - along * u[1], n[2] - along * u[2]};
+  mju_normalize3(p1);
+  double p2[3];
+  mju_cross(p2, u, p1);
+  constexpr int kAround = 24;
+  for (double h : {h_min, h_max}) {
+    for (int k = 0; k < kAround; ++k) {
+      const double ang = 2 * std::numbers::pi * k / kAround;
+      const double c = std::cos(ang) * r_max, sn = std::sin(ang) * r_max;
+      pts.push_back({a[0] + h * u[0] + c * p1[0] + sn * p2[0], a[1] + h * u[1] + c * p1[1] + sn * p2[1],
+                     a[2] + h * u[2] + c * p1[2] + sn * p2[2]});
+    }
+  }
+  return pts;
+}
+
+// Where in normalised device coordinates the framed hull may lie: the
+// overlay's corner left free when there is one.
+struct FitBox { double x_lo, x_hi, y_lo, y_hi; };
+
+// Lookat and distance of a free camera at (azimuth, elevation) that shows
+// every point inside `box` (perspective projection, fovy of the model).
+void fit_camera(const std::vector<std::array<double, 3>>& pts, double azimuth_deg, double elevation_deg, double fovy_deg,
+                double aspect, const FitBox& box, double lookat[3], double* distance) {
+  const double az = azimuth_deg * std::numbers::pi / 180, el = elevation_deg * std::numbers::pi / 180;
+  const double f[3] = {std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el)};
+  const double up[3] = {-std::sin(el) * std::cos(az), -std::sin(el) * std::sin(az), std::cos(el)};
+  double right[3];
+  mju_cross(right, f, up);
+  const double ty = std::tan(0.5 * fovy_deg * std::numbers::pi / 180), tx = ty * aspect;
+  for (int i = 0; i < 3; ++i) {
+    lookat[i] = 0;
+    for (const auto& p : pts) lookat[i] += p[i] / static_cast<double>(pts.size());
+  }
+  auto extent = [&](double dist, double ndc[4]) {
+    ndc[0] = ndc[2] = 1e9;
+    ndc[1] = ndc[3] = -1e9;
+    for (const auto& p : pts) {
+      const double rel[3] = {p[0] - (lookat[0] - dist * f[0]), p[1] - (lookat[1] - dist * f[1]), p[2] - (lookat[2] - dist * f[2])};
+      const double z = std::max(mju_dot3(rel, f), 1e-6);
+      const double x = mju_dot3(rel, right) / (z * tx), y = mju_dot3(rel, up) / (z * ty);
+      ndc[0] = std::min(ndc[0], x);
+      ndc[1] = std::max(ndc[1], x);
+      ndc[2] = std::min(ndc[2], y);
+      ndc[3] = std::max(ndc[3], y);
+    }
+  };
+  auto fits = [&](double dist) {
+    double e[4];
+    extent(dist, e);
+    return e[1] - e[0] <= box.x_hi - box.x_lo && e[3] - e[2] <= box.y_hi - box.y_lo;
+  };
+  double dist = 0.1;
+  for (int pass = 0; pass < 4; ++pass) {
+    double lo = 1e-3, hi = 50;
+    for (int it = 0; it < 50; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (fits(mid) ? hi : lo) = mid;
+    }
+    dist = hi;
+    // Centre the projected hull in the box: move the lookat sideways.
+    double e[4];
+    extent(dist, e);
+    const double dx = 0.5 * (e[0] + e[1]) - 0.5 * (box.x_lo + box.x_hi);
+    const double dy = 0.5 * (e[2] + e[3]) - 0.5 * (box.y_lo + box.y_hi);
+    for (int i = 0; i < 3; ++i) lookat[i] += dx * dist * tx * right[i] + dy * dist * ty * up[i];
+  }
+  *distance = dist;
 }
 
 } // namespace
@@ -103,13 +228,28 @@ struct OffscreenRenderer::Impl {
     }
   }
 
-  void frame_camera(const mjModel* m, const mjData* d) {
-    const Framing f = frame_module(m, d, flange_jnt);
-    const double half_fov = 0.5 * m->vis.global.fovy * std::numbers::pi / 180.0;
-    const double aspect = static_cast<double>(options.width_px) / options.height_px;
-    // Fit the bounding sphere into the narrower of the two fields of view.
-    const double half_fit = std::min(half_fov, std::atan(std::tan(half_fov) * aspect));
-    const double fit_distance = 0.95 * f.radius / std::sin(half_fit); // A-RENDERS-1 margin
+  int text_width(const std::string& text, bool big) const {
+    int w = 0;
+    for (unsigned char c : text) w += c < 127 ? (big ? con.charWidthBig[c] : con.charWidth[c]) : 0;
+    return w;
+  }
+
+  // Normalised-device box the module may fill: right of the overlay's text
+  // columns (sized for the widest value a run shows) and below the banner.
+  FitBox fit_box(const SceneState& state) const {
+    if (!options.leave_overlay_room || state.overlay.empty()) return {-0.9, 0.9, -0.9, 0.9};
+    int labels = 0, values = text_width("fast forward 1000x (idle)", false);
+    for (const auto& [l, v] : state.overlay) {
+      labels = std::max(labels, text_width(l, false));
+      values = std::max(values, text_width(v, false));
+    }
+    const double w = options.width_px, h = options.height_px;
+    const double column_px = labels + values + 4.0 * con.charWidth[static_cast<int>('M')];
+    const double banner_px = con.charHeightBig + 0.5 * con.charHeight;
+    return {std::min(0.2, -1.0 + 2.0 * column_px / w), 0.94, -0.94, std::max(-0.2, 1.0 - 2.0 * banner_px / h)};
+  }
+
+  void frame_camera(const mjModel* m, const mjData* d, const SceneState& state) {
     if (!spec.model_camera.empty()) {
       const int id = mj_name2id(m, mjOBJ_CAMERA, spec.model_camera.c_str());
       if (id < 0) throw std::invalid_argument("the model has no camera named '" + spec.model_camera + "'");
@@ -121,26 +261,17 @@ struct OffscreenRenderer::Impl {
     const bool top = spec.preset == CameraSpec::Preset::Top;
     cam.type = mjCAMERA_FREE;
     cam.azimuth = spec.azimuth_deg.value_or(top ? 90.0 : 135.0);
-    cam.elevation = spec.elevation_deg.value_or(top ? -90.0 : -25.0);
-    cam.distance = spec.distance_m.value_or(fit_distance);
-    for (int i = 0; i < 3; ++i) cam.lookat[i] = spec.lookat_m ? (*spec.lookat_m)[i] : f.center[i];
+    cam.elevation = spec.elevation_deg.value_or(top ? -90.0 : -30.0);
+    const double aspect = static_cast<double>(options.width_px) / options.height_px;
+    // With an overlay the module keeps right of the text column and below
+    // the banner (A-RENDERS-1).
+    const FitBox box = fit_box(state);
+    double lookat[3], distance = 0;
+    fit_camera(hull_points(m, d, flange_jnt, ghost_body), cam.azimuth, top ? -89.9 : cam.elevation, m->vis.global.fovy,
+               aspect, box, lookat, &distance);
+    cam.distance = spec.distance_m.value_or(distance);
+    for (int i = 0; i < 3; ++i) cam.lookat[i] = spec.lookat_m ? (*spec.lookat_m)[i] : lookat[i];
     framed = true;
-  }
-
-  // Height along the module's up direction (the flange axis, pointing away
-  // from the table) of the top of everything that turns with the flange.
-  static double axial_half_extent(const mjModel* m, const mjData* d, int g, const double* up) {
-    const double* x = d->geom_xmat + 9 * g;
-    const double* size = m->geom_size + 3 * g;
-    const double c[3][3] = {{x[0], x[3], x[6]}, {x[1], x[4], x[7]}, {x[2], x[5], x[8]}}; // geom axes in world
-    const double along_z = std::abs(mju_dot3(up, c[2]));
-    switch (m->geom_type[g]) {
-      case mjGEOM_BOX: return std::abs(mju_dot3(up, c[0])) * size[0] + std::abs(mju_dot3(up, c[1])) * size[1] + along_z * size[2];
-      case mjGEOM_CYLINDER: return along_z * size[1] + std::sqrt(std::max(0.0, 1 - along_z * along_z)) * size[0];
-      case mjGEOM_CAPSULE: return along_z * size[1] + size[0];
-      case mjGEOM_SPHERE: return size[0];
-      default: return m->geom_rbound[g];
-    }
   }
 
   // The setpoint ghost and the actual-position pointer (A-RENDERS-7): the
@@ -153,14 +284,7 @@ struct OffscreenRenderer::Impl {
     const double* u = d->xaxis + 3 * flange_jnt;
     const double sign = u[2] >= 0 ? 1.0 : -1.0;
     const double up[3] = {sign * u[0], sign * u[1], sign * u[2]};
-    const int root = m->body_rootid[m->jnt_bodyid[flange_jnt]];
-    double top = -std::numeric_limits<double>::max();
-    for (int g = 0; g < m->ngeom; ++g) {
-      if (m->body_rootid[m->geom_bodyid[g]] != root || m->geom_group[g] > 2) continue;
-      const double* p = d->geom_xpos + 3 * g;
-      const double rel[3] = {p[0] - a[0], p[1] - a[1], p[2] - a[2]};
-      top = std::max(top, mju_dot3(rel, up) + axial_half_extent(m, d, g, up));
-    }
+    const double top = rotating_top(m, d, flange_jnt, up);
     const double* body_pos = m->body_pos + 3 * ghost_body;
     const double body_rel[3] = {body_pos[0] - a[0], body_pos[1] - a[1], body_pos[2] - a[2]};
     const double lift = std::max(0.0, top - mju_dot3(body_rel, up));
@@ -177,11 +301,10 @@ struct OffscreenRenderer::Impl {
       for (int k = 0; k < 9; ++k) g.mat[k] = static_cast<float>(gmat[k]);
     };
     const int n = scn.ngeom;
-    const double flange_rad = d->qpos[m->jnt_qposadr[flange_jnt]];
+    const double flange_rad = flange_angle_rad(m, d);
     for (int i = 0; i < n; ++i) {
       if (scn.geoms[i].objtype != mjOBJ_GEOM || m->geom_bodyid[scn.geoms[i].objid] != ghost_body) continue;
-      // The actual-position pointer: an opaque dark copy at the flange angle
-      // (manual 3.5.2 Fig. 3 draws the actual position black).
+      // The actual-position pointer: an opaque copy at the flange angle.
       if (scn.ngeom < scn.maxgeom) {
         mjvGeom& actual = scn.geoms[scn.ngeom++];
         actual = scn.geoms[i];
@@ -189,10 +312,12 @@ struct OffscreenRenderer::Impl {
         actual.objtype = mjOBJ_UNKNOWN;   // then a decor geom, not the ghost
         actual.objid = -1;
         actual.segid = -1;
-        const float dark[4] = {0.08f, 0.08f, 0.09f, 1.0f};
-        std::copy(dark, dark + 4, actual.rgba);
+        // Bright orange, the flange mark's colour: an asymmetric marker on
+        // every load so that rotation is visible (issue 16).
+        const float mark[4] = {0.98f, 0.45f, 0.02f, 1.0f};
+        std::copy(mark, mark + 4, actual.rgba);
         actual.transparent = 0;
-        actual.emission = 0;
+        actual.emission = 0.25f;
       }
       // The ghost sits just above the pointer so both stay visible.
       pose(ghost_rad.value_or(flange_rad), 0.0015, scn.geoms[i]);
@@ -219,6 +344,7 @@ struct OffscreenRenderer::Impl {
       values += value;
     }
     mjr_overlay(mjFONT_NORMAL, mjGRID_TOPLEFT, viewport, labels.c_str(), values.c_str(), &con);
+    if (!state.banner.empty()) mjr_overlay(mjFONT_BIG, mjGRID_TOPRIGHT, viewport, state.banner.c_str(), nullptr, &con);
   }
 };
 
@@ -292,7 +418,7 @@ void OffscreenRenderer::render_into(const mjModel* m, const mjData* d, const Sce
   Impl& s = *impl_;
   s.make_current();
   mjr_setBuffer(mjFB_OFFSCREEN, &s.con);
-  if (!s.framed) s.frame_camera(m, d);
+  if (!s.framed) s.frame_camera(m, d, state);
   // 2.2.2's mjv_updateScene takes mjData* but only reads it.
   mjv_updateScene(m, const_cast<mjData*>(d), &s.opt, nullptr, &s.cam, mjCAT_ALL, &s.scn);
   s.place_pointers(m, d, state.ghost_joint_rad);

@@ -38,6 +38,7 @@ struct RenderOptions {
   bool shadows = false;    // off by default: 3x the render cost, jagged at 1024 (A-RENDERS-3)
   int shadow_size = 2048;  // shadow map texture size when shadows are on
   bool reflections = false; // reflective materials (e.g. the table) mirror the module
+  bool leave_overlay_room = false; // automatic framing keeps clear of the overlay's corners
 };
 
 // What changes per frame besides the physics state.
@@ -49,6 +50,8 @@ struct SceneState {
   std::optional<double> ghost_joint_rad;
   // Text lines drawn in the top-left corner: label column, value column.
   std::vector<std::pair<std::string, std::string>> overlay;
+  // Large text in the top-right corner (the time scale when not real time).
+  std::string banner;
 };
 
 // An RGB image, rows top-down, 3 bytes per pixel.
@@ -92,6 +95,10 @@ class OffscreenRenderer {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+// The flange's angle (MuJoCo sense, rad) in `d`: the sum of the hinges from
+// the flange body to the world (rotor + compliance on the two-mass plant).
+double flange_angle_rad(const mjModel_* m, const mjData_* d);
 
 // Flips an RGB image with `height` rows of `width` pixels in place.
 void flip_rows(uint8_t* rgb, int width, int height);

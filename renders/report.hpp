@@ -1,7 +1,9 @@
-// Self-contained HTML report of one scenario run (issue 7): result, the
-// expectations, the per-move table (manual 3.5.2 terms), plots over time and
-// a settling zoom per move (manual 3.5.2 Fig. 3), the video when rendered.
-// One file, inline SVG and CSS, no scripts, no external fetches.
+// Self-contained report folder of one scenario run (issue 7, 16): a summary
+// on top (pass/fail, each failed check with its step and value), the run's
+// command line and version, the video (copied into the folder), the per-move
+// table (manual 3.5.2 terms), zoomable plots over time (dygraphs inlined,
+// static SVG for print) and a settling zoom per move (manual 3.5.2 Fig. 3).
+// No links out of the folder, no external fetches: it can be moved.
 #pragma once
 #include <filesystem>
 #include <string>
@@ -14,6 +16,10 @@ namespace sreh {
 struct ReportCheck {
   std::string description;
   bool passed = false;
+  std::string step;   // "4", "expect"
+  int line = 0;       // scenario line; 0: none
+  double t_s = 0;     // when it was decided
+  std::string actual; // the value observed
 };
 
 struct ReportInput {
@@ -23,18 +29,25 @@ struct ReportInput {
   std::vector<TraceRow> trace;
   std::vector<MoveRecord> moves;   // the device's records: each with its own set's tolerance and waiting time
   double tracking_limit_deg = 0; // index 87 limit drawn on the tracking-error plot; 0: none
-  std::string video_file;        // relative to the report directory; empty: no video
+  std::string command_line;      // how the run was started
+  std::string version;           // sreh-twin version
+  double sim_time_s = 0;
+  double max_tracking_error_deg = 0;
+  // A rendered video (.mp4, .webm, .gif) copied into the folder as
+  // video.<ext>; empty: no video.
+  std::filesystem::path video_source;
 };
 
 // Settling zooms drawn at most (the table lists every move).
 inline constexpr std::size_t kMaxSettlingPlots = 24;
 
-// The HTML text of the report.
-std::string report_html(const ReportInput& in);
+// The HTML text of the report; `video_name` is the video's file name inside
+// the folder (empty: none).
+std::string report_html(const ReportInput& in, const std::string& video_name = "");
 
-// Writes dir/index.html atomically (io::AtomicFile); creates `dir` if
-// missing (one level: its parent must exist). Returns the file's path.
-// Throws std::runtime_error.
+// Copies the video in (video.<ext>), then writes dir/index.html, each
+// through io::write_file_atomic; creates `dir` if missing (one level: its
+// parent must exist). Returns the index's path. Throws std::runtime_error.
 std::filesystem::path write_report(const std::filesystem::path& dir, const ReportInput& in);
 
 } // namespace sreh

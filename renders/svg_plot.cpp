@@ -80,14 +80,23 @@ std::vector<std::size_t> decimate_min_max(const std::vector<double>& x, const st
   return keep;
 }
 
-namespace {
-
-std::string fmt_tick(double v, double step) {
+std::string tick_label(double v, double step) {
   int decimals = 0;
   if (step > 0) decimals = std::max(0, static_cast<int>(std::ceil(-std::log10(step) - 1e-9)));
   if (step > 0 && std::abs(step * std::pow(10.0, decimals) - std::round(step * std::pow(10.0, decimals))) > 1e-6) ++decimals;
-  return fmt::format("{:.{}f}", v, std::min(decimals, 9));
+  if (step > 0 && std::abs(v) < 1e-6 * step) v = 0;
+  std::string out = fmt::format("{:.{}f}", v, std::min(decimals, 9));
+  if (out.find_first_not_of("-0.") == std::string::npos && out[0] == '-') out.erase(0, 1);
+  return out;
 }
+
+std::vector<double> axis_ticks(double lo, double hi, int max_ticks) {
+  std::vector<double> t = nice_ticks(lo, hi, std::max(2, max_ticks));
+  for (int n = max_ticks + 1; t.size() < 4 && n <= 24; ++n) t = nice_ticks(lo, hi, n);
+  return t;
+}
+
+namespace {
 
 struct Range {
   double lo = std::numeric_limits<double>::infinity();
@@ -133,7 +142,8 @@ std::string to_svg(const Plot& p) {
     for (std::size_t i = 0; i < n; ++i)
       if (s.x[i] >= xr.lo && s.x[i] <= xr.hi) yr.add(s.y[i]);
   }
-  for (const HLine& l : p.hlines) yr.add(l.y);
+  for (const HLine& l : p.hlines)
+    if (l.autoscale) yr.add(l.y);
   for (const Band& b : p.bands) {
     if (b.y_lo) yr.add(*b.y_lo);
     if (b.y_hi) yr.add(*b.y_hi);
@@ -159,17 +169,17 @@ std::string to_svg(const Plot& p) {
   o += '\n';
 
   // Grid and ticks.
-  const auto xt = nice_ticks(xr.lo, xr.hi, std::max(3, static_cast<int>(pw / 90)));
-  const auto yt = nice_ticks(yr.lo, yr.hi, std::max(3, static_cast<int>(ph / 45)));
+  const auto xt = axis_ticks(xr.lo, xr.hi, std::max(5, static_cast<int>(pw / 90)));
+  const auto yt = axis_ticks(yr.lo, yr.hi, std::max(5, static_cast<int>(ph / 40)));
   const double xstep = xt.size() > 1 ? xt[1] - xt[0] : 0, ystep = yt.size() > 1 ? yt[1] - yt[0] : 0;
   for (double t : xt) {
     o += fmt::format(R"(<line x1="{0:.1f}" y1="{1:.1f}" x2="{0:.1f}" y2="{2:.1f}" stroke="#e4e4e4"/><text x="{0:.1f}" y="{3:.1f}" text-anchor="middle">{4}</text>)",
-                     px(t), top, top + ph, top + ph + 14, fmt_tick(t, xstep));
+                     px(t), top, top + ph, top + ph + 14, tick_label(t, xstep));
     o += '\n';
   }
   for (double t : yt) {
     o += fmt::format(R"(<line x1="{0:.1f}" y1="{1:.1f}" x2="{2:.1f}" y2="{1:.1f}" stroke="#e4e4e4"/><text x="{3:.1f}" y="{4:.1f}" text-anchor="end">{5}</text>)",
-                     left, py(t), left + pw, left - 5, py(t) + 4, fmt_tick(t, ystep));
+                     left, py(t), left + pw, left - 5, py(t) + 4, tick_label(t, ystep));
     o += '\n';
   }
   o += fmt::format(R"(<text x="{:.1f}" y="{:.1f}" text-anchor="middle">{}</text>)", left + pw / 2, h - 8, xml_escape(axis_title(p.x)));
@@ -187,11 +197,33 @@ std::string to_svg(const Plot& p) {
     o += '\n';
   }
   for (const HLine& l : p.hlines) {
+    if (l.y > yr.hi || l.y < yr.lo) {
+      // Off scale: an arrow at the edge it lies beyond, with its value.
+      const bool above = l.y > yr.hi;
+      if (!l.label.empty() || !above) {
+        o += fmt::format(R"(<text class="offscale" x="{:.1f}" y="{:.1f}" text-anchor="end" fill="{}">{} {} ({:g}, off scale)</text>)",
+                         left + pw - 4, above ? top + 12 : top + ph - 5, xml_escape(l.color), above ? "&#9650;" : "&#9660;",
+                         xml_escape(l.label.empty() ? std::string("limit") : l.label), l.y);
+        o += '\n';
+      }
+      continue;
+    }
     o += fmt::format(R"(<line class="limit" x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}" stroke="{}" stroke-width="1.2"{}/>)", left, py(l.y),
                      left + pw, py(l.y), xml_escape(l.color), l.dashed ? R"( stroke-dasharray="6 4")" : "");
     o += '\n';
   }
   for (const Series& s : p.series) {
+    if (s.markers) {
+      // Unordered points: at most ~3000 dots, evenly strided.
+      const std::size_t n = std::min(s.x.size(), s.y.size()), stride = std::max<std::size_t>(1, n / 3000);
+      o += fmt::format(R"(<g class="series" fill="{}" fill-opacity="0.6">)", xml_escape(s.color));
+      for (std::size_t i = 0; i < n; i += stride) {
+        if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i]) || s.x[i] < xr.lo || s.x[i] > xr.hi) continue;
+        o += fmt::format(R"(<circle cx="{:.1f}" cy="{:.1f}" r="1.8"/>)", px(s.x[i]), py(s.y[i]));
+      }
+      o += "</g>\n";
+      continue;
+    }
     const auto keep = decimate_min_max(s.x, s.y, xr.lo, xr.hi, static_cast<int>(pw));
     std::string points;
     points.reserve(keep.size() * 14);
@@ -226,7 +258,7 @@ std::string to_svg(const Plot& p) {
                        xml_escape(color), dashed ? R"( stroke-dasharray="4 2")" : "");
     }
     o += fmt::format(R"(<text x="{:.1f}" y="{:.1f}">{}</text>)", lx + 20, ly, xml_escape(label));
-    lx += 30 + 6.2 * static_cast<double>(label.size());
+    lx += 28 + 6.0 * static_cast<double>(label.size());
   };
   for (const Series& s : p.series) legend_item(s.label, s.color, false, s.dashed);
   for (const HLine& l : p.hlines) legend_item(l.label, l.color, false, l.dashed);

@@ -19,6 +19,7 @@ struct Series {
   std::string color = "#1f77b4";
   double width_px = 1.5;
   bool dashed = false;
+  bool markers = false; // dots instead of a line (operating points)
 };
 
 struct HLine {
@@ -26,6 +27,9 @@ struct HLine {
   std::string label; // empty: not in the legend
   std::string color = "#d62728";
   bool dashed = true;
+  // false: a limit that does not stretch the axis; when it lies outside the
+  // data's range an arrow at the edge names it ("off scale").
+  bool autoscale = true;
 };
 
 struct VLine {
@@ -62,6 +66,12 @@ struct Plot {
 
 // The SVG element (no XML prolog), ready to inline in HTML.
 std::string to_svg(const Plot& plot);
+
+// Tick values of one axis as drawn: nice_ticks with at least 4 inside the
+// range (issue 16: every plot readable without guessing).
+std::vector<double> axis_ticks(double lo, double hi, int max_ticks);
+// The label of a tick: enough decimals for `step`, ASCII minus, no "-0".
+std::string tick_label(double v, double step);
 
 // About `max_ticks` (>= 2) tick values at 1/2/2.5/5 x 10^n covering [lo, hi].
 std::vector<double> nice_ticks(double lo, double hi, int max_ticks = 6);

@@ -23,19 +23,20 @@ namespace sreh {
 
 namespace fs = std::filesystem;
 
-std::vector<std::pair<std::string, std::string>> overlay_lines(const FrameInfo& f, double slowmo) {
+std::vector<std::pair<std::string, std::string>> overlay_lines(const FrameInfo& f) {
   auto code = [](uint8_t c) { return c == 0 ? std::string("none") : fmt::format("0x{:02X}", c); };
-  std::vector<std::pair<std::string, std::string>> lines = {
-      {"t", fmt::format("{:.3f} s", f.t_s)},
-      {"state", std::string(state_name(f.state))},
-      {"position", fmt::format("{:.3f} deg", f.position_deg)},
-      {"setpoint", fmt::format("{:.3f} deg", f.setpoint_deg)},
-      {"tracking error", fmt::format("{:+.4f} deg", f.tracking_error_deg)},
-      {"error", code(f.error_code)},
-      {"warning", code(f.warning_code)},
-      {"LED", std::string(led_name(f.led))},
-  };
-  if (slowmo != 1.0) lines.emplace_back("slow motion", fmt::format("{:g}x", slowmo));
+  std::vector<std::pair<std::string, std::string>> lines;
+  lines.emplace_back("t", fmt::format("{:.4f} s", f.t_s));
+  if (!f.time_scale.empty()) lines.emplace_back("time scale", f.time_scale);
+  if (!f.step.empty()) lines.emplace_back("step", f.step);
+  lines.emplace_back("state", std::string(state_name(f.state)));
+  if (f.target_deg) lines.emplace_back("target", fmt::format("{:.3f} deg", *f.target_deg));
+  if (f.parameter_set >= 0) lines.emplace_back("parameter set", fmt::format("{}", f.parameter_set));
+  lines.emplace_back("setpoint", fmt::format("{:.3f} deg", f.setpoint_deg));
+  lines.emplace_back("actual", fmt::format("{:.3f} deg", f.position_deg));
+  lines.emplace_back("tracking error", fmt::format("{:+.4f} deg", f.tracking_error_deg));
+  lines.emplace_back("error / warning", code(f.error_code) + " / " + code(f.warning_code));
+  lines.emplace_back("LED band", std::string(led_name(f.led)));
   return lines;
 }
 
@@ -137,6 +138,9 @@ VideoRecorder::VideoRecorder(const mjModel* m, const VideoOptions& o) : impl_(st
   };
   s.options = o;
   s.frame_rate_sim = o.fps * o.slowmo;
+  if (!o.path.empty() && !container_for(o.path)) {
+    throw std::invalid_argument("video: " + o.path.string() + ": the extension must be .mp4, .webm or .gif");
+  }
   if (!o.frames_dir.empty()) {
     check_parent(o.frames_dir);
     if (fs::exists(o.frames_dir) && !(fs::is_directory(o.frames_dir) && fs::is_empty(o.frames_dir))) {
@@ -153,6 +157,7 @@ VideoRecorder::VideoRecorder(const mjModel* m, const VideoOptions& o) : impl_(st
   ro.shadows = o.shadows;
   ro.shadow_size = o.shadow_size;
   ro.reflections = o.reflections;
+  ro.leave_overlay_room = o.overlay;
   try {
     s.renderer = std::make_unique<OffscreenRenderer>(m, ro, o.camera);
     if (!o.path.empty()) {
@@ -165,6 +170,7 @@ VideoRecorder::VideoRecorder(const mjModel* m, const VideoOptions& o) : impl_(st
       eo.x264_preset = o.x264_preset;
       eo.crf = o.crf;
       eo.bottom_up = true;
+      eo.container = *container_for(o.path);
       s.encoder = std::make_unique<FfmpegEncoder>(s.video_file->temp_path(), eo);
     }
   } catch (...) {
@@ -193,20 +199,31 @@ VideoRecorder::~VideoRecorder() {
   if (!s.finished) s.discard_output();
 }
 
-double VideoRecorder::frame_time_s(uint64_t k) const { return static_cast<double>(k) / impl_->frame_rate_sim; }
+double VideoRecorder::frame_time_s(uint64_t k) const {
+  const Impl& s = *impl_;
+  if (s.options.time_map) return s.options.time_map->sim_time(static_cast<double>(k) / s.options.fps);
+  return static_cast<double>(k) / s.frame_rate_sim;
+}
+const TimeMap* VideoRecorder::time_map() const { return impl_->options.time_map ? &*impl_->options.time_map : nullptr; }
 uint64_t VideoRecorder::frames_emitted() const { return impl_->next_frame; }
 
 bool VideoRecorder::wants_frame(double t_s) const { return t_s + 1e-9 >= frame_time_s(impl_->next_frame); }
 
 void VideoRecorder::add_frame(const mjModel* m, const mjData* d, const FrameInfo& info) {
-  Impl& s = *impl_;
-  if (s.finished) throw std::logic_error("VideoRecorder: add_frame after finish");
   uint64_t count = 0;
   while (wants_frame(info.t_s)) {
     ++count;
-    ++s.next_frame;
+    ++impl_->next_frame;
   }
+  impl_->next_frame -= count;
+  hold(m, d, info, count);
+}
+
+void VideoRecorder::hold(const mjModel* m, const mjData* d, const FrameInfo& info, uint64_t count) {
+  Impl& s = *impl_;
+  if (s.finished) throw std::logic_error("VideoRecorder: add_frame after finish");
   if (count == 0) return;
+  s.next_frame += count;
   const uint64_t first = s.next_frame - count;
 
   SceneState scene;
@@ -214,9 +231,20 @@ void VideoRecorder::add_frame(const mjModel* m, const mjData* d, const FrameInfo
   if (info.ghost_joint_rad) {
     scene.ghost_joint_rad = info.ghost_joint_rad;
   } else if (s.flange_qpos >= 0) {
-    scene.ghost_joint_rad = d->qpos[s.flange_qpos] + (info.setpoint_deg - info.position_deg) * std::numbers::pi / 180.0;
+    scene.ghost_joint_rad = flange_angle_rad(m, d) + (info.setpoint_deg - info.position_deg) * std::numbers::pi / 180.0;
   }
-  if (s.options.overlay) scene.overlay = overlay_lines(info, s.options.slowmo);
+  if (s.options.overlay) {
+    FrameInfo shown = info;
+    if (s.options.time_map) {
+      const TimeSegment& seg = s.options.time_map->segment_at(info.t_s);
+      shown.time_scale = seg.label();
+      if (seg.kind != TimeSegment::Kind::RealTime) scene.banner = seg.label();
+    } else if (s.options.slowmo != 1.0) {
+      shown.time_scale = fmt::format("slow motion {:g}x", s.options.slowmo);
+      scene.banner = shown.time_scale;
+    }
+    scene.overlay = overlay_lines(shown);
+  }
 
   std::size_t buffer = 0;
   {

@@ -1,7 +1,9 @@
-// Video of a twin run (issue 7): the twin hands over its MuJoCo state on
-// IO-Link cycle boundaries; frames are due by integer index (frame k at
-// t = k / fps / slowmo), rendered off-screen and encoded by ffmpeg to an
-// H.264 MP4 and/or written as PNG frames. The caller's thread only renders;
+// Video of a twin run (issue 7, 16): the caller hands over MuJoCo states in
+// simulated-time order; frame k is due at the simulated time the time map
+// gives for video time k / fps (constant slow motion, or automatic scaling:
+// renders/time_map.hpp), rendered off-screen and encoded by ffmpeg to the
+// container the file's extension names (.mp4, .webm, .gif) and/or written
+// as PNG frames. The caller's thread only renders;
 // a writer thread feeds ffmpeg and libpng (docs/performance-renders.md).
 // Output appears atomically: F.tmp (and DIR.tmp) renamed on finish().
 #pragma once
@@ -12,7 +14,9 @@
 #include <string>
 
 #include "device_logic/device_types.hpp"
+#include "renders/ffmpeg_encoder.hpp"
 #include "renders/offscreen.hpp"
+#include "renders/time_map.hpp"
 
 struct mjModel_;
 struct mjData_;
@@ -20,11 +24,12 @@ struct mjData_;
 namespace sreh {
 
 struct VideoOptions {
-  std::filesystem::path path;       // MP4 to write; empty: no video
+  std::filesystem::path path;       // .mp4, .webm or .gif to write; empty: no video
   double fps = 30.0;
   int width_px = 1280;              // even
   int height_px = 720;              // even
-  double slowmo = 1.0;              // video plays this many times slower than simulated time
+  double slowmo = 1.0;              // video plays this many times slower than simulated time ...
+  std::optional<TimeMap> time_map;  // ... unless a time map is given
   CameraSpec camera;
   std::filesystem::path frames_dir; // non-empty: PNG frames frame_000000.png ... here
   // Quality/speed (A-RENDERS-3, A-RENDERS-5).
@@ -52,6 +57,10 @@ struct FrameInfo {
   // the flange joint angle + (setpoint - position), factory direction
   // (A-RENDERS-7).
   std::optional<double> ghost_joint_rad;
+  std::string step;                  // "4 wait_until"; empty: not shown
+  std::optional<double> target_deg;  // target of the process data
+  int parameter_set = -1;            // motion parameter set of the process data; < 0: not shown
+  std::string time_scale;            // filled by the recorder from its time map
 };
 
 class VideoRecorder {
@@ -64,19 +73,23 @@ class VideoRecorder {
   VideoRecorder(const VideoRecorder&) = delete;
   VideoRecorder& operator=(const VideoRecorder&) = delete;
 
-  // True when frame k is due: t_s >= k / fps / slowmo (1 ns slack for the
-  // caller's cycles * cycle_s time).
+  // True when the next frame is due: t_s >= frame_time_s(next) (1 ns slack
+  // for the caller's cycles * cycle_s time).
   bool wants_frame(double t_s) const;
   // Renders the state once and emits every frame due up to info.t_s (more
   // than one when frames are denser than the caller's cycles). `d` is only
   // read (e.g. twin.plant().data()). Rethrows a writer-thread failure.
   void add_frame(const mjModel_* m, const mjData_* d, const FrameInfo& info);
+  // Renders the state once and emits it as the next `count` frames,
+  // whatever their due time (a still at the end of a run).
+  void hold(const mjModel_* m, const mjData_* d, const FrameInfo& info, uint64_t count);
   // Flushes, waits for ffmpeg, renames F.tmp -> F and DIR.tmp -> DIR.
   // Throws std::runtime_error (and removes the partial output) on failure.
   void finish();
 
   uint64_t frames_emitted() const; // video frames (index of the next due frame)
-  double frame_time_s(uint64_t k) const;
+  double frame_time_s(uint64_t k) const; // simulated time at which frame k is due
+  const TimeMap* time_map() const;       // null: constant slowmo
 
  private:
   struct Impl;
@@ -84,6 +97,6 @@ class VideoRecorder {
 };
 
 // The overlay lines a frame shows (also used by tests and the report).
-std::vector<std::pair<std::string, std::string>> overlay_lines(const FrameInfo& info, double slowmo);
+std::vector<std::pair<std::string, std::string>> overlay_lines(const FrameInfo& info);
 
 } // namespace sreh

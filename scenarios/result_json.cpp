@@ -10,7 +10,7 @@ nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : 
 // Simulated times are whole cycles; rounding hides float noise (0.10400000000000001).
 nlohmann::json time_s(double v) { return number(std::round(v * 1e9) / 1e9); }
 
-nlohmann::json optional_time(const std::optional<double>& v) { return v ? number(*v) : nlohmann::json(nullptr); }
+nlohmann::json optional_time(const std::optional<double>& v) { return v ? time_s(*v) : nlohmann::json(nullptr); }
 
 } // namespace
 
@@ -18,7 +18,7 @@ nlohmann::json optional_time(const std::optional<double>& v) { return v ? number
 nlohmann::json move_json(const MoveRecord& m) {
   return {{"number", m.number},
           {"parameter_set", m.parameter_set},
-          {"start_s", number(m.start_s)},
+          {"start_s", time_s(m.start_s)},
           {"start_deg", number(m.start_deg)},
           {"target_deg", number(m.target_deg)},
           {"end_deg", number(m.end_deg)},
@@ -26,7 +26,7 @@ nlohmann::json move_json(const MoveRecord& m) {
           {"wait_ms", number(m.wait_ms)},
           {"settling_timeout_ms", number(m.settling_timeout_ms)},
           {"settling_timeout_active", m.settling_timeout_active},
-          {"travel_s", number(m.travel_s)},
+          {"travel_s", time_s(m.travel_s)},
           {"settling_s", optional_time(m.settling_s)},
           {"positioning_s", optional_time(m.positioning_s)},
           {"in_window_s", optional_time(m.in_window_s)},

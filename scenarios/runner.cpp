@@ -111,6 +111,7 @@ class ScenarioRun {
   // ---- steps ----
   void run_steps(const std::vector<Step>& steps) {
     for (const Step& step : steps) {
+      if (o_.on_step) o_.on_step(step);
       std::visit([&](const auto& a) { execute(step, step.number, a); }, step.action);
     }
   }

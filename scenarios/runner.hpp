@@ -61,6 +61,8 @@ struct RunOptions {
   Limits limits;               // checked before the run starts (check_run_bound)
   // Called after every IO-Link cycle (video frames, progress).
   std::function<void(const Twin&)> on_cycle;
+  // Called when a step begins (the video overlay names it).
+  std::function<void(const Step&)> on_step;
 };
 
 // The twin a scenario describes (load, world, supply, thermal, clocks, NVM).

@@ -1,13 +1,18 @@
 #include "sizing/output.hpp"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 namespace sreh::sizing {
 namespace {
 
+// Simulated times are whole physics steps: rounded to the nanosecond so that
+// JSON carries no float noise (0.36250000000000004 -> 0.3625; issue 16).
+double ns_rounded(double v) { return std::isfinite(v) ? std::round(v * 1e9) / 1e9 : v; }
 nlohmann::json optional_number(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(); }
 // Times of a run whose moves did not all complete are null (not meaningful).
-nlohmann::json time_if(bool completed, double v) { return completed ? nlohmann::json(v) : nlohmann::json(); }
+nlohmann::json time_if(bool completed, double v) { return completed ? nlohmann::json(ns_rounded(v)) : nlohmann::json(); }
 std::string time_text(bool completed, double v, const char* unit) {
   return completed ? fmt::format("{:8.4f} {}", v, unit) : fmt::format("{:>8} {}", "-", unit);
 }
@@ -34,7 +39,7 @@ nlohmann::json to_json(const SizingRequest& rq, const SizingResult& r) {
   j["request"] = {{"angle_deg", rq.angle_deg},   {"load_gcm2", e.load_gcm2},       {"voltage_V", rq.voltage_V},
                   {"dwell_s", rq.dwell_s},       {"tolerance_deg", rq.tolerance_deg}, {"wait_ms", rq.wait_ms},
                   {"ambient_C", rq.ambient_C},   {"parameter_set", rq.parameter_set}, {"cycles", rq.cycles}};
-  j["travel_s"] = e.travel_s;
+  j["travel_s"] = ns_rounded(e.travel_s);
   j["completed"] = e.completed;
   j["settling_s"] = time_if(e.completed, e.settling_s);
   j["positioning_s"] = time_if(e.completed, e.positioning_s);
@@ -68,7 +73,7 @@ nlohmann::json to_json(const SizingRequest& rq, const SizingResult& r) {
   nlohmann::json moves = nlohmann::json::array();
   for (const MoveResult& m : e.moves) {
     moves.push_back({{"target_deg", m.target_deg},
-                     {"travel_s", m.travel_s},
+                     {"travel_s", ns_rounded(m.travel_s)},
                      {"settling_s", time_if(m.completed, m.settling_s)},
                      {"positioning_s", time_if(m.completed, m.positioning_s)},
                      {"max_tracking_error_deg", m.max_tracking_error_deg},

@@ -11,6 +11,9 @@
 #include "sizing/output.hpp"
 
 #if SREH_SIZING_WITH_REPORT
+#include "device_logic/motor_model.hpp"
+#include "device_logic/units.hpp"
+#include "renders/figure.hpp"
 #include "renders/report.hpp"
 #include "renders/svg_plot.hpp"
 #endif
@@ -41,15 +44,6 @@ namespace {
 
 using svg::xml_escape;
 
-constexpr const char* kCss = R"css(
-body{font-family:system-ui,-apple-system,"Segoe UI",sans-serif;margin:24px auto;max-width:1100px;color:#222;padding:0 16px}
-h1{font-size:22px;margin-bottom:4px}h2{font-size:17px;margin-top:28px;border-bottom:1px solid #ddd;padding-bottom:4px}
-.result{display:inline-block;padding:3px 12px;border-radius:4px;font-weight:bold;color:#fff}
-.ok{background:#2e7d32}.bad{background:#c62828}
-table{border-collapse:collapse;font-size:13px}td,th{border:1px solid #ccc;padding:3px 8px;text-align:right}
-th{background:#f2f2f2}td.l,th.l{text-align:left}
-pre{background:#f7f7f7;padding:8px;font-size:13px;overflow-x:auto}.note{color:#666;font-size:12px}
-)css";
 
 // A small fixed palette, one colour per angle / series.
 const char* colour(std::size_t i) {
@@ -60,8 +54,8 @@ const char* colour(std::size_t i) {
 
 std::string page_head(const std::string& title) {
   return fmt::format("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>{}</title>\n"
-                     "<style>{}</style>\n</head>\n<body>\n<h1>{}</h1>\n",
-                     xml_escape(title), kCss, xml_escape(title));
+                     "<style>{}</style>\n{}</head>\n<body>\n<h1>{}</h1>\n",
+                     xml_escape(title), report::kPageCss, report::interactive_head(), xml_escape(title));
 }
 
 std::string row(const std::string& name, const std::string& value) {
@@ -95,6 +89,37 @@ std::string numbers_table(const SizingRequest& rq, const SizingResult& r) {
            e.time_to_warning_s ? fmt::format("{:.0f} s", *e.time_to_warning_s) : std::string("never"));
   o += row("simulations", fmt::format("{}", r.simulations));
   return o + "</table>\n";
+}
+
+// The motor's speed-torque capability at the sizing's supply (MotorModel,
+// manual 3.5.3) with the move's operating points: motoring and braking.
+std::string speed_torque_plot(const SizingRequest& rq, const Evaluation& e) {
+  svg::Plot p;
+  p.id = "speed-torque";
+  p.title = fmt::format("Speed-torque: operating points and motor capability at {:.1f} V", rq.voltage_V);
+  p.x = {"speed |velocity|", "deg/s", 0.0, {}};
+  p.y = {"|motor torque|", "N m", 0.0, {}};
+  const MotorModel motor;
+  svg::Series cap{"capability (motoring)", {}, {}, "#d62728", 1.6, false, false};
+  const double top_dps = 1.05 * rad_to_deg(rq.voltage_V / motor.torque_constant_Nm_per_A);
+  for (int k = 0; k <= 200; ++k) {
+    const double dps = top_dps * k / 200;
+    const double tq = motor.max_torque_Nm(deg_to_rad(dps), rq.voltage_V, 1.0);
+    if (tq < 0) break;
+    cap.x.push_back(dps);
+    cap.y.push_back(tq);
+  }
+  svg::Series motoring{"motoring", {}, {}, "#1f77b4", 1.0, false, true};
+  svg::Series braking{"braking", {}, {}, "#ff7f0e", 1.0, false, true};
+  for (const TraceRow& r : e.trace) {
+    const bool brake = r.torque_Nm * r.velocity_dps < 0;
+    (brake ? braking : motoring).x.push_back(std::abs(r.velocity_dps));
+    (brake ? braking : motoring).y.push_back(std::abs(r.torque_Nm));
+  }
+  p.series = {cap, motoring, braking};
+  p.hlines = {{kTorqueMargin * e.torque_capability_Nm, fmt::format("{:.0f} % of peak", 100 * kTorqueMargin), "#9467bd", true}};
+  p.vlines = {{e.set.setting.speed_dps, "set speed", "#555555"}};
+  return report::figure(p, false);
 }
 
 } // namespace
@@ -139,7 +164,7 @@ std::string size_report_html(const SizingRequest& rq, const SizingResult& r) {
     p.x = {"time", "s", {}, {}};
     p.y = {"position", "deg", {}, {}};
     p.series = {{"setpoint", t, sp, "#2ca02c", 1.5, true}, {"actual", t, pos, "#1f77b4", 1.5, false}};
-    o += svg::to_svg(p) + "\n";
+    o += report::figure(p);
     svg::Plot v;
     v.id = "velocity";
     v.title = "Velocity";
@@ -147,7 +172,7 @@ std::string size_report_html(const SizingRequest& rq, const SizingResult& r) {
     v.y = {"velocity", "deg/s", {}, {}};
     v.series = {{"velocity", t, vel, "#1f77b4", 1.5, false}};
     v.hlines = {{e.set.setting.speed_dps, "set speed", "#d62728", true}, {-e.set.setting.speed_dps, "", "#d62728", true}};
-    o += svg::to_svg(v) + "\n";
+    o += report::figure(v);
     svg::Plot q;
     q.id = "torque";
     q.title = "Motor torque";
@@ -155,10 +180,11 @@ std::string size_report_html(const SizingRequest& rq, const SizingResult& r) {
     q.y = {"torque", "N m", {}, {}};
     q.series = {{"torque", t, tq, "#ff7f0e", 1.5, false}};
     const double cap = e.torque_capability_Nm, margin = kTorqueMargin * cap;
-    q.hlines = {{cap, "capability", "#d62728", false},  {-cap, "", "#d62728", false},
+    q.hlines = {{cap, "peak torque", "#d62728", false},  {-cap, "", "#d62728", false},
                 {margin, fmt::format("{:.0f} % margin", 100 * kTorqueMargin), "#9467bd", true},
                 {-margin, "", "#9467bd", true}};
-    o += svg::to_svg(q) + "\n";
+    o += report::figure(q);
+    o += speed_torque_plot(rq, e);
     svg::Plot te;
     te.id = "tracking";
     te.title = "Tracking error";
@@ -166,7 +192,7 @@ std::string size_report_html(const SizingRequest& rq, const SizingResult& r) {
     te.y = {"tracking error", "deg", {}, {}};
     te.series = {{"setpoint - actual", t, err, "#8c564b", 1.5, false}};
     te.bands = {{{}, {}, -e.set.tolerance_deg, e.set.tolerance_deg, "tolerance window", "#2ca02c", 0.15}};
-    o += svg::to_svg(te) + "\n";
+    o += report::figure(te);
   }
   o += "<p class=\"note\">Travel time from the device's planner; settling and positioning simulated; torque "
        "sampled per IO-Link cycle; temperature from the twin's lumped thermal model at the cycle's mean loss "

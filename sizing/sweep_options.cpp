@@ -16,21 +16,21 @@ namespace {
 using W = SweepOptions;
 const OptionSpec<W> kSweepOptions[] = {
     {"loads-gcm2", "Load inertias, comma separated, 0 .. 15000 g cm^2", &W::loads_gcm2, true},
-    {"angles-deg", "Move angles, comma separated", &W::angles_deg, true},
+    {"angles-deg", "Move angles in deg, comma separated", &W::angles_deg, true},
     {"voltages-V", "Supply voltages 16 .. 32 V, comma separated", &W::voltages_V, false, true},
-    {"speeds-dps", "Evaluate these speeds (comma separated) instead of recommending", &W::speeds_dps},
-    {"accel-pct", "Acceleration with --speeds-dps", &W::accel_pct, false, true},
-    {"jerk-pct", "Jerk with --speeds-dps", &W::jerk_pct, false, true},
+    {"speeds-dps", "Evaluate these speeds in deg/s (comma separated) instead of recommending [default: recommend]", &W::speeds_dps},
+    {"accel-pct", "Acceleration with --speeds-dps, 0.1 .. 100 %", &W::accel_pct, false, true},
+    {"jerk-pct", "Jerk with --speeds-dps, 0.1 .. 100 %", &W::jerk_pct, false, true},
     {"dwell-s", "Pause after each move, s", &W::dwell_s, false, true},
-    {"tolerance-deg", "Position tolerance (index 64+n.5)", &W::tolerance_deg, false, true},
-    {"wait-ms", "Waiting time (index 64+n.6)", &W::wait_ms, false, true},
-    {"timeout-ms", "Settling timeout (index 64+n.7)", &W::timeout_ms},
+    {"tolerance-deg", "Position tolerance in deg (index 64+n.5)", &W::tolerance_deg, false, true},
+    {"wait-ms", "Waiting time in ms (index 64+n.6)", &W::wait_ms, false, true},
+    {"timeout-ms", "Settling timeout in ms (index 64+n.7) [default: wait + 75 ms, >= 100 ms]", &W::timeout_ms},
     {"ambient-C", "Ambient temperature, degC", &W::ambient_C, false, true},
     {"cycles", "Back-and-forth cycles simulated per evaluation", &W::cycles, false, true},
-    {"threads", "Worker threads 1 .. 64 (default: one per core)", &W::threads},
-    {"csv", "Write the results here (one row per grid point)", &W::csv},
+    {"threads", "Worker threads 1 .. 64 [default: one per core]", &W::threads},
+    {"csv", "Write the results to this CSV file (one row per grid point)", &W::csv},
     {"report", "Write an HTML report with plots into this folder", &W::report},
-    {"targets-s", "Target positioning times for the heaviest-load plot, comma separated", &W::targets_s},
+    {"targets-s", "Target positioning times in s for the heaviest-load plot, comma separated [default: 8 spanning the feasible times]", &W::targets_s},
 };
 
 constexpr SweepColumnSpec kColumns[] = {

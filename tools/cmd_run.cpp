@@ -23,7 +23,10 @@
 #include "twin/plant.hpp"
 #include "twin/trace.hpp"
 #ifdef SREH_WITH_RENDER
+#include "device_logic/units.hpp"
+#include "renders/ffmpeg_encoder.hpp"
 #include "renders/report.hpp"
+#include "renders/run_recording.hpp"
 #include "renders/video.hpp"
 #endif
 
@@ -41,7 +44,7 @@ struct RunArgs {
   std::string video;
   int fps = 30;
   std::string size = "1280x720";
-  double slowmo = 1.0;
+  double slowmo = 0; // 0: automatic time scaling
   std::string frames;
   std::string camera = "default";
   std::string report;
@@ -124,16 +127,17 @@ void print_summary(const RunResult& r) {
 }
 
 #ifdef SREH_WITH_RENDER
-// Video frames are taken on IO-Link cycle boundaries (issue 7), by integer
-// frame index inside the recorder; the recorder is made when the twin exists.
+// The run is recorded once per IO-Link cycle and rendered after it, when the
+// moves are known: the time map slows every move down and compresses idle
+// stretches (issue 16), unless --slowmo fixes one factor.
 class VideoHook {
  public:
-  explicit VideoHook(VideoOptions options) : options_(std::move(options)) {}
+  void on_step(const Step& step) { step_ = step.number + " " + step.kind; }
   void on_cycle(const Twin& twin) {
     const Plant& plant = twin.plant();
-    if (!recorder_) recorder_ = std::make_unique<VideoRecorder>(plant.model(), options_);
-    if (!recorder_->wants_frame(twin.time_s())) return;
+    if (!recording_) recording_ = std::make_unique<RunRecording>(plant.model());
     const Telemetry t = twin.telemetry();
+    const ProcessDataOut& pd = twin.pd_out();
     FrameInfo info;
     info.t_s = twin.time_s();
     info.state = t.state;
@@ -144,15 +148,19 @@ class VideoHook {
     info.warning_code = t.warning_code;
     info.led = t.led;
     info.ghost_joint_rad = plant.ghost_angle_rad();
-    recorder_->add_frame(plant.model(), plant.data(), info);
+    info.step = step_;
+    info.target_deg = wire_counts_to_deg(pd.target_position);
+    info.parameter_set = pd.parameter_set;
+    recording_->add(plant.data(), info, t.velocity_dps, t.moving || t.settling);
   }
-  void finish() {
-    if (recorder_) recorder_->finish();
+  VideoSummary render(const VideoOptions& options, bool fixed_slowmo) const {
+    if (!recording_) throw std::runtime_error("video: the run has no cycle to show");
+    return recording_->render(options, fixed_slowmo);
   }
 
  private:
-  VideoOptions options_;
-  std::unique_ptr<VideoRecorder> recorder_;
+  std::string step_;
+  std::unique_ptr<RunRecording> recording_;
 };
 
 VideoOptions video_options(const RunArgs& a) {
@@ -160,7 +168,7 @@ VideoOptions video_options(const RunArgs& a) {
   v.path = a.video;
   v.frames_dir = a.frames;
   v.fps = a.fps;
-  v.slowmo = a.slowmo;
+  v.slowmo = a.slowmo > 0 ? a.slowmo : 1.0;
   const auto x = a.size.find('x'); // checked by check_size
   v.width_px = std::stoi(a.size.substr(0, x));
   v.height_px = std::stoi(a.size.substr(x + 1));
@@ -172,14 +180,15 @@ void write_report_dir(const RunArgs& a, const RunResult& r) {
   ReportInput in;
   in.scenario_name = r.name;
   in.passed = r.passed;
-  for (const auto& c : r.checks) in.checks.push_back({fmt::format("step {} (line {}): {}", c.step, c.line, c.description), c.passed});
+  for (const auto& c : r.checks) in.checks.push_back({c.description, c.passed, c.step, c.line, c.t_s, c.actual});
   in.trace = r.trace;
   in.moves = r.moves;
   in.tracking_limit_deg = r.tracking_limit_deg;
-  if (!a.video.empty()) {
-    namespace fs = std::filesystem;
-    in.video_file = fs::relative(fs::absolute(a.video), fs::absolute(a.report)).generic_string();
-  }
+  in.command_line = command_line();
+  in.version = SREH_VERSION;
+  in.sim_time_s = r.sim_time_s;
+  in.max_tracking_error_deg = r.max_tracking_error_deg;
+  if (!a.video.empty()) in.video_source = a.video; // copied in: the folder stays movable
   try {
     write_report(a.report, in);
   } catch (const std::exception& e) {
@@ -238,6 +247,11 @@ int run_command(RunArgs a) {
                      {"--frames", a.frames, io::OutputKind::EmptyFolder},
                      {"--report", a.report, io::OutputKind::Folder}},
                     inputs_of(a, scenario));
+#ifdef SREH_WITH_RENDER
+  if (!a.video.empty() && !container_for(a.video)) {
+    throw InputError(fmt::format("--video {}: the extension must be .mp4, .webm or .gif", a.video));
+  }
+#endif
 
   RunResult result;
   std::optional<TraceStream> trace;
@@ -259,13 +273,20 @@ int run_command(RunArgs a) {
     if (trace && !in_memory) options.trace_sink = [&](const TraceRow& row) { trace->row(row); };
 #ifdef SREH_WITH_RENDER
     std::optional<VideoHook> video;
-    if (!a.video.empty() || !a.frames.empty()) video.emplace(video_options(a));
+    if (!a.video.empty() || !a.frames.empty()) video.emplace();
     options.on_cycle = [&](const Twin& twin) {
       if (video) video->on_cycle(twin);
       progress.update(twin.time_s());
     };
+    if (video) options.on_step = [&](const Step& step) { video->on_step(step); };
     result = run_scenario(scenario, options);
-    if (video) video->finish();
+    if (video) {
+      try {
+        video->render(video_options(a), a.slowmo > 0);
+      } catch (const std::invalid_argument& e) {
+        throw InputError(e.what());
+      }
+    }
 #else
     options.on_cycle = [&](const Twin& twin) { progress.update(twin.time_s()); };
     result = run_scenario(scenario, options);
@@ -304,17 +325,22 @@ SREH_REGISTER_COMMAND(10, [](CLI::App& app, int& exit_code) {
   auto args = std::make_shared<RunArgs>();
   CLI::App* cmd = app.add_subcommand("run", "Simulate a scenario and check its expectations (exit 0 held, 1 failed, 2 bad input)");
   cmd->add_option("scenario", args->scenario, "Scenario file (YAML, see scenarios/README.md)")->required();
-  cmd->add_option("--trace", args->trace, "Write a CSV trace, one row per IO-Link cycle (streamed to disk)");
-  cmd->add_option("--trace-every", args->trace_every, "Keep every Nth cycle in the trace")->check(CLI::Range(1, 1000000));
+  cmd->add_option("--trace", args->trace, "Write a CSV trace to this file, one row per IO-Link cycle (streamed to disk)");
+  cmd->add_option("--trace-every", args->trace_every, "Keep every Nth cycle in the trace, 1 .. 1000000")
+      ->check(CLI::Range(1, 1000000))
+      ->capture_default_str();
   cmd->add_flag("--json", args->json, "Print one JSON object with the results on stdout");
-  cmd->add_option("--video", args->video, "Render an MP4 video of the run");
-  cmd->add_option("--fps", args->fps, "Video frames per second")->check(CLI::Range(1, 240));
-  cmd->add_option("--size", args->size, "Video size WIDTHxHEIGHT (even numbers, 16 .. 4096)")->capture_default_str();
-  cmd->add_option("--slowmo", args->slowmo, "Play the video this many times slower than simulated time")
+  cmd->add_option("--video", args->video, "Render a video of the run: .mp4 (H.264), .webm (VP8) or .gif");
+  cmd->add_option("--fps", args->fps, "Video frames per second, 1 .. 240")->check(CLI::Range(1, 240))->capture_default_str();
+  cmd->add_option("--size", args->size, "Video size WIDTHxHEIGHT in pixels (even numbers, 16 .. 4096)")->capture_default_str();
+  cmd->add_option("--slowmo", args->slowmo,
+                  "Play the whole video this many times slower than simulated time, 0.01 .. 1000 [default: automatic: "
+                  "each move >= 2 s on screen, idle > 2 s sped up to 1 s]")
       ->check(CLI::Range(0.01, 1000.0));
-  cmd->add_option("--frames", args->frames, "Also write PNG frames into this folder (absent or empty)");
-  cmd->add_option("--camera", args->camera, "Camera: default (frames module and load) or top")->capture_default_str();
-  cmd->add_option("--report", args->report, "Write an HTML report with plots into this folder");
+  cmd->add_option("--frames", args->frames, "Also write PNG frames into this folder (new or empty)");
+  cmd->add_option("--camera", args->camera, "Camera: default (fits module and load, 135 deg azimuth, 30 deg down) or top")
+      ->capture_default_str();
+  cmd->add_option("--report", args->report, "Write an HTML report folder (index.html, the video copied in) here");
   cmd->add_option("--save-nvm", args->save_nvm, "Save the device's non-volatile memory at the end to this file");
   // Limits (issue 12, scenarios/README.md "Limits"): exceeding one is exit 2.
   Limits& l = args->limits;

@@ -20,6 +20,10 @@ using CommandSetup = std::function<void(CLI::App& app, int& exit_code)>;
 
 bool register_command(int order, CommandSetup setup);
 
+// The command line this process was started with, shell-quoted where needed
+// (reports show it so a run can be repeated).
+const std::string& command_line();
+
 } // namespace sreh::tools
 
 #define SREH_CONCAT_INNER(a, b) a##b

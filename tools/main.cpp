@@ -21,6 +21,27 @@ std::vector<std::pair<int, CommandSetup>>& registry() {
 }
 } // namespace
 
+std::string& command_line_storage() {
+  static std::string line;
+  return line;
+}
+
+void set_command_line(int argc, char** argv) {
+  std::string& line = command_line_storage();
+  for (int i = 0; i < argc; ++i) {
+    std::string a = i == 0 ? std::string("sreh-twin") : std::string(argv[i]);
+    const bool plain = !a.empty() && a.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_./=:,+@%") == std::string::npos;
+    if (!plain) {
+      std::string q = "'";
+      for (char c : a) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+      a = q + "'";
+    }
+    line += (i ? " " : "") + a;
+  }
+}
+
+const std::string& command_line() { return command_line_storage(); }
+
 bool register_command(int order, CommandSetup setup) {
   registry().emplace_back(order, std::move(setup));
   return true;
@@ -42,6 +63,7 @@ int fail(int code, const std::string& what) {
 
 int main(int argc, char** argv) {
   using namespace sreh::tools;
+  set_command_line(argc, argv);
   CLI::App app{"sreh-twin: digital twin of the Afag SREH-50-IOL smart rotary module"};
   app.footer(kExitCodes);
   // --version: the release and where this installation finds its models (issue 13).

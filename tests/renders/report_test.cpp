@@ -1,10 +1,13 @@
-// HTML report (issue 7): self-contained, shows the result, the expectations,
-// the per-move times (manual 3.5.2 terms), the plots and the settling zoom
-// (manual 3.5.2 Fig. 3), written atomically, renders in Chromium cleanly.
+// HTML report (issue 7, 16): a movable folder, summary on top, the
+// expectations, the per-move times (manual 3.5.2 terms), zoomable plots with
+// readable SVG axes and the settling zoom (manual 3.5.2 Fig. 3), written
+// atomically, renders in Chromium cleanly and plays its video there.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <fstream>
+#include <regex>
+#include <set>
 #include <sstream>
 
 #include "renders/report.hpp"
@@ -30,11 +33,26 @@ std::string slurp(const fs::path& p) {
 
 // A synthetic run: one 90 deg move starting at 0.1 s, 200 ms travel, the
 // actual position lags and rings into the window, complete at 0.3345 s.
+// Every src= / href= of the page's elements.
+std::vector<std::string> links(const std::string& html) {
+  std::vector<std::string> out;
+  const std::regex attr(R"re(<[a-z]+ [^>]*(src|href)="([^"]*)")re");
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), attr); it != std::sregex_iterator(); ++it) out.push_back((*it)[2]);
+  return out;
+}
+
+ReportCheck check(const std::string& description, bool passed, const std::string& step = "3", const std::string& actual = "") {
+  return {description, passed, step, 7, 0.25, actual};
+}
+
 ReportInput sample_run(double cycle_s = 0.002, double duration_s = 0.6) {
   ReportInput in;
   in.scenario_name = "absolute move 90 deg <disk>";
   in.passed = true;
-  in.checks = {{"state Done within 1.0 s", true}, {"position_deg in [89.9, 90.1]", true}, {"max_tracking_error_deg <= 0.5", true}};
+  in.checks = {check("state Done within 1.0 s", true), check("position_deg in [89.9, 90.1]", true),
+               check("max_tracking_error_deg <= 0.5", true)};
+  in.command_line = "sreh-twin run 'my scenario.yaml' --report out";
+  in.version = "9.9.9";
   const auto n = static_cast<long>(std::llround(duration_s / cycle_s));
   for (long k = 0; k <= n; ++k) {
     TraceRow r;
@@ -82,31 +100,79 @@ TEST(Report, ShowsResultChecksMoveTimesAndPlots) {
   EXPECT_NE(html.find("waiting time (3) 20 ms"), std::string::npos);
   EXPECT_NE(html.find("(f) complete"), std::string::npos);
   EXPECT_EQ(html.find("<video"), std::string::npos);
-  // Self-contained: nothing fetched from elsewhere, no scripts.
-  EXPECT_EQ(html.find("http://"), html.find("http://www.w3.org/2000/svg"));
-  EXPECT_EQ(html.find("https://"), std::string::npos);
-  EXPECT_EQ(html.find("<script"), std::string::npos);
+  // The run's command line and version.
+  EXPECT_NE(html.find("sreh-twin run &#39;my scenario.yaml&#39; --report out"), std::string::npos);
+  EXPECT_NE(html.find("sreh-twin 9.9.9"), std::string::npos);
+  // Self-contained: nothing fetched from elsewhere; dygraphs is inlined.
+  EXPECT_EQ(html.find("<script src"), std::string::npos);
   EXPECT_EQ(html.find("<link"), std::string::npos);
+  EXPECT_TRUE(links(html).empty());
+  EXPECT_NE(html.find("Dygraph"), std::string::npos);
+  // One zoomable twin for each of the 6 plots over time.
+  EXPECT_EQ(count(html, "srehPlot(\"dy-"), 6u);
+}
+
+// Issue 16: every <svg> plot carries >= 6 distinct numeric tick labels as
+// plain <text> numbers (ASCII minus, units only in the axis titles).
+TEST(Report, EverySvgPlotHasSixDistinctNumericTickLabels) {
+  const std::string html = report_html(sample_run());
+  const std::regex number(R"(<text[^>]*>(-?[0-9]+(\.[0-9]+)?)</text>)");
+  std::size_t svgs = 0;
+  for (std::size_t a = html.find("<svg"); a != std::string::npos; a = html.find("<svg", a + 1)) {
+    const std::string svg = html.substr(a, html.find("</svg>", a) - a);
+    std::set<std::string> labels;
+    for (auto it = std::sregex_iterator(svg.begin(), svg.end(), number); it != std::sregex_iterator(); ++it) labels.insert((*it)[1]);
+    EXPECT_GE(labels.size(), 6u) << svg.substr(0, 300);
+    EXPECT_EQ(labels.count("-0"), 0u);
+    ++svgs;
+  }
+  EXPECT_EQ(svgs, 7u);
+  EXPECT_EQ(html.find("\xE2\x88\x92"), std::string::npos); // no Unicode minus
+}
+
+// The tracking error is scaled to the data; the index-87 limit far above it
+// is named at the plot's edge instead of flattening the curve.
+TEST(Report, TrackingPlotScalesToTheDataAndNamesAnOffScaleLimit) {
+  const std::string html = report_html(sample_run());
+  const std::size_t a = html.find("id=\"dy-p-tracking\"");
+  ASSERT_NE(a, std::string::npos);
+  const std::size_t svg = html.find("<svg", a);
+  const std::string plot = html.substr(svg, html.find("</svg>", svg) - svg);
+  EXPECT_NE(plot.find("tracking limit (index 87) (2, off scale)"), std::string::npos);
+  EXPECT_EQ(plot.find(">2.0<"), std::string::npos);
 }
 
 TEST(Report, FailedRunAndIncompleteMoveAreMarked) {
   ReportInput in = sample_run();
   in.passed = false;
-  in.checks.push_back({"warning_code == 0", false});
+  in.checks.push_back(check("expect warning_code 0", false, "9", "warning_code 0x02"));
   in.moves[0].outcome = MoveOutcome::Error;
   in.moves[0].settling_s.reset();
   in.moves[0].positioning_s.reset();
   const std::string html = report_html(in);
   EXPECT_NE(html.find("FAILED"), std::string::npos);
-  EXPECT_NE(html.find("<td class=\"bad\">FAIL</td>"), std::string::npos);
+  EXPECT_NE(html.find("<td class=\"badc\">FAIL</td>"), std::string::npos);
+  // The summary on top names each failed check with its step and value.
+  const std::size_t failed = html.find("<ul class=\"failed\"");
+  ASSERT_NE(failed, std::string::npos);
+  EXPECT_LT(failed, html.find("<h2>"));
+  EXPECT_NE(html.find("step 9 (line 7): expect warning_code 0 &mdash; got warning_code 0x02", failed), std::string::npos);
   EXPECT_NE(html.find("not completed"), std::string::npos);
   EXPECT_NE(html.find("<td>200.0</td><td>&mdash;</td><td>&mdash;</td>"), std::string::npos);
 }
 
-TEST(Report, EmbedsTheVideoWhenRendered) {
+TEST(Report, CopiesTheVideoInSoTheFolderCanBeMoved) {
+  test::TempDir tmp;
+  std::ofstream(tmp / "run.mp4") << "not really a video";
   ReportInput in = sample_run();
-  in.video_file = "run.mp4";
-  EXPECT_NE(report_html(in).find("<video src=\"run.mp4\" controls"), std::string::npos);
+  in.video_source = tmp / "run.mp4";
+  write_report(tmp / "report", in);
+  fs::rename(tmp / "report", tmp / "moved");
+  fs::remove(tmp / "run.mp4");
+  const std::string html = slurp(tmp / "moved" / "index.html");
+  EXPECT_NE(html.find("<video id=\"video\" src=\"video.mp4\" controls"), std::string::npos);
+  EXPECT_EQ(slurp(tmp / "moved" / "video.mp4"), "not really a video");
+  EXPECT_EQ(links(html), std::vector<std::string>{"video.mp4"}); // nothing outside the folder
 }
 
 TEST(Report, LongTracesAreDecimatedSoTheHtmlStaysSmall) {
@@ -140,23 +206,45 @@ TEST(Report, UnwritableDirectoryThrowsAndLeavesNothing) {
   EXPECT_EQ(entries, 1u);
 }
 
-// The report opens in a real browser without console errors.
-TEST(Report, RendersInHeadlessChromiumWithoutConsoleErrors) {
+// The report opens in a real browser without console errors, draws its
+// zoomable plots and plays its (H.264) video: Debian's Chromium decodes it.
+TEST(Report, RendersInHeadlessChromiumAndPlaysTheVideo) {
   if (!test::on_path("chromium")) GTEST_SKIP() << "chromium not installed";
+  if (!test::on_path("ffmpeg")) GTEST_SKIP() << "ffmpeg not installed";
   test::TempDir tmp;
-  const fs::path index = write_report(tmp / "report", sample_run());
+  const fs::path clip = tmp / "clip.mp4";
+  test::run_capture("ffmpeg -v error -f lavfi -i testsrc=size=160x120:rate=10 -t 2 -c:v libx264 -pix_fmt yuv420p -y '" +
+                    clip.string() + "'");
+  ASSERT_TRUE(fs::exists(clip));
+  ReportInput in = sample_run();
+  in.video_source = clip;
+  const fs::path index = write_report(tmp / "report", in);
+  // A probe appended to a copy of the page reports into the title.
+  std::string html = slurp(index);
+  html.insert(html.rfind("</body>"),
+              "<script>var v=document.getElementById('video');"
+              "v.addEventListener('error',function(){document.title='VIDEO-ERROR '+(v.error&&v.error.code)});"
+              "v.play().then(function(){setTimeout(function(){document.title='PLAYING t='+v.currentTime+' w='+v.videoWidth"
+              "+' live='+document.querySelectorAll('.fig.live canvas').length},1000)})"
+              ".catch(function(e){document.title='REJECTED '+e});</script>");
+  std::ofstream(tmp / "report" / "probe.html") << html;
   const fs::path profile = tmp / "profile";
   const fs::path err = tmp / "stderr.txt";
   // `timeout` only guards against a hung browser; nothing is timed.
-  const std::string cmd = "timeout 300 chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
+  const std::string cmd = "timeout 300 chromium --headless=new --no-sandbox --disable-gpu --disable-quic --no-first-run "
                           "--disable-background-networking --disable-component-update --disable-sync "
+                          "--autoplay-policy=no-user-gesture-required --virtual-time-budget=5000 "
                           "--enable-logging=stderr --v=0 --user-data-dir='" + profile.string() + "' --dump-dom 'file://" +
-                          index.string() + "' 2>'" + err.string() + "'";
+                          (tmp / "report" / "probe.html").string() + "' 2>'" + err.string() + "'";
   const std::string dom = test::run_capture(cmd);
   const std::string log = slurp(err);
   EXPECT_NE(dom.find("<svg"), std::string::npos) << log;
   EXPECT_NE(dom.find("PASSED"), std::string::npos);
-  EXPECT_EQ(log.find("CONSOLE"), std::string::npos) << log;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(dom, m, std::regex("<title>PLAYING t=([0-9.]+) w=([0-9]+) live=([0-9]+)</title>"))) << dom.substr(0, 400);
+  EXPECT_GT(std::stod(m[1]), 0.0);  // time advanced: the video plays
+  EXPECT_EQ(m[2], "160");           // and was decoded
+  EXPECT_GE(std::stoi(m[3]), 6);    // dygraphs drew (canvases in live figures)
   EXPECT_EQ(log.find("Uncaught"), std::string::npos) << log;
 }
 

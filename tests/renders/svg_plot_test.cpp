@@ -2,6 +2,9 @@
 // the size, markup is escaped.
 #include <gtest/gtest.h>
 
+#include <set>
+#include <string>
+
 #include <cmath>
 
 #include "renders/svg_plot.hpp"
@@ -23,6 +26,33 @@ TEST(NiceTicks, CoverTheRangeWithRoundSteps) {
   EXPECT_GE(t.front(), -0.013);
   EXPECT_LE(t.back(), 0.047);
   EXPECT_TRUE(nice_ticks(1.0, 1.0).empty());
+}
+
+// Issue 16: at least 4 labelled ticks per axis whatever the range, labels
+// with the decimals the step needs, never "-0".
+TEST(AxisTicks, AtLeastFourReadableLabelsOnAnyRange) {
+  for (auto [lo, hi] : {std::pair{-0.00115, 0.00115}, std::pair{0.195, 0.2}, std::pair{0.0, 1.0}, std::pair{89.99, 90.01},
+                        std::pair{-3000.0, 3000.0}, std::pair{24.0, 24.000001}}) {
+    const auto t = axis_ticks(lo, hi, 5);
+    ASSERT_GE(t.size(), 4u) << lo << " .. " << hi;
+    std::set<std::string> labels;
+    for (double v : t) labels.insert(tick_label(v, t[1] - t[0]));
+    EXPECT_EQ(labels.size(), t.size()) << lo << " .. " << hi; // distinct
+  }
+  EXPECT_EQ(tick_label(-1e-18, 0.0005), "0.0000");
+  EXPECT_EQ(tick_label(-0.001, 0.0005), "-0.0010");
+  EXPECT_EQ(tick_label(2.5, 0.5), "2.5");
+}
+
+// A limit far outside the data does not flatten it; it is named at the edge.
+TEST(SvgPlot, OffScaleLimitIsNamedNotScaledTo) {
+  Plot p;
+  p.series = {{"err", {0, 1, 2}, {0.001, -0.001, 0.0005}}};
+  p.hlines = {{1.0, "tracking limit", "#d62728", true, false}, {-1.0, "", "#d62728", true, false}};
+  const std::string s = to_svg(p);
+  EXPECT_NE(s.find("tracking limit (1, off scale)"), std::string::npos);
+  EXPECT_EQ(s.find("class=\"limit\""), std::string::npos);
+  EXPECT_NE(s.find(">0.0010<"), std::string::npos);
 }
 
 TEST(Decimation, KeepsSpikesAndBoundsThePointCount) {

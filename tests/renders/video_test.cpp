@@ -143,23 +143,32 @@ TEST_F(VideoTest, RejectsBadOptions) {
   EXPECT_TRUE(fs::exists(dir_ / "full" / "keep.txt"));
 }
 
-TEST(OverlayLines, ShowStateCodesAndSlowMotion) {
+TEST(OverlayLines, ShowStepTargetSetCodesAndTimeScale) {
   FrameInfo f;
   f.t_s = 1.5;
   f.state = State::ErrorOn;
   f.error_code = 0x08;
-  const auto lines = overlay_lines(f, 10.0);
+  f.step = "4 wait_until";
+  f.target_deg = 90;
+  f.parameter_set = 2;
+  f.time_scale = "slow motion 20x";
+  const auto lines = overlay_lines(f);
   auto value = [&](const std::string& label) {
     for (const auto& [l, v] : lines)
       if (l == label) return v;
     return std::string("<missing>");
   };
-  EXPECT_EQ(value("t"), "1.500 s");
+  EXPECT_EQ(value("t"), "1.5000 s");
   EXPECT_EQ(value("state"), "ErrorOn");
-  EXPECT_EQ(value("error"), "0x08");
-  EXPECT_EQ(value("warning"), "none");
-  EXPECT_EQ(value("slow motion"), "10x");
-  EXPECT_EQ(overlay_lines(f, 1.0).size(), lines.size() - 1);
+  EXPECT_EQ(value("step"), "4 wait_until");
+  EXPECT_EQ(value("target"), "90.000 deg");
+  EXPECT_EQ(value("parameter set"), "2");
+  EXPECT_EQ(value("error / warning"), "0x08 / none");
+  EXPECT_EQ(value("time scale"), "slow motion 20x");
+  EXPECT_EQ(value("LED band"), "off");
+  f.time_scale.clear();
+  f.step.clear();
+  EXPECT_EQ(overlay_lines(f).size(), lines.size() - 2);
 }
 
 } // namespace

@@ -149,3 +149,29 @@ steps:
 
 } // namespace
 } // namespace sreh
+
+namespace sreh {
+namespace {
+
+// Issue 16: simulated times in JSON carry no binary float noise
+// (0.19740000000000002 -> 0.1974): they are whole physics steps.
+TEST(ResultJson, TimesHaveNoFloatNoise) {
+  RunResult r;
+  MoveRecord m;
+  m.start_s = 0.1 + 0.2;                        // 0.30000000000000004
+  m.travel_s = 1974 * 1e-4;                     // 0.19740000000000002
+  m.settling_s = 0.1 * 3;                       // 0.30000000000000004
+  m.positioning_s = m.travel_s + *m.settling_s; // 0.49740000000000006
+  m.outcome = MoveOutcome::Done;
+  r.moves = {m};
+  r.sim_time_s = 181 * 0.002;                   // 0.36200000000000004
+  const std::string text = to_json(r).dump();
+  EXPECT_NE(text.find("\"start_s\":0.3,"), std::string::npos) << text;
+  EXPECT_NE(text.find("\"travel_s\":0.1974"), std::string::npos) << text;
+  EXPECT_NE(text.find("\"positioning_s\":0.4974,"), std::string::npos) << text;
+  EXPECT_NE(text.find("\"sim_time_s\":0.362,"), std::string::npos) << text;
+  EXPECT_EQ(text.find("0000000"), std::string::npos) << text;
+}
+
+} // namespace
+} // namespace sreh

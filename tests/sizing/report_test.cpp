@@ -4,6 +4,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <regex>
+#include <set>
 #include <sstream>
 
 #include "sizing/report.hpp"
@@ -28,7 +30,21 @@ TEST(Report, SizeReportHasPlotsNumbersAndWrites) {
   EXPECT_NE(html.find("Motor torque"), std::string::npos);
   EXPECT_NE(html.find("Velocity"), std::string::npos);
   EXPECT_NE(html.find("- isdu_write: {index: 65, subindex: 1, value: 10000}"), std::string::npos);
-  EXPECT_EQ(html.find("<script"), std::string::npos);
+  // Issue 16: zoomable plots with the packaged dygraphs inlined (no fetch),
+  // a speed-torque plot, and every SVG with >= 6 distinct numeric ticks.
+  EXPECT_EQ(html.find("<script src"), std::string::npos);
+  EXPECT_NE(html.find("srehPlot("), std::string::npos);
+  EXPECT_NE(html.find("Speed-torque"), std::string::npos);
+  EXPECT_NE(html.find("capability (motoring)"), std::string::npos);
+  const std::regex number(R"(<text[^>]*>(-?[0-9]+(\.[0-9]+)?)</text>)");
+  std::size_t svgs = 0;
+  for (std::size_t a = html.find("<svg"); a != std::string::npos; a = html.find("<svg", a + 1), ++svgs) {
+    const std::string svg = html.substr(a, html.find("</svg>", a) - a);
+    std::set<std::string> labels;
+    for (auto it = std::sregex_iterator(svg.begin(), svg.end(), number); it != std::sregex_iterator(); ++it) labels.insert((*it)[1]);
+    EXPECT_GE(labels.size(), 6u) << svg.substr(0, 200);
+  }
+  EXPECT_EQ(svgs, 5u);
 
   const fs::path dir = fs::path(testing::TempDir()) / "sreh_sizing_report_test";
   fs::remove_all(dir);
