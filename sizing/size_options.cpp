@@ -30,6 +30,12 @@ const OptionSpec<S> kSizeOptions[] = {
     {"jerk-pct", "Evaluate this jerk, 0.1 .. 100 %", &S::jerk_pct},
     {"parameter-set", "Parameter set 0 .. 7 (index 64 + n)", &S::parameter_set, false, true},
     {"cycles", "Back-and-forth cycles simulated, 1 .. 20", &S::cycles, false, true},
+    {"thermal-margin-K", "Required margin below the 70 degC warning, K", &S::thermal_margin_K, false, true},
+    {"max-positioning-ms", "Target: the gentlest set positioning within this time, ms", &S::max_positioning_ms},
+    {"max-cycle-ms", "Target: the gentlest set whose cycle fits this time, ms", &S::max_cycle_ms},
+    {"source-resistance-ohm", "Supply source resistance, ohm (0: ideal source)", &S::source_resistance_ohm, false, true},
+    {"bus-capacitance-F", "Capacitance on the motor supply, F (with a source resistance)", &S::bus_capacitance_F, false, true},
+    {"handshake-cycles", "IO-Link cycles per move for the PLC handshake (A-SIZE-16)", &S::handshake_cycles, false, true},
     {"report", "Write an HTML sizing report into this folder", &S::report},
 };
 
@@ -80,6 +86,12 @@ SizingRequest make_request(const SizeOptions& a) {
   rq.ambient_C = a.ambient_C;
   rq.parameter_set = a.parameter_set;
   rq.cycles = a.cycles;
+  rq.thermal_margin_K = a.thermal_margin_K;
+  rq.max_positioning_ms = a.max_positioning_ms;
+  rq.max_cycle_ms = a.max_cycle_ms;
+  rq.source_resistance_ohm = a.source_resistance_ohm;
+  rq.bus_capacitance_F = a.bus_capacitance_F;
+  rq.handshake_cycles = a.handshake_cycles;
   if (a.speed_dps || a.accel_pct || a.jerk_pct) {
     // Options left out keep the factory value of sets 1..7 (manual 6.2).
     const MotionSetting factory;

@@ -25,6 +25,11 @@ struct SizeOptions {
   std::optional<double> speed_dps, accel_pct, jerk_pct;
   int parameter_set = 1;
   int cycles = 2;
+  double thermal_margin_K = 5.0;
+  std::optional<double> max_positioning_ms, max_cycle_ms;
+  double source_resistance_ohm = 0.0;
+  double bus_capacitance_F = 0.0;
+  int handshake_cycles = 4;
   std::string report;        // HTML report folder ("" none)
 };
 
