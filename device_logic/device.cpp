@@ -445,6 +445,7 @@ Telemetry Device::telemetry() const {
   t.moving = d.state == State::Busy && d.phase == MotionPhase::Travel;
   t.settling = d.phase == MotionPhase::Settle;
   t.moves_started = d.moves_started;
+  t.tolerance_deg = rad_to_deg(d.settle.tolerance_rad);
   return t;
 }
 

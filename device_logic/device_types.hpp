@@ -57,6 +57,7 @@ struct Telemetry {
   bool moving = false;            // a trajectory is being followed (travel phase)
   bool settling = false;          // trajectory ended, waiting for the tolerance window
   uint32_t moves_started = 0;     // Move commands accepted (T3) since power-on
+  double tolerance_deg = 0;       // tolerance window half width of the latched set (manual 3.5.7)
 };
 
 } // namespace sreh

@@ -1,29 +1,39 @@
-// Position loop with feed-forward, manual 3.5.4-3.5.6 (configured load),
-// 3.5.3 (torque-speed limit -> tracking error). Gains: A-CTRL-1..4.
+// Cascaded position / velocity loop, manual 3.5.4-3.5.6 (configured load),
+// 3.5.3 (torque-speed limit -> tracking error). Gains: A-CTRL-1..5.
 #include "device_logic/position_controller.hpp"
 
 #include <algorithm>
 #include <cmath>
 
+#include "device_logic/units.hpp"
+
 namespace sreh {
 
 ControllerGains default_controller_gains() {
   ControllerGains g;
-  g.bandwidth_rad_s = 500.0;    // A-CTRL-1
-  g.damping = 0.8;              // A-CTRL-2
-  g.integral_ratio = 0.3;       // A-CTRL-3
-  g.velocity_filter_s = 0.3e-3; // A-CTRL-4
+  g.velocity_bandwidth_rad_s = 1500.0; // A-CTRL-1
+  g.schedule_exponent = 0.8;           // A-CTRL-1
+  g.position_ratio = 0.25;             // A-CTRL-2
+  g.integral_ratio = 0.2;              // A-CTRL-3
+  g.velocity_filter_s = 0.2e-3;        // A-CTRL-4
+  g.delay_steps = 1;                   // A-CTRL-7
   return g;
+}
+
+double ControllerGains::velocity_bandwidth_for(double inertia_kgm2) const {
+  const double ratio = kInternalInertia_kgm2 / std::max(inertia_kgm2, kInternalInertia_kgm2);
+  return velocity_bandwidth_rad_s * std::pow(ratio, schedule_exponent);
 }
 
 PositionController::PositionController(ControllerGains gains) : gains_(gains) {}
 
 void PositionController::reset(double measured_pos_rad) {
   last_pos_ = measured_pos_rad;
-  last_err_ = 0.0;
+  last_sp_pos_ = measured_pos_rad;
   vel_est_ = 0.0;
-  err_rate_ = 0.0;
+  sp_vel_ = 0.0;
   integral_ = 0.0;
+  pending_ = 0.0;
   primed_ = true;
   saturated_ = false;
 }
@@ -36,34 +46,41 @@ double PositionController::update(const KinematicState& setpoint, double measure
   }
   if (!primed_) {
     reset(measured_pos_rad);
-    last_err_ = setpoint.pos - measured_pos_rad;
+    last_sp_pos_ = setpoint.pos;
+    sp_vel_ = setpoint.vel;
   }
 
-  // Velocity from encoder differences, low-passed (the raw quotient jumps by
-  // one count / dt = 0.12 rad/s at 2^19 counts/rev and 0.1 ms).
-  const double raw_vel = (measured_pos_rad - last_pos_) / dt_s;
-  last_pos_ = measured_pos_rad;
+  // Speed from encoder differences, low-passed (one count per step is
+  // 0.12 rad/s at 2^19 counts/rev and 0.1 ms); the setpoint through the same.
   const double alpha = dt_s / (gains_.velocity_filter_s + dt_s);
-  vel_est_ += alpha * (raw_vel - vel_est_);
+  vel_est_ += alpha * ((measured_pos_rad - last_pos_) / dt_s - vel_est_);
+  last_pos_ = measured_pos_rad;
+  sp_vel_ += alpha * ((setpoint.pos - last_sp_pos_) / dt_s - sp_vel_);
+  last_sp_pos_ = setpoint.pos;
 
   const double j = inertia_kgm2;
+  const double wv = gains_.velocity_bandwidth_for(j);
+  const double kv = j * wv;
   const double pos_err = setpoint.pos - measured_pos_rad;
-  err_rate_ += alpha * ((pos_err - last_err_) / dt_s - err_rate_);
-  last_err_ = pos_err;
-  const double vel_err = err_rate_;
+  const double vel_err = sp_vel_ + gains_.position_ratio * wv * pos_err - vel_est_;
   const double hi = std::max(0.0, torque_limit_pos_Nm);
   const double lo = -std::max(0.0, torque_limit_neg_Nm);
 
-  const double unsat = j * (setpoint.acc + gains_.kv_per_s() * vel_err + gains_.kp_per_s2() * pos_err) + integral_;
+  const double unsat = j * setpoint.acc + kv * vel_err + integral_;
   const double torque = std::clamp(unsat, lo, hi);
   saturated_ = torque != unsat;
 
-  // Anti-windup by conditional integration: integrate unless saturated and
-  // the error would drive further into the limit; keep I inside the limits.
-  const double d_integral = j * gains_.ki_per_s3() * pos_err * dt_s;
+  // Anti-windup by conditional integration (A-CTRL-5): integrate unless
+  // saturated and the error would drive further into the limit; keep I
+  // inside the limits.
+  const double d_integral = kv * gains_.integral_ratio * wv * vel_err * dt_s;
   const bool winds_up = (unsat > hi && d_integral > 0.0) || (unsat < lo && d_integral < 0.0);
   if (!winds_up) integral_ = std::clamp(integral_ + d_integral, lo, hi);
-  return torque;
+
+  if (gains_.delay_steps <= 0) return torque;
+  const double out = pending_; // computed one period ago (A-CTRL-7)
+  pending_ = torque;
+  return out;
 }
 
 } // namespace sreh

@@ -1,32 +1,41 @@
-// Position control with velocity and acceleration feed-forward, using the
-// configured inertia (architecture.md), torque saturated to what the motor
-// can give now, with anti-windup. Gains are assumptions (docs/assumptions/
-// motion.md A-CTRL-*).
+// Cascaded servo control as drives are built (issue 14, servo.md):
 //
-//   torque = J * (acc_sp + Kv de/dt + Kp e) + I,   e = pos_sp - pos,
-//   dI/dt  = J * Ki e,   J = J_intern + configured load.
-// de/dt is the encoder-difference estimate of the error rate, low-passed;
-// the setpoint goes through the same difference and filter as the encoder,
-// so the filter lag does not turn the velocity feed-forward into a bias.
-// Kv, Kp, Ki place the closed-loop poles of a rigid inertia at
-// (s + wi)(s^2 + 2 zeta w s + w^2), wi = integral_ratio * w: the loop is the
-// same for every load when the configured load is right, and detuned (slow,
-// oscillating, or saturating) when it is wrong, as on the real module.
+//   position loop (P, with velocity feed-forward from the planner)
+//     -> velocity loop (PI, with acceleration feed-forward J a)
+//       -> torque (current) reference, saturated to what the motor can give
+//          now, with anti-windup; handed to the current loop one control
+//          period later (computation delay).
+//
+//   v_cmd  = v_sp~ + Kp e,           e = pos_sp - encoder
+//   torque = J a_sp + Kv (v_cmd - v~) + I,   dI/dt = Kv wi (v_cmd - v~)
+//
+// v~ is the encoder-difference speed through a first-order filter; the
+// setpoint passes through the same difference and filter (v_sp~), so the
+// filter lag does not turn the feed-forward into a bias. The loop sees only
+// encoder counts (2^19 per revolution): quantisation is inside the loop.
+//
+// Gain schedule (A-CTRL-1..3): the drive tunes for J = J_intern + the
+// configured load (manual 3.5.6, index 64+n.4): Kv = J wv(J), with the
+// velocity bandwidth wv falling as the configured inertia grows,
+//   wv(J) = wv0 (J_intern / J)^p,
+// because the delays and the two-mass resonance cap the loop gain the motor
+// side can carry. Kp = wv * position_ratio, wi = wv * integral_ratio. A
+// wrong configured load is a wrong plant for this loop: overshoot, ringing,
+// at worst tracking errors or instability, from the dynamics alone.
 #pragma once
 #include "device_logic/planner.hpp"
 
 namespace sreh {
 
 struct ControllerGains {
-  double bandwidth_rad_s = 0;  // position loop bandwidth (set in the .cpp defaults)
-  double damping = 0;
-  double integral_ratio = 0;   // integral corner as a fraction of the bandwidth
-  double velocity_filter_s = 0; // time constant of the low-pass on the encoder difference
+  double velocity_bandwidth_rad_s = 0; // wv0: velocity loop bandwidth at J = J_intern
+  double schedule_exponent = 0;        // p in wv(J) = wv0 (J_intern / J)^p
+  double position_ratio = 0;           // position loop bandwidth / velocity loop bandwidth
+  double integral_ratio = 0;           // velocity integral corner / velocity loop bandwidth
+  double velocity_filter_s = 0;        // time constant of the low-pass on encoder differences
+  int delay_steps = 0;                 // computation delay in control periods (0 or 1)
 
-  // Loop gains per unit inertia (rad/s^2 per rad/s, per rad, per rad s).
-  double kv_per_s() const { return 2.0 * damping * bandwidth_rad_s + integral_ratio * bandwidth_rad_s; }
-  double kp_per_s2() const { return bandwidth_rad_s * bandwidth_rad_s * (1.0 + 2.0 * damping * integral_ratio); }
-  double ki_per_s3() const { return bandwidth_rad_s * bandwidth_rad_s * bandwidth_rad_s * integral_ratio; }
+  double velocity_bandwidth_for(double inertia_kgm2) const; // wv(J)
 };
 ControllerGains default_controller_gains();
 
@@ -34,13 +43,14 @@ class PositionController {
  public:
   explicit PositionController(ControllerGains gains = default_controller_gains());
 
-  // Forget integrator and velocity filter; `measured_pos_rad` is the position now.
+  // Forget integrator, filters and the delayed output; `measured_pos_rad` is the position now.
   void reset(double measured_pos_rad);
 
   // One control step. `setpoint` from the planner (pos/vel/acc in rad),
   // `measured_pos_rad` from the encoder, `inertia_kgm2` = J_intern + configured
   // load, `torque_limit_pos_Nm` / `torque_limit_neg_Nm` the motor's capability
-  // in each direction now (both >= 0). Returns the saturated torque.
+  // in each direction now (both >= 0). Returns the torque reference for the
+  // current loop: the saturated output computed `delay_steps` periods ago.
   // Not reset yet: the first call resets at `measured_pos_rad`. dt_s <= 0 or a
   // non-finite input: no state change, returns 0 torque.
   double update(const KinematicState& setpoint, double measured_pos_rad, double inertia_kgm2,
@@ -48,16 +58,17 @@ class PositionController {
 
   double velocity_estimate_rad_s() const { return vel_est_; }
   double integral_torque_Nm() const { return integral_; }
-  bool saturated() const { return saturated_; } // the last update hit a torque limit
+  bool saturated() const { return saturated_; } // the last computed output hit a torque limit
   const ControllerGains& gains() const { return gains_; }
 
  private:
   ControllerGains gains_;
   double last_pos_ = 0;
-  double last_err_ = 0;
+  double last_sp_pos_ = 0;
   double vel_est_ = 0;     // measured velocity, filtered
-  double err_rate_ = 0;    // d(setpoint - measured)/dt, filtered
+  double sp_vel_ = 0;      // setpoint velocity through the same difference and filter
   double integral_ = 0;
+  double pending_ = 0;     // output computed last period (computation delay)
   bool primed_ = false;
   bool saturated_ = false;
 };

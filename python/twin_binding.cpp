@@ -314,6 +314,8 @@ class PyTwin {
       d["settling_s"] = m.completed ? pyb::object(pyb::float_(m.settling_s)) : pyb::none();
       d["positioning_s"] = m.completed ? pyb::object(pyb::float_(m.positioning_s)) : pyb::none();
       d["max_tracking_error_deg"] = m.max_tracking_error_deg;
+      d["overshoot_deg"] = m.overshoot_deg;
+      d["in_window_s"] = m.in_window_s >= 0 ? pyb::object(pyb::float_(m.in_window_s)) : pyb::none();
       d["completed"] = m.completed;
       out.append(d);
     }

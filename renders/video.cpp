@@ -171,7 +171,10 @@ VideoRecorder::VideoRecorder(const mjModel* m, const VideoOptions& o) : impl_(st
     s.discard_output();
     throw;
   }
-  const int jnt = mj_name2id(m, mjOBJ_JOINT, "flange");
+  // The encoder's angle: joint "rotor" of the two-mass module (issue 14), or
+  // "flange" in a one-joint model.
+  int jnt = mj_name2id(m, mjOBJ_JOINT, "rotor");
+  if (jnt < 0) jnt = mj_name2id(m, mjOBJ_JOINT, "flange");
   if (jnt >= 0) s.flange_qpos = m->jnt_qposadr[jnt];
 
   // Three buffers: one rendering, one being written, one spare (A-RENDERS-8).

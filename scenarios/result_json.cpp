@@ -21,6 +21,8 @@ nlohmann::json to_json(const RunResult& r) {
                      {"settling_s", m.completed ? number(m.settling_s) : nlohmann::json(nullptr)},
                      {"positioning_s", m.completed ? number(m.positioning_s) : nlohmann::json(nullptr)},
                      {"max_tracking_error_deg", number(m.max_tracking_error_deg)},
+                     {"overshoot_deg", number(m.overshoot_deg)},
+                     {"in_window_s", m.in_window_s >= 0 ? number(m.in_window_s) : nlohmann::json(nullptr)},
                      {"completed", m.completed}});
   }
   nlohmann::json checks = nlohmann::json::array();

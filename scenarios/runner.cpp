@@ -400,6 +400,7 @@ TwinConfig make_twin_config(const Scenario& s) {
   TwinConfig c;
   c.load = s.load;
   c.hard_stops = s.hard_stops;
+  c.mounting_tilt_deg = s.mounting_tilt_deg;
   c.supply = SupplySpec{s.device.supply_V, s.device.source_resistance_ohm, s.device.bus_capacitance_F};
   c.thermal = ThermalSpec{s.device.ambient_C, s.sim.thermal_time_scale};
   c.physics_dt_s = s.sim.physics_dt_s;

@@ -190,6 +190,7 @@ struct Scenario {
   DeviceSetup device;
   LoadSpec load = NoLoad{};
   SourceLoc load_loc;
+  double mounting_tilt_deg = 0.0; // `mounting:`, 0 = vertical axis, 90 = horizontal (A-TWIN-24)
   std::vector<HardStop> hard_stops;
   SimSetup sim;
   bool stop_on_failure = false; // default: a failed check is recorded and the run goes on

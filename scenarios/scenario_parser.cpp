@@ -76,7 +76,7 @@ class Parser {
 
   Scenario parse(const YAML::Node& root) {
     r_.check_map(root, "scenario",
-                 {"name", "description", "device", "load", "world", "sim", "stop_on_failure", "steps", "expect"});
+                 {"name", "description", "device", "load", "mounting", "world", "sim", "stop_on_failure", "steps", "expect"});
     Scenario s;
     s.file = r_.file();
     s.name = r_.text(r_.require(root, "name", "scenario"), "name");
@@ -85,6 +85,7 @@ class Parser {
       s.load_loc = r_.loc(root["load"]);
       s.load = parse_load(root["load"]);
     }
+    if (root["mounting"]) s.mounting_tilt_deg = parse_mounting(root["mounting"]);
     if (root["world"]) s.hard_stops = parse_world(root["world"]);
     if (root["sim"]) s.sim = parse_sim(root["sim"]);
     sim_ = s.sim;
@@ -158,6 +159,21 @@ class Parser {
     }
     // inertia_gcm2; the manual's parameter range is 0..15000 (6.2, 64.4), the physics allows more.
     return InertiaLoad{r_.number(v, what, 0.0, 1e6)};
+  }
+
+  // Axis orientation (A-TWIN-24): {axis: vertical|horizontal} or {tilt_deg: T}.
+  double parse_mounting(const YAML::Node& n) {
+    r_.check_map(n, "mounting", {"axis", "tilt_deg"});
+    if (n["axis"] && n["tilt_deg"]) r_.fail(n, "mounting: give either axis or tilt_deg, not both");
+    if (n["tilt_deg"]) return r_.number(n["tilt_deg"], "mounting.tilt_deg", 0.0, 180.0);
+    if (n["axis"]) {
+      const std::string axis = r_.text(n["axis"], "mounting.axis");
+      if (axis == "vertical") return 0.0;
+      if (axis == "horizontal") return 90.0;
+      r_.fail(n["axis"], "mounting.axis: expected vertical or horizontal, got '" + axis + "'");
+    }
+    r_.fail(n, "mounting: expected {axis: vertical|horizontal} or {tilt_deg: T}");
+    return 0.0;
   }
 
   std::vector<HardStop> parse_world(const YAML::Node& n) {

@@ -200,12 +200,15 @@ Evaluation evaluate(const SizingRequest& rq, const ParameterSetValues& set, bool
     if (twin.moves().size() > records_before) {
       const MoveRecord& rec = twin.moves().back();
       mr.max_tracking_error_deg = rec.max_tracking_error_deg;
+      mr.overshoot_deg = rec.overshoot_deg;
+      mr.in_window_s = rec.in_window_s;
       mr.simulated_travel_s = rec.travel_s;
       mr.completed = rec.completed && in.done && !in.error;
       if (mr.completed) {
-        // A-SIZE-7: positioning as simulated; settling = positioning - planned travel.
-        mr.positioning_s = rec.positioning_s;
-        mr.settling_s = rec.positioning_s - ev.travel_s;
+        // A-SIZE-7: settling as simulated, from the end of the trajectory (b)
+        // to Done (f); positioning = planned travel + settling (>= travel).
+        mr.settling_s = rec.settling_s;
+        mr.positioning_s = ev.travel_s + rec.settling_s;
       }
     }
     ev.moves.push_back(mr);
@@ -225,6 +228,11 @@ Evaluation evaluate(const SizingRequest& rq, const ParameterSetValues& set, bool
     if (run_until(twin, [&] { return twin.pd_in().error; }, dwell_cycles)) {
       reasons.add(category_of_error(twin.pd_in().error_code),
                   fmt::format("after move {}: {}", i + 1, error_text(twin.pd_in().error_code)));
+    }
+    // Overshoot and the window entered for good are watched until the next move.
+    if (twin.moves().size() > records_before) {
+      ev.moves.back().overshoot_deg = twin.moves().back().overshoot_deg;
+      ev.moves.back().in_window_s = twin.moves().back().in_window_s;
     }
   }
   ev.sim_time_s = twin.time_s();

@@ -94,6 +94,8 @@ nlohmann::json to_json(const SizingRequest& rq, const SizingResult& r) {
                      {"settling_s", time_if(m.completed, m.settling_s)},
                      {"positioning_s", time_if(m.completed, m.positioning_s)},
                      {"max_tracking_error_deg", m.max_tracking_error_deg},
+                     {"overshoot_deg", m.overshoot_deg},
+                     {"in_window_s", m.in_window_s >= 0 ? nlohmann::json(m.in_window_s) : nlohmann::json()},
                      {"completed", m.completed}});
   }
   j["moves"] = moves;

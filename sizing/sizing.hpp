@@ -102,9 +102,11 @@ struct MoveResult {
   double target_deg = 0;
   double travel_s = 0;      // planner (exact), manual 3.5.2 (1)
   double simulated_travel_s = -1; // MoveRecord: on the 0.1 ms step clock, within one step of travel_s
-  double settling_s = -1;   // positioning - travel, (2); < 0: never completed
-  double positioning_s = -1;// simulated, (4)
+  double settling_s = -1;   // simulated (b)..(f), (2), >= 0; < 0: never completed
+  double positioning_s = -1;// travel + settling, (4)
   double max_tracking_error_deg = 0;
+  double overshoot_deg = 0; // past the target in the direction of travel
+  double in_window_s = -1;  // from (b) until in the tolerance window for good; < 0: not in it at the end
   bool completed = false;
 };
 

@@ -309,9 +309,9 @@ std::string compose_model_xml(const LoadSpec& load, const std::vector<HardStop>&
 
 double flange_axis_inertia_kgm2(const mjModel* model, mjData* data) {
   mj_forward(model, data);
-  const int joint = mj_name2id(model, mjOBJ_JOINT, "flange");
+  const int joint = mj_name2id(model, mjOBJ_JOINT, "rotor");
   if (joint < 0) {
-    throw std::invalid_argument("MuJoCo model has no joint named \"flange\"");
+    throw std::invalid_argument("MuJoCo model has no joint named \"rotor\"");
   }
   const int dof = model->jnt_dofadr[joint];
   return data->qM[model->dof_Madr[dof]];
@@ -330,18 +330,24 @@ BuiltModel build_model(const LoadSpec& load, const std::vector<HardStop>& hard_s
   if (hard_stops.empty()) {
     m->opt.disableflags |= mjDSBL_CONTACT; // nothing can touch: skip collision detection
   }
-  if (m->njnt != 1) {
-    throw std::invalid_argument(origin + ": a load must be rigid, but it adds " + std::to_string(m->njnt - 1) +
+  // The module's own joints: "rotor" and "flange" (the compliance).
+  if (m->njnt != 2) {
+    throw std::invalid_argument(origin + ": a load must be rigid, but it adds " + std::to_string(m->njnt - 2) +
                                 " joint(s) of its own");
   }
   MjDataPtr data(mj_makeData(m));
-  const int joint = mj_name2id(m, mjOBJ_JOINT, "flange");
+  const int rotor = mj_name2id(m, mjOBJ_JOINT, "rotor");
   built.axis_inertia_kgm2 = flange_axis_inertia_kgm2(m, data.get());
-  // The flange's own (placeholder) inertia belongs to J_intern, not to the load.
-  const int flange = m->jnt_bodyid[joint];
-  const double* ipos = m->body_ipos + 3 * flange;
-  const double flange_own = m->body_inertia[3 * flange + 2] + m->body_mass[flange] * (ipos[0] * ipos[0] + ipos[1] * ipos[1]);
-  built.load_inertia_kgm2 = built.axis_inertia_kgm2 - m->dof_armature[m->jnt_dofadr[joint]] - flange_own;
+  // The rotor's armature and the rotor's and flange's own inertials are
+  // J_intern (A-TWIN-4), not load.
+  auto own_about_axis = [m](int body) {
+    const double* ipos = m->body_ipos + 3 * body;
+    return m->body_inertia[3 * body + 2] + m->body_mass[body] * (ipos[0] * ipos[0] + ipos[1] * ipos[1]);
+  };
+  const int rotor_body = m->jnt_bodyid[rotor];
+  const int flange_body = mj_name2id(m, mjOBJ_BODY, "flange");
+  built.load_inertia_kgm2 = built.axis_inertia_kgm2 - m->dof_armature[m->jnt_dofadr[rotor]] -
+                            own_about_axis(rotor_body) - (flange_body >= 0 ? own_about_axis(flange_body) : 0.0);
   const double load_gcm2 = kgm2_to_gcm2(built.load_inertia_kgm2);
   if (load_gcm2 > kMaxLoad_gcm2 + kLoadInertiaTolerance_gcm2) {
     throw std::invalid_argument(origin + ": load inertia about the axis is " + num(load_gcm2) +

@@ -9,6 +9,18 @@
 namespace sreh {
 namespace {
 
+// Drive-train effects MuJoCo's joint has no element for (the Coulomb part
+// is the rotor joint's frictionloss, the viscous part its damping).
+// A-TWIN-22: Stribeck rise of the bearing friction near standstill: static
+// friction 1.5x the Coulomb 0.004 N m, fading out over ~0.02 rad/s.
+constexpr double kStribeckExcess_Nm = 0.002;
+constexpr double kStribeckSpeed_rad_s = 0.02;
+constexpr double kStribeckSmoothing_rad_s = 1e-3; // sign(w) smoothed: no chatter at rest
+// A-TWIN-23: cogging torque 0.005 N m (1 % of M), 60 periods per revolution
+// (a 10-pole / 12-slot motor: lcm(10, 12) = 60).
+constexpr double kCogging_Nm = 0.005;
+constexpr double kCoggingPeriodsPerRev = 60.0;
+
 int require_id(const mjModel* m, mjtObj type, const char* name, const std::string& file) {
   const int id = mj_name2id(m, type, name);
   if (id < 0) {
@@ -20,54 +32,102 @@ int require_id(const mjModel* m, mjtObj type, const char* name, const std::strin
 } // namespace
 
 Plant::Plant(const PlantConfig& config)
-    : motor_(config.motor), supply_(config.supply), thermal_(config.thermal), dt_s_(config.physics_dt_s) {
+    : motor_(config.motor),
+      drive_(config.motor, config.physics_dt_s),
+      supply_(config.supply),
+      thermal_(config.thermal),
+      dt_s_(config.physics_dt_s) {
+  if (!std::isfinite(config.mounting_tilt_deg) || config.mounting_tilt_deg < -180.0 || config.mounting_tilt_deg > 180.0) {
+    throw std::invalid_argument("mounting tilt_deg must be within -180 .. 180, got " + std::to_string(config.mounting_tilt_deg));
+  }
   BuiltModel built = build_model(config.load, config.hard_stops, config.physics_dt_s, config.module_model_path);
   model_ = std::move(built.model);
   load_inertia_kgm2_ = built.load_inertia_kgm2;
   axis_inertia_kgm2_ = built.axis_inertia_kgm2;
-  const mjModel* m = model_.get();
+  mjModel* m = model_.get();
   const std::string& file = config.module_model_path;
-  const int joint = require_id(m, mjOBJ_JOINT, "flange", file);
-  qpos_adr_ = m->jnt_qposadr[joint];
-  dof_adr_ = m->jnt_dofadr[joint];
+  const int rotor = require_id(m, mjOBJ_JOINT, "rotor", file);
+  const int twist = require_id(m, mjOBJ_JOINT, "flange", file);
+  rotor_qpos_ = m->jnt_qposadr[rotor];
+  rotor_dof_ = m->jnt_dofadr[rotor];
+  twist_qpos_ = m->jnt_qposadr[twist];
+  twist_dof_ = m->jnt_dofadr[twist];
   actuator_ = require_id(m, mjOBJ_ACTUATOR, "motor", file);
   led_geom_ = require_id(m, mjOBJ_GEOM, "led_band", file);
   ghost_mocap_ = m->body_mocapid[require_id(m, mjOBJ_BODY, "setpoint_ghost", file)];
   if (ghost_mocap_ < 0) {
     throw std::invalid_argument(file + ": body \"setpoint_ghost\" must be a mocap body");
   }
+  // A-TWIN-24: the module tilted about its x axis by T: in the module's
+  // frame "down" is (0, -sin T, -cos T).
+  const double tilt = deg_to_rad(config.mounting_tilt_deg);
+  const double g = std::sqrt(m->opt.gravity[0] * m->opt.gravity[0] + m->opt.gravity[1] * m->opt.gravity[1] +
+                             m->opt.gravity[2] * m->opt.gravity[2]);
+  m->opt.gravity[0] = 0.0;
+  m->opt.gravity[1] = -g * std::sin(tilt);
+  m->opt.gravity[2] = -g * std::cos(tilt);
   data_.reset(mj_makeData(m));
   mj_forward(m, data_.get());
+  rotor_inertia_kgm2_ = m->dof_armature[rotor_dof_];
+  flange_inertia_kgm2_ = data_->qM[m->dof_Madr[twist_dof_]];
   sensors_.encoder_counts = 0;
   sensors_.supply_V = supply_.bus_voltage_V();
   sensors_.temperature_C = thermal_.sensor_C();
   set_led_rgba(led_rgba(LedColor::Off));
 }
 
-void Plant::set_flange_blocked(bool blocked) {
-  if (blocked && !blocked_) blocked_angle_rad_ = data_->qpos[qpos_adr_];
-  blocked_ = blocked;
-  if (blocked_) {
-    data_->qvel[dof_adr_] = 0;
-    mj_forward(model_.get(), data_.get());
-  }
+double Plant::rotor_angle_rad() const { return data_->qpos[rotor_qpos_]; }
+double Plant::rotor_velocity_rad_s() const { return data_->qvel[rotor_dof_]; }
+double Plant::twist_rad() const { return data_->qpos[twist_qpos_]; }
+double Plant::angle_rad() const { return data_->qpos[rotor_qpos_] + data_->qpos[twist_qpos_]; }
+double Plant::velocity_rad_s() const { return data_->qvel[rotor_dof_] + data_->qvel[twist_dof_]; }
+double Plant::stiffness_Nm_per_rad() const { return model_->jnt_stiffness[model_->dof_jntid[twist_dof_]]; }
+
+double Plant::gravity_torque_Nm() const {
+  // Generalised gravity force on the flange side (the twist dof carries all
+  // of the flange and load): qfrc_bias holds -gravity (+ Coriolis, zero for
+  // a fixed axis) as of the last forward pass.
+  return -data_->qfrc_bias[twist_dof_];
 }
 
-double Plant::angle_rad() const { return data_->qpos[qpos_adr_]; }
-double Plant::velocity_rad_s() const { return data_->qvel[dof_adr_]; }
+double Plant::drive_train_torque_Nm(double rotor_angle_rad, double rotor_speed_rad_s) const {
+  const double stribeck = -kStribeckExcess_Nm * std::exp(-std::pow(rotor_speed_rad_s / kStribeckSpeed_rad_s, 2)) *
+                          std::tanh(rotor_speed_rad_s / kStribeckSmoothing_rad_s);
+  const double cogging = kCogging_Nm * std::sin(kCoggingPeriodsPerRev * rotor_angle_rad);
+  return stribeck + cogging;
+}
+
+// A clamp on the flange (output): its absolute angle held, the rotor still
+// free to wind the compliance against it.
+void Plant::set_flange_blocked(bool blocked) {
+  if (blocked && !blocked_) blocked_angle_rad_ = angle_rad();
+  blocked_ = blocked;
+  if (blocked_) hold_flange();
+}
+
+void Plant::hold_flange() {
+  mjData* d = data_.get();
+  d->qpos[twist_qpos_] = blocked_angle_rad_ - d->qpos[rotor_qpos_];
+  d->qvel[twist_dof_] = -d->qvel[rotor_dof_];
+  mj_forward(model_.get(), d);
+}
 
 const SensorReadings& Plant::step(const MotorCommand& cmd) {
   if (failed_) {
     throw std::runtime_error("plant: stepping after a MuJoCo failure");
   }
   mjData* d = data_.get();
-  const double omega = d->qvel[dof_adr_];
+  const double omega = d->qvel[rotor_dof_];
   const double bus_V = supply_.bus_voltage_V();
   const double sign = cmd.torque_Nm >= 0.0 ? 1.0 : -1.0;
   torque_limit_Nm_ = motor_.max_torque_Nm(omega, bus_V, sign);
-  applied_torque_Nm_ = cmd.enabled ? std::clamp(cmd.torque_Nm, -torque_limit_Nm_, torque_limit_Nm_) : 0.0;
+  drive_.step(cmd.torque_Nm, cmd.enabled, omega, bus_V);
+  applied_torque_Nm_ = drive_.mean_torque_Nm();
   d->ctrl[actuator_] = applied_torque_Nm_;
-  d->qfrc_applied[dof_adr_] = external_torque_Nm_;
+  // An external torque acts on the flange: a generalised force on both
+  // dofs (the flange angle is rotor + twist).
+  d->qfrc_applied[rotor_dof_] = external_torque_Nm_ + drive_train_torque_Nm(d->qpos[rotor_qpos_], omega);
+  d->qfrc_applied[twist_dof_] = external_torque_Nm_;
   try {
     mj_step(model_.get(), d);
   } catch (...) {
@@ -76,28 +136,32 @@ const SensorReadings& Plant::step(const MotorCommand& cmd) {
   }
   check_warnings();
   ++steps_;
-  if (blocked_) { // the clamp takes whatever moved the flange
-    d->qpos[qpos_adr_] = blocked_angle_rad_;
-    d->qvel[dof_adr_] = 0;
-  }
+  if (blocked_) hold_flange(); // the clamp takes whatever moved the flange
 
-  // Electrical side with the torque held over the step (zero-order hold).
-  copper_loss_W_ = motor_.copper_loss_W(applied_torque_Nm_);
-  electrical_power_W_ = applied_torque_Nm_ * omega + copper_loss_W_;
+  // Electrical side over the step.
+  copper_loss_W_ = drive_.mean_current_A() * drive_.mean_current_A() * motor_.winding_resistance_ohm;
+  // Bridge off: the winding's remaining current decays through the
+  // freewheel diodes, drawing nothing from the bus.
+  electrical_power_W_ = cmd.enabled ? applied_torque_Nm_ * omega + copper_loss_W_ : 0.0;
   supply_.step(dt_s_, electrical_power_W_);
   thermal_.step(dt_s_, copper_loss_W_ + thermal_.speed_loss_W(omega));
 
-  sensors_.encoder_counts = rad_to_internal_counts(d->qpos[qpos_adr_]);
+  sensors_.encoder_counts = rad_to_internal_counts(d->qpos[rotor_qpos_]);
   sensors_.supply_V = supply_.bus_voltage_V();
   sensors_.temperature_C = thermal_.sensor_C();
   return sensors_;
 }
 
+// A hand turns the whole drive train: rotor and flange together, no twist
+// (A-TWIN-32); the winding current decays (the motor is off).
 void Plant::set_flange_angle(double angle_rad, double velocity_rad_s) {
   mjData* d = data_.get();
-  d->qpos[qpos_adr_] = angle_rad;
-  d->qvel[dof_adr_] = velocity_rad_s;
+  d->qpos[rotor_qpos_] = angle_rad;
+  d->qpos[twist_qpos_] = 0.0;
+  d->qvel[rotor_dof_] = velocity_rad_s;
+  d->qvel[twist_dof_] = 0.0;
   mj_forward(model_.get(), d);
+  drive_.reset();
   sensors_.encoder_counts = rad_to_internal_counts(angle_rad);
 }
 

@@ -2,8 +2,12 @@
 // simulates (issue 5): the MuJoCo flange with its load and world objects,
 // the motor's physical torque limit, the supply and the thermal model.
 // step(cmd) advances one physics step and returns the sensor readings the
-// device sees next (encoder 2^19 counts/rev, multiturn, physical frame:
-// positive = clockwise seen from above, the joint angle of "flange").
+// device sees next (encoder 2^19 counts/rev on the rotor, multiturn,
+// physical frame: positive = clockwise seen from above).
+// Issue 14: two masses (rotor with the encoder, flange with the load) on a
+// torsional spring, the motor's current loop and winding (MotorDrive),
+// bearing friction with a Stribeck rise, cogging, and gravity from the
+// mounting orientation (docs/assumptions/twin.md A-TWIN-20..24).
 #pragma once
 #include <array>
 #include <cstdint>
@@ -13,6 +17,7 @@
 #include "device_logic/device_types.hpp"
 #include "device_logic/motor_model.hpp"
 #include "twin/load_builder.hpp"
+#include "twin/motor_drive.hpp"
 #include "twin/mujoco_support.hpp"
 #include "twin/supply.hpp"
 #include "twin/thermal.hpp"
@@ -27,6 +32,11 @@ struct PlantConfig {
   ThermalSpec thermal;
   double physics_dt_s = 1e-4;
   MotorModel motor;
+  // Mounting (A-TWIN-24): tilt of the module's axis from vertical, degrees.
+  // 0 = axis vertical (flange up), 90 = axis horizontal with the module's +y
+  // pointing up, so a load along +x at flange angle 0 feels the largest
+  // gravity torque (m g r cos(angle)).
+  double mounting_tilt_deg = 0.0;
   std::string module_model_path = default_module_model_path();
 };
 
@@ -36,9 +46,10 @@ class Plant {
   Plant(const Plant&) = delete;
   Plant& operator=(const Plant&) = delete;
 
-  // One physics step: clamps the torque to the motor's capability at the
-  // present speed and bus voltage (physics limits it even if a controller
-  // did not), steps MuJoCo, updates supply and thermal. A MuJoCo instability
+  // One physics step: the torque reference goes through the current loop
+  // and winding (the bus voltage and back-EMF limit the current, so physics
+  // limits the torque even if a controller did not), steps MuJoCo, updates
+  // supply and thermal. A MuJoCo instability
   // (bad qpos/qvel/qacc, singular inertia) throws std::runtime_error and
   // the plant stays failed.
   const SensorReadings& step(const MotorCommand& cmd);
@@ -46,23 +57,30 @@ class Plant {
 
   void set_external_torque(double torque_Nm) { external_torque_Nm_ = torque_Nm; } // physical frame
   double external_torque_Nm() const { return external_torque_Nm_; }
-  // A rigid clamp at the present angle: after every step the flange is put
-  // back there at rest, so the motor works against it (stall, no motion).
+  // A rigid clamp on the flange (output) at its present angle: after every
+  // step the flange is put back there at rest (the rotor still winds the
+  // compliance against it), so the motor works against it (stall).
   void set_flange_blocked(bool blocked);
   bool flange_blocked() const { return blocked_; }
   void set_supply_voltage(double volts) { supply_.set_source_voltage(volts); sensors_.supply_V = supply_.bus_voltage_V(); }
   void set_ambient_C(double celsius) { thermal_.set_ambient_C(celsius); }
   // Puts the flange at `angle_rad` (physical frame) moving at `velocity_rad_s`,
-  // as a hand turning it does (manual 4.1: moved while switched off); the
-  // encoder reading follows at once. The only place the plant's joint state is
-  // set from outside.
+  // as a hand turning it does (manual 4.1: moved while switched off): rotor
+  // and flange together, no twist; the encoder reading follows at once. The
+  // only place the plant's joint state is set from outside.
   void set_flange_angle(double angle_rad, double velocity_rad_s = 0.0);
 
-  // State, physical frame.
-  double angle_rad() const;
-  double velocity_rad_s() const;
-  double applied_torque_Nm() const { return applied_torque_Nm_; }   // motor torque after the plant's clamp
+  // State, physical frame. The flange (output, where loads sit) and the
+  // rotor (motor side, encoder) differ by the twist of the compliance.
+  double angle_rad() const;             // flange
+  double velocity_rad_s() const;        // flange
+  double rotor_angle_rad() const;
+  double rotor_velocity_rad_s() const;
+  double twist_rad() const;             // flange - rotor
+  double applied_torque_Nm() const { return applied_torque_Nm_; }   // motor torque (kt x winding current)
+  double motor_current_A() const { return drive_.mean_current_A(); }
   double torque_limit_Nm() const { return torque_limit_Nm_; }       // capability in the commanded direction
+  double gravity_torque_Nm() const;     // on the flange about the axis now (physical frame)
   double electrical_power_W() const { return electrical_power_W_; } // drawn from the bus (< 0 regenerating)
   double copper_loss_W() const { return copper_loss_W_; }
   uint64_t steps() const { return steps_; }
@@ -71,6 +89,9 @@ class Plant {
 
   double load_inertia_kgm2() const { return load_inertia_kgm2_; } // about the axis, from qM
   double axis_inertia_kgm2() const { return axis_inertia_kgm2_; } // incl. J_intern
+  double rotor_inertia_kgm2() const { return rotor_inertia_kgm2_; }   // J_m
+  double flange_inertia_kgm2() const { return flange_inertia_kgm2_; } // J_f + load
+  double stiffness_Nm_per_rad() const;  // of the compliance between rotor and flange
 
   const Supply& supply() const { return supply_; }
   const Thermal& thermal() const { return thermal_; }
@@ -86,21 +107,28 @@ class Plant {
 
  private:
   void check_warnings();
+  void hold_flange(); // set_flange_blocked: flange back at blocked_angle_rad_, at rest
+  double drive_train_torque_Nm(double rotor_angle_rad, double rotor_speed_rad_s) const;
 
   MjModelPtr model_;
   MjDataPtr data_;
   MotorModel motor_;
+  MotorDrive drive_;
   Supply supply_;
   Thermal thermal_;
   double dt_s_;
-  int qpos_adr_ = 0;
-  int dof_adr_ = 0;
+  int rotor_qpos_ = 0;   // joint "rotor": absolute rotor angle
+  int rotor_dof_ = 0;
+  int twist_qpos_ = 0;   // joint "flange": flange relative to the rotor
+  int twist_dof_ = 0;
   int actuator_ = 0;
   int led_geom_ = 0;
   int ghost_mocap_ = 0;
   double ghost_angle_rad_ = 0;
   double load_inertia_kgm2_ = 0;
   double axis_inertia_kgm2_ = 0;
+  double rotor_inertia_kgm2_ = 0;
+  double flange_inertia_kgm2_ = 0;
   double external_torque_Nm_ = 0;
   double applied_torque_Nm_ = 0;
   double torque_limit_Nm_ = 0;

@@ -35,11 +35,14 @@ struct TraceRow {
 struct MoveRecord {
   double start_s = 0;          // Move accepted (point a)
   double travel_s = 0;         // (1) duration of the target trajectory
-  double settling_s = 0;       // (2) from trajectory end (b) to completion (f); <0 if never completed
-  double positioning_s = 0;    // (4) travel + settling; <0 if never completed
+  double settling_s = 0;       // (2) from trajectory end (b) to completion (f), >= 0; <0 if never completed
+  double positioning_s = 0;    // (4) travel + settling (>= travel); <0 if never completed
   double max_tracking_error_deg = 0;
+  double overshoot_deg = 0;    // furthest past the target in the direction of travel, from (b) until the next move (>= 0)
+  double in_window_s = -1;     // from (b) until the position entered the tolerance window for good (servo.md),
+                               // while the target is held; <0: outside the window when the move's record ended
   double target_deg = 0;
-  bool completed = false;      // reached Done
+  bool completed = false;      // reached Done (false: stopped, error, SettlingTimeout 114.8)
 };
 
 // Writes the CSV header and rows (interfaces.md column order first).

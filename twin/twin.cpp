@@ -40,6 +40,7 @@ PlantConfig plant_config(const TwinConfig& c) {
   p.hard_stops = c.hard_stops;
   p.supply = c.supply;
   p.thermal = c.thermal;
+  p.mounting_tilt_deg = c.mounting_tilt_deg;
   p.physics_dt_s = c.physics_dt_s;
   return p;
 }
@@ -63,8 +64,10 @@ struct Twin::Impl {
     direction = (r.ok() && !r.data.empty() && r.data[0] == 1) ? -1.0 : 1.0;
   }
 
-  // Move records (interfaces.md `moves`, manual 3.5.2), evaluated every
-  // control step on the tick time t_s.
+  // Move records (interfaces.md `moves`, manual 3.5.2 Fig. 3), evaluated
+  // every control step on the tick time t_s. Travel ends at (b), the tick
+  // the trajectory ends; positioning at (f), the tick the device reports
+  // Done; settling = positioning - travel >= 0 by construction (A-TWIN-12).
   void track_move(double t_s) {
     const Telemetry tel = device.telemetry();
     // A record per accepted Move (T3), zero-length moves included.
@@ -77,6 +80,18 @@ struct Twin::Impl {
       moves.push_back(rec);
       move_open = true;
       travel_done = false;
+      overshoot_open = false;
+      start_position_deg = tel.position_deg;
+    }
+    if (overshoot_open) {
+      // Past the target in the direction of travel, while the module holds it.
+      if (tel.state == State::Done || tel.state == State::Busy || tel.state == State::Ready) {
+        MoveRecord& rec = moves.back();
+        rec.overshoot_deg = std::max(rec.overshoot_deg, travel_sign * (tel.position_deg - rec.target_deg));
+        watch_window(rec, t_s, tel);
+      } else {
+        overshoot_open = false;
+      }
     }
     if (!move_open) return;
     MoveRecord& rec = moves.back();
@@ -85,6 +100,15 @@ struct Twin::Impl {
       travel_done = true;
       rec.travel_s = t_s - rec.start_s;
       rec.target_deg = tel.setpoint_deg;
+      const double d = rec.target_deg - start_position_deg;
+      travel_sign = d > 0 ? 1.0 : d < 0 ? -1.0 : 0.0;
+      overshoot_open = tel.state == State::Busy || tel.state == State::Done;
+      if (overshoot_open) {
+        rec.overshoot_deg = std::max(0.0, travel_sign * (tel.position_deg - rec.target_deg));
+        travel_end_s = t_s;
+        in_window = false;
+        watch_window(rec, t_s, tel);
+      }
     }
     if (tel.state == State::Done && travel_done) {
       rec.positioning_s = t_s - rec.start_s;
@@ -94,6 +118,16 @@ struct Twin::Impl {
     } else if (tel.state != State::Busy) {
       move_open = false; // stopped, motor off or an error: never completed
     }
+  }
+
+  // servo.md: the instant the position entered the tolerance window for
+  // good (inclusive, A-MOTION-6), counted from (b), as long as the target is
+  // held; leaving the window again clears it.
+  void watch_window(MoveRecord& rec, double t_s, const Telemetry& tel) {
+    const bool inside = std::abs(tel.position_deg - rec.target_deg) <= tel.tolerance_deg;
+    if (inside && !in_window) rec.in_window_s = t_s - travel_end_s;
+    if (!inside) rec.in_window_s = -1;
+    in_window = inside;
   }
 
   void record_row(const PdOutFrame& out_frame) {
@@ -150,6 +184,11 @@ struct Twin::Impl {
   uint32_t moves_seen = 0; // the device's T3 count, reset with its power
   bool move_open = false;
   bool travel_done = false;
+  bool overshoot_open = false;  // the last move's target is being held
+  double travel_sign = 0;       // +1 / -1: direction of the last move (process-data frame)
+  double start_position_deg = 0;
+  double travel_end_s = 0;      // (b) of the last move, tick time
+  bool in_window = false;       // the last move's target window holds the position now
 };
 
 Twin::Twin(const TwinConfig& config) : impl_(std::make_unique<Impl>(config)) {
@@ -209,6 +248,7 @@ void Twin::power_on() {
   s.device.power_on(s.plant.sensors());
   s.moves_seen = 0;
   s.move_open = false;
+  s.overshoot_open = false;
   s.startup_left = kStartupCycles;
   s.refresh_direction();
 }

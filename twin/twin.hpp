@@ -47,6 +47,9 @@ struct TwinConfig {
   std::vector<HardStop> hard_stops;
   SupplySpec supply;
   ThermalSpec thermal;
+  // Mounting (A-TWIN-24): tilt of the axis from vertical in degrees; 0 =
+  // vertical axis (default), 90 = horizontal (see PlantConfig).
+  double mounting_tilt_deg = 0.0;
   double physics_dt_s = 1e-4;
   double cycle_s = 0.002;        // IO-Link master cycle at the start; an integer multiple of physics_dt_s,
                                  // 0.002 .. 0.1328 s (manual 1, IO-Link MasterCycleTime; A-LINK-2)

@@ -75,6 +75,8 @@ class Move(TypedDict):
     settling_s: float | None
     positioning_s: float | None
     max_tracking_error_deg: float
+    overshoot_deg: float
+    in_window_s: float | None
     completed: bool
 
 IsduValue = int | str | bytes | list[int]

@@ -119,34 +119,64 @@ MoveResult simulate_move(double distance_rad, const MotionLimits& limits, const 
 
 constexpr double kMaxTrackingError_rad = deg_to_rad(1.0); // manual 6.2 index 87.1 default
 
-TEST(Controller, GainsPlaceThePolesAndRespectTheDiscreteDBound) {
+ControllerGains without_delay() {
+  ControllerGains g = default_controller_gains();
+  g.delay_steps = 0;
+  return g;
+}
+
+// A-CTRL-1: the drive tunes for the configured load; a heavier configured
+// load gets a lower velocity bandwidth, and the loop gain the motor side
+// must carry stays inside the discrete bound for the rotor alone.
+TEST(Controller, GainScheduleLowersBandwidthWithConfiguredLoad) {
   const ControllerGains g = default_controller_gains();
-  const double w = g.bandwidth_rad_s, wi = g.integral_ratio * w, z = g.damping;
-  // (s + wi)(s^2 + 2 z w s + w^2) = s^3 + Kv s^2 + Kp s + Ki
-  EXPECT_DOUBLE_EQ(g.kv_per_s(), 2 * z * w + wi);
-  EXPECT_DOUBLE_EQ(g.kp_per_s2(), w * w + 2 * z * w * wi);
-  EXPECT_DOUBLE_EQ(g.ki_per_s3(), w * w * wi);
-  // mujoco.md: a discrete D term is stable only for Kd < 2 J / dt. Worst
-  // case: the heaviest configured load (15000 g cm^2) on the lightest actual
-  // axis (no load), at the 0.1 ms control step.
-  const double dt = 1e-4;
-  const double kd_worst = (kInternalInertia_kgm2 + gcm2_to_kgm2(15000.0)) * g.kv_per_s();
-  EXPECT_LT(kd_worst, 2.0 * kInternalInertia_kgm2 / dt);
-  EXPECT_LT(kInternalInertia_kgm2 * g.kv_per_s(), 0.1 * 2.0 * kInternalInertia_kgm2 / dt); // no load: 10x margin
+  double last_wv = 1e300;
+  double last_kv = 0;
+  for (double load : {0.0, 1000.0, 5000.0, 10000.0, 15000.0}) {
+    const double j = kInternalInertia_kgm2 + gcm2_to_kgm2(load);
+    const double wv = g.velocity_bandwidth_for(j);
+    EXPECT_LT(wv, last_wv) << load;
+    EXPECT_GT(j * wv, last_kv) << load; // the gain itself still grows with J
+    last_wv = wv;
+    last_kv = j * wv;
+    // mujoco.md: a discrete D term is stable only for Kd < 2 J / dt; above
+    // the two-mass resonance the velocity loop sees the rotor alone (A-TWIN-20:
+    // J_m = 1.0e-4 kg m^2), so that bound applies to it.
+    EXPECT_LT(j * wv, 2.0 * 1.0e-4 / 1e-4) << load;
+  }
+  EXPECT_DOUBLE_EQ(g.velocity_bandwidth_for(kInternalInertia_kgm2), g.velocity_bandwidth_rad_s);
+}
+
+// A-CTRL-7: the torque computed from a sample reaches the current loop one
+// control period later.
+TEST(Controller, OutputIsDelayedByOneControlPeriod) {
+  PositionController delayed;
+  PositionController direct(without_delay());
+  delayed.reset(0.0);
+  direct.reset(0.0);
+  const double j = 2e-4;
+  double previous = 0.0;
+  for (int k = 0; k < 20; ++k) {
+    const KinematicState sp{1e-4 * k, 0.0, 50.0 * (k % 3), 0};
+    const double a = delayed.update(sp, 0.0, j, 1.0, 1.0, 1e-4);
+    const double b = direct.update(sp, 0.0, j, 1.0, 1.0, 1e-4);
+    EXPECT_EQ(a, previous) << k;
+    previous = b;
+  }
 }
 
 TEST(Controller, FeedForwardAloneWhenOnTrack) {
-  PositionController c;
+  PositionController c(without_delay());
   c.reset(0.0);
   const double j = 2e-4;
   // Setpoint at rest where the axis is: zero torque. Accelerating setpoint on
-  // the measured position: torque is J * acc (plus the tiny error-rate term).
+  // the measured position: torque is J * acc.
   EXPECT_EQ(c.update(KinematicState{0, 0, 0, 0}, 0.0, j, 1.0, 1.0, 1e-4), 0.0);
   EXPECT_NEAR(c.update(KinematicState{0, 0, 100.0, 0}, 0.0, j, 1.0, 1.0, 1e-4), j * 100.0, 1e-12);
 }
 
 TEST(Controller, SaturatesAtDirectionalLimitsWithoutWindup) {
-  PositionController c;
+  PositionController c(without_delay());
   c.reset(0.0);
   const double j = kInternalInertia_kgm2;
   // A large error held for 0.5 s against the limit: the output is clamped to the
@@ -218,14 +248,23 @@ TEST(Controller, FourTimesHeavierActualLoadTracksMuchWorse) {
   }
 }
 
-TEST(Controller, HeavyConfiguredLoadOnLightAxisStaysStable) {
-  // The worst gain mismatch (15000 g cm^2 configured, none mounted) must not
-  // oscillate: it still settles, just with more error than a correct setting.
-  PlantSpec s;
-  s.configured_load_gcm2 = 15000.0;
-  const MoveResult r = simulate_move(deg_to_rad(90.0), limits_from_parameter_set(3000, 100, 100, 15000.0), s);
-  EXPECT_EQ(r.result, SettlingResult::Done);
-  EXPECT_LT(r.max_tracking_error_rad, kMaxTrackingError_rad);
+TEST(Controller, HeavyConfiguredLoadOnLightAxisLeadsAndOvershoots) {
+  // The worst gain mismatch (15000 g cm^2 configured, none mounted): the
+  // acceleration feed-forward is 14x too large, the axis runs ahead. At a
+  // gentle 10 % acceleration the loop still settles (no instability), with
+  // far more error than a correct setting; at 100 % the error passes the
+  // 1 deg limit (manual 7.2, 114.5).
+  PlantSpec wrong;
+  wrong.configured_load_gcm2 = 15000.0;
+  PlantSpec right;
+  const MoveResult gentle =
+      simulate_move(deg_to_rad(90.0), limits_from_parameter_set(3000, 10, 100, 15000.0), wrong);
+  const MoveResult reference =
+      simulate_move(deg_to_rad(90.0), limits_from_parameter_set(3000, 10, 100, 15000.0), right);
+  EXPECT_EQ(gentle.result, SettlingResult::Done);
+  EXPECT_GT(gentle.max_tracking_error_rad, 5.0 * reference.max_tracking_error_rad);
+  const MoveResult full = simulate_move(deg_to_rad(90.0), limits_from_parameter_set(3000, 100, 100, 15000.0), wrong);
+  EXPECT_GT(full.max_tracking_error_rad, kMaxTrackingError_rad);
 }
 
 TEST(Controller, MaxSpeedFollowsAt24VButNotAt19V) {

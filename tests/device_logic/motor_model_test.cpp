@@ -57,11 +57,17 @@ TEST(MotorModel, NoLoadSpeedProportionalToVoltage) {
   EXPECT_LT(speed_with_torque_dps(m, 1e-9, 19.0), 4300.0); // and not at 19 V
 }
 
-TEST(MotorModel, FullTorqueUpToMaxSpeedAt24V) {
+TEST(MotorModel, TorqueNearMaxSpeedAt24V_A_MOTOR_2) {
   const MotorModel m;
-  EXPECT_NEAR(m.max_torque_Nm(deg_to_rad(4300.0), 24.0, 1.0), m.peak_torque_Nm(), 1e-9);
-  // At 19 V the rated torque is there up to about 4300 x 19 / 24 = 3404 deg/s.
-  EXPECT_NEAR(speed_with_torque_dps(m, kMotorTorque_Nm, 19.0), 4300.0 * 19.0 / 24.0, 50.0);
+  // Full peak torque up to ~4200 deg/s, half of it still at 4300 deg/s: the
+  // end of the S-curve's acceleration phase needs little torque (A-MOTOR-2).
+  EXPECT_NEAR(speed_with_torque_dps(m, m.peak_torque_Nm(), 24.0), 4208.0, 5.0);
+  EXPECT_GT(m.max_torque_Nm(deg_to_rad(4300.0), 24.0, 1.0), 0.3);
+  // manual 3.5.3: 4300 x 19 / 24 = 3404 deg/s at 19 V: 3300 deg/s still with
+  // the rated torque, 3500 deg/s with none at all (no-load 3483 deg/s).
+  EXPECT_GT(speed_with_torque_dps(m, kMotorTorque_Nm, 19.0), 3300.0);
+  EXPECT_EQ(m.max_torque_Nm(deg_to_rad(3500.0), 19.0, 1.0), 0.0);
+  EXPECT_NEAR(speed_with_torque_dps(m, 1e-9, 19.0), 4400.0 * 19.0 / 24.0, 0.01);
 }
 
 TEST(MotorModel, BrakingAlwaysHasPeakTorque) {
@@ -88,7 +94,7 @@ TEST(MotorModel, DefaultSetsFeasibleAt24VAcrossLoadRange) {
   const MotorModel m;
   for (double load = 0.0; load <= 15000.0; load += 1500.0) {
     EXPECT_GT(min_margin_Nm(m, 3000.0, load, 24.0), 0.09) << load;
-    EXPECT_GT(min_margin_Nm(m, 4300.0, load, 24.0), 0.09) << load; // max setting too
+    EXPECT_GT(min_margin_Nm(m, 4300.0, load, 24.0), 0.07) << load; // max setting too (A-MOTOR-2)
   }
 }
 

@@ -46,7 +46,9 @@ def test_blocked_flange_gives_a_tracking_error(motor_on_twin):
     pd = run_until(twin, move, lambda s, pd: pd["error"], 250)
     assert pd["error_code"] == 8  # position tracking error (manual 7.2 114.5)
     assert twin.isdu_read(114, 5) == 64
-    assert twin.state()["position_deg"] == pytest.approx(blocked_at, abs=0.01)
+    # The clamp holds the flange; the encoder sits on the rotor, which winds
+    # the compliance against it: at most 0.6 N m / 340 N m/rad = 0.1 deg (A-TWIN-20).
+    assert twin.state()["position_deg"] == pytest.approx(blocked_at, abs=0.12)
     assert twin.moves()[-1]["completed"] is False
 
 

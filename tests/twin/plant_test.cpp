@@ -59,7 +59,7 @@ TEST(Plant, EncoderQuantisesTo2Pow19PerRevolution_Manual6_2) {
 TEST(Plant, ExternalTorqueAcceleratesAsTOverJ) {
   Plant plant(config_with(InertiaLoad{5000}));
   const double j = plant.axis_inertia_kgm2();
-  EXPECT_NEAR(j, kInternalInertia_kgm2 + gcm2_to_kgm2(5000), 1e-12);
+  EXPECT_NEAR(j, kInternalInertia_kgm2 + gcm2_to_kgm2(5000), 2e-12); // + the rotor body's 1e-12 placeholder
   const double torque = 0.1;
   const double friction = plant.model()->dof_frictionloss[0];
   plant.set_external_torque(torque);
@@ -70,18 +70,38 @@ TEST(Plant, ExternalTorqueAcceleratesAsTOverJ) {
   EXPECT_EQ(plant.applied_torque_Nm(), 0.0);
 }
 
-TEST(Plant, MotorTorqueIsClampedToTheMotorsCapability) {
-  Plant plant(PlantConfig{});
-  plant.step(MotorCommand{5.0, true});
-  EXPECT_DOUBLE_EQ(plant.applied_torque_Nm(), plant.motor().peak_torque_Nm());
-  plant.step(MotorCommand{5.0, false}); // output stage off: no torque
-  EXPECT_EQ(plant.applied_torque_Nm(), 0.0);
+// Issue 14: the torque is kt x winding current, which the current loop
+// (A-CTRL-6) drives toward the reference within ~1 ms, never beyond the
+// current limit (A-MOTOR-3); with the bridge off it decays to zero; at speed
+// the bus voltage against the back-EMF limits it (manual 3.5.3).
+TEST(Plant, MotorTorqueFollowsTheCurrentLoopWithinTheMotorsCapability) {
+  Plant plant(config_with(InertiaLoad{15000}));
+  double max_torque = 0;
+  for (int i = 0; i < 30; ++i) {
+    plant.step(MotorCommand{5.0, true});
+    max_torque = std::max(max_torque, plant.applied_torque_Nm());
+  }
+  EXPECT_NEAR(plant.applied_torque_Nm(), plant.motor().peak_torque_Nm(), 0.01 * plant.motor().peak_torque_Nm());
+  EXPECT_LE(max_torque, plant.motor().peak_torque_Nm() * 1.005); // the PI loop's small overshoot
+  // First-order response: 63 % of a small step after 1 / w_c (1.6 steps at 1 kHz).
+  Plant fresh(config_with(InertiaLoad{15000}));
+  fresh.step(MotorCommand{0.1, true});
+  const double first = fresh.applied_torque_Nm();
+  EXPECT_GT(first, 0.02);
+  EXPECT_LT(first, 0.08);
+  run(plant, MotorCommand{5.0, false}, 200); // output stage off: the current decays
+  EXPECT_NEAR(plant.applied_torque_Nm(), 0.0, 1e-4); // 11 L/R time constants
   // At high speed the back-EMF limits motoring torque (manual 3.5.3).
   set_angle(plant, 0);
-  plant.data()->qvel[0] = deg_to_rad(5000.0);
-  plant.step(MotorCommand{0.485, true});
-  EXPECT_LT(plant.applied_torque_Nm(), 0.2);
-  EXPECT_NEAR(plant.applied_torque_Nm(), plant.motor().max_torque_Nm(deg_to_rad(5000.0), 24.0, 1.0), 1e-12);
+  plant.data()->qvel[0] = deg_to_rad(4300.0);
+  for (int i = 0; i < 100; ++i) {
+    plant.data()->qvel[0] = deg_to_rad(4300.0); // held at speed
+    plant.data()->qvel[1] = 0.0;
+    plant.step(MotorCommand{0.485, true});
+  }
+  const double limit = plant.motor().max_torque_Nm(deg_to_rad(4300.0), 24.0, 1.0);
+  EXPECT_LT(plant.applied_torque_Nm(), 0.485);
+  EXPECT_NEAR(plant.applied_torque_Nm(), limit, 0.02 * limit);
 }
 
 TEST(Plant, MotorTorqueFollowsItsSign) {
@@ -113,8 +133,10 @@ TEST(Plant, HardStopHoldsPeakTorqueWithoutLoad) {
     plant.step(MotorCommand{0.6, true});
     max_deg = std::max(max_deg, rad_to_deg(plant.angle_rad()));
   }
-  EXPECT_LT(max_deg, 30.2); // impact at ~70 rad/s
-  EXPECT_NEAR(rad_to_deg(plant.angle_rad()), 30.0, 0.01);
+  // Impact at ~70 rad/s; the rotor's momentum arrives through the
+  // compliance (A-TWIN-20) and presses the lug a little into the soft contact.
+  EXPECT_LT(max_deg, 30.5);
+  EXPECT_NEAR(rad_to_deg(plant.angle_rad()), 30.0, 0.05); // the light flange side sits softer in the contact
 }
 
 // Bearing friction holds a torque below it without visible creep (mujoco.md:

@@ -127,7 +127,10 @@ TEST(Twin, HardStopCausesTrackingError_Manual7_2_114_5) {
   switch_on_and_move(twin, 90.0);
   ASSERT_GT(run_until(twin, [&] { return twin.pd_in().error; }, 1000), 0);
   EXPECT_NE(twin.telemetry().error_code & 0x08, 0); // bit 3: position tracking error (manual 2.4)
-  EXPECT_NEAR(rad_to_deg(twin.plant().angle_rad()), 45.0, 0.5);
+  // At the stop or bounced off it: the rotor's momentum, stored in the
+  // compliance at the impact (A-TWIN-20), pushes the flange back.
+  EXPECT_GT(rad_to_deg(twin.plant().angle_rad()), 40.0);
+  EXPECT_LT(rad_to_deg(twin.plant().angle_rad()), 45.5);
   ASSERT_EQ(twin.moves().size(), 1u);
   EXPECT_FALSE(twin.moves()[0].completed);
   EXPECT_LT(twin.moves()[0].positioning_s, 0.0);
