@@ -142,6 +142,7 @@ Evaluation evaluate(const SizingRequest& rq, const ParameterSetValues& set, bool
   TwinConfig cfg;
   cfg.load = rq.load;
   cfg.supply.voltage_V = rq.voltage_V;
+  cfg.mounting_tilt_deg = rq.mounting_tilt_deg;
   cfg.supply.source_resistance_ohm = rq.source_resistance_ohm;
   cfg.supply.bus_capacitance_F = rq.bus_capacitance_F;
   cfg.thermal.ambient_C = rq.ambient_C;

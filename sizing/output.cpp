@@ -35,6 +35,8 @@ nlohmann::json to_json(const SizingRequest& rq, const SizingResult& r) {
                   {"dwell_s", rq.dwell_s},       {"tolerance_deg", rq.tolerance_deg}, {"wait_ms", rq.wait_ms},
                   {"ambient_C", rq.ambient_C},   {"parameter_set", rq.parameter_set}, {"cycles", rq.cycles},
                   {"thermal_margin_K", rq.thermal_margin_K},
+                  {"mounting_tilt_deg", rq.mounting_tilt_deg},
+                  {"handshake_cycles", rq.handshake_cycles},
                   {"max_positioning_ms", optional_number(rq.max_positioning_ms)},
                   {"max_cycle_ms", optional_number(rq.max_cycle_ms)}};
   j["travel_s"] = e.travel_s;

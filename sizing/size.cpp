@@ -44,6 +44,7 @@ double validate(const SizingRequest& rq) {
   if (rq.max_positioning_ms) check_range("--max-positioning-ms", *rq.max_positioning_ms, 1.0, 600000.0, " ms", "A-SIZE-10");
   check_range("--source-resistance-ohm", rq.source_resistance_ohm, 0.0, 10.0, " ohm", "A-SIZE-15");
   check_range("--bus-capacitance-F", rq.bus_capacitance_F, 0.0, 1.0, " F", "A-SIZE-15");
+  check_range("--mounting-tilt-deg", rq.mounting_tilt_deg, 0.0, 180.0, " deg", "0 vertical, 90 horizontal, A-TWIN-24");
   check_range("--handshake-cycles", rq.handshake_cycles, 0, 100, "", "IO-Link cycles per move, A-SIZE-16");
   if (rq.max_cycle_ms) check_range("--max-cycle-ms", *rq.max_cycle_ms, 1.0, 600000.0, " ms", "A-SIZE-10");
   if (rq.setting) {

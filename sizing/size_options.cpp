@@ -36,6 +36,7 @@ const OptionSpec<S> kSizeOptions[] = {
     {"source-resistance-ohm", "Supply source resistance, ohm (0: ideal source)", &S::source_resistance_ohm, false, true},
     {"bus-capacitance-F", "Capacitance on the motor supply, F (with a source resistance)", &S::bus_capacitance_F, false, true},
     {"handshake-cycles", "IO-Link cycles per move for the PLC handshake (A-SIZE-16)", &S::handshake_cycles, false, true},
+    {"mounting-tilt-deg", "Axis tilt from vertical, 0 .. 180 deg (90 horizontal: gravity acts); default: the load file's mounting:, else 0", &S::mounting_tilt_deg},
     {"report", "Write an HTML sizing report into this folder", &S::report},
 };
 
@@ -46,7 +47,9 @@ std::span<const OptionSpec<SizeOptions>> size_option_table() { return kSizeOptio
 // The scenario parser reads the file, so keys, errors and MJCF paths behave
 // the same: keys a scenario needs are appended at the end, which keeps every
 // line number of the file.
-LoadSpec load_from_file(const std::string& path, std::string_view option) {
+LoadSpec load_from_file(const std::string& path, std::string_view option) { return read_load_file(path, option).load; }
+
+LoadFile read_load_file(const std::string& path, std::string_view option) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SizingInputError(fmt::format("{} {}: cannot read the file", option, path));
   std::ostringstream buffer;
@@ -65,7 +68,10 @@ LoadSpec load_from_file(const std::string& path, std::string_view option) {
   if (!root["name"]) text += "\nname: load from " + std::filesystem::path(path).filename().string() + "\n";
   if (!root["steps"]) text += "\nsteps:\n  - comment: sizing load\n"; // a scenario needs one step
   try {
-    return parse_scenario_text(text, path, std::filesystem::path(path).parent_path().string()).load;
+    const Scenario sc = parse_scenario_text(text, path, std::filesystem::path(path).parent_path().string());
+    LoadFile f{sc.load, std::nullopt};
+    if (root["mounting"]) f.mounting_tilt_deg = sc.mounting_tilt_deg;
+    return f;
   } catch (const ScenarioError& e) {
     throw SizingInputError(e.what());
   }
@@ -76,7 +82,11 @@ SizingRequest make_request(const SizeOptions& a) {
   rq.angle_deg = a.angle_deg;
   if (a.load_gcm2 && !a.load.empty()) throw SizingInputError("--load-gcm2 and --load: give only one of them");
   if (a.load_gcm2) rq.load = InertiaLoad{*a.load_gcm2};
-  else if (!a.load.empty()) rq.load = load_from_file(a.load);
+  else if (!a.load.empty()) {
+    LoadFile f = read_load_file(a.load);
+    rq.load = std::move(f.load);
+    rq.mounting_tilt_deg = f.mounting_tilt_deg.value_or(0.0);
+  }
   else throw SizingInputError("size: give the load with --load-gcm2 J or --load LOAD.yaml");
   rq.voltage_V = a.voltage_V;
   rq.dwell_s = a.dwell_s;
@@ -92,6 +102,7 @@ SizingRequest make_request(const SizeOptions& a) {
   rq.source_resistance_ohm = a.source_resistance_ohm;
   rq.bus_capacitance_F = a.bus_capacitance_F;
   rq.handshake_cycles = a.handshake_cycles;
+  if (a.mounting_tilt_deg) rq.mounting_tilt_deg = *a.mounting_tilt_deg;
   if (a.speed_dps || a.accel_pct || a.jerk_pct) {
     // Options left out keep the factory value of sets 1..7 (manual 6.2).
     const MotionSetting factory;

@@ -58,6 +58,10 @@ struct SizingRequest {
   // Move reaches the device (1), Done comes back (1), the PLC reacts (1),
   // Move stays low one cycle before the next command (manual 3.2 T7) (1).
   int handshake_cycles = 4;
+  // Mounting (A-TWIN-24): axis tilt from vertical, 0 = vertical (gravity
+  // along the axis, no torque), 90 = horizontal (an eccentric load's weight
+  // loads the motor).
+  double mounting_tilt_deg = 0.0;
 };
 
 // What the motor supply sees (issue 17, A-SIZE-15), from the trace.

@@ -177,3 +177,28 @@ TEST(Utilisation, FiguresAreConsistent) {
 
 } // namespace
 } // namespace sreh::sizing
+
+namespace sreh::sizing {
+namespace {
+
+// Issue 17 / A-TWIN-24: a horizontal axis with an eccentric mass needs more
+// torque than the same move on a vertical axis (gravity, not a rule).
+TEST(Mounting, HorizontalEccentricMassNeedsMoreTorque) {
+  SizingRequest rq;
+  rq.angle_deg = 90.0;
+  rq.load = ArmLoad{0.3, 0.06, 0.0};
+  rq.cycles = 1;
+  rq.setting = MotionSetting{1000.0, 50.0, 50.0};
+  const Evaluation vertical = size(rq).evaluation;
+  rq.mounting_tilt_deg = 90.0;
+  const Evaluation horizontal = size(rq).evaluation;
+  ASSERT_TRUE(vertical.completed) << vertical.reason;
+  ASSERT_TRUE(horizontal.completed) << horizontal.reason;
+  EXPECT_GT(horizontal.peak_torque_Nm, vertical.peak_torque_Nm);
+  EXPECT_GT(horizontal.rms_torque_Nm, vertical.rms_torque_Nm);
+  // The dwell at 90 deg holds the arm out: 0.3 kg x 9.81 x 0.06 m ~ 0.18 N m.
+  EXPECT_GT(horizontal.rms_torque_Nm, 0.05);
+}
+
+} // namespace
+} // namespace sreh::sizing
