@@ -93,20 +93,30 @@ bool dominates(const MotionSetting& a, const MotionSetting& b) { // a at least a
 }
 
 // Runs candidates in the twin and learns from the failures which others
-// need not run: a failed temperature check rules out every candidate with at
-// least its heat proxy, a failed torque check every one with at least its
-// torque proxy, any other failure every candidate at least as fast in all
-// three limits (A-SIZE-10: the monotonicity the search relies on).
+// need not run (A-SIZE-10). A failed temperature check with heat proxy P_f
+// and a rise r_f times the allowed one rules out every candidate with P >=
+// P_f (monotonicity) and every one with r_f P / P_f > 1: the rise is affine
+// in the proxy with a non-negative offset (speed loss, holding torque), so
+// scaling it in proportion to a lower P underestimates it, never over. The
+// same for the torque check with the torque proxy. Any other failure rules
+// out every candidate at least as fast in all three limits.
 struct Runner {
   const SizingRequest& rq;
   double load_gcm2;
   SizingResult& result;
+  struct Failure {
+    double proxy, used; // used > 1: how far over the limit
+  };
   std::vector<MotionSetting> infeasible; // limits that failed (not the target)
-  double heat_limit = INFINITY, torque_limit = INFINITY;
+  std::vector<Failure> heat, torque;
   std::string first_failure;             // binding limit of the fastest failed point
 
+  static bool ruled_out(const std::vector<Failure>& fs, double proxy) {
+    return std::any_of(fs.begin(), fs.end(),
+                       [&](const Failure& f) { return proxy >= f.proxy || f.used * proxy / f.proxy > 1.0; });
+  }
   bool pruned(const Candidate& c) const {
-    if (c.heat_proxy >= heat_limit || c.torque_proxy >= torque_limit) return true;
+    if (ruled_out(heat, c.heat_proxy) || ruled_out(torque, c.torque_proxy)) return true;
     return std::any_of(infeasible.begin(), infeasible.end(),
                        [&](const MotionSetting& f) { return dominates(c.setting, f); });
   }
@@ -116,9 +126,16 @@ struct Runner {
     const bool limit_failed =
         !ev.feasible && ev.binding_limit != "max_positioning" && ev.binding_limit != "max_cycle";
     if (limit_failed) {
-      if (ev.binding_limit == "temperature") heat_limit = std::min(heat_limit, c.heat_proxy);
-      else if (ev.binding_limit == "torque_at_speed") torque_limit = std::min(torque_limit, c.torque_proxy);
-      else infeasible.push_back(c.setting);
+      const double allowed_rise = kTemperatureWarning_C - rq.thermal_margin_K - rq.ambient_C;
+      const double torque_used =
+          std::max(1.0 - ev.min_torque_headroom, ev.peak_torque_Nm / ev.torque_capability_Nm) / kTorqueMargin;
+      if (ev.binding_limit == "temperature" && ev.completed && allowed_rise > 0 && c.heat_proxy > 0) {
+        heat.push_back({c.heat_proxy, std::max(1.0, (ev.steady_temperature_C - rq.ambient_C) / allowed_rise)});
+      } else if (ev.binding_limit == "torque_at_speed" && ev.completed && c.torque_proxy > 0) {
+        torque.push_back({c.torque_proxy, std::max(1.0, torque_used)});
+      } else {
+        infeasible.push_back(c.setting);
+      }
       if (first_failure.empty()) first_failure = ev.binding_limit;
     }
     result.tried.push_back(ev);
@@ -140,7 +157,7 @@ std::optional<Evaluation> fastest(const SizingRequest& rq_in, double load_gcm2, 
     return std::tie(a.setting.accel_pct, a.setting.jerk_pct, a.setting.speed_dps) <
            std::tie(b.setting.accel_pct, b.setting.jerk_pct, b.setting.speed_dps); // the gentler of equals
   });
-  Runner runner{rq, load_gcm2, result, {}, INFINITY, INFINITY, {}};
+  Runner runner{rq, load_gcm2, result, {}, {}, {}, {}};
   std::optional<Evaluation> best;
   const double wait_s = make_parameter_set(rq, MotionSetting{}, load_gcm2).wait_ms * 1e-3;
   for (const Candidate& c : cs) {
@@ -201,7 +218,7 @@ SizingResult search_gentlest(const SizingRequest& rq, double load_gcm2) {
     if (pa != pb) return pa < pb;
     return a.travel_s < b.travel_s;
   });
-  Runner runner{rq, load_gcm2, result, {}, INFINITY, INFINITY, {}};
+  Runner runner{rq, load_gcm2, result, {}, {}, {}, {}};
   std::optional<Evaluation> best;
   double best_proxy = 0;
   for (const Candidate& c : cs) {
