@@ -2,6 +2,7 @@
 // device only sees process data and ISDU): the set written to 64+n over
 // ISDU, Motor On, then 0 -> A -> 0 moves with the dwell after each Done.
 #include <algorithm>
+#include <utility>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -63,8 +64,7 @@ void write_all(Twin& twin, const std::vector<IsduWrite>& writes) {
   }
 }
 
-double read_tracking_limit_deg(Twin& twin) {
-  const ParamId id = param::kTrackingErrorMax;
+double read_display(Twin& twin, ParamId id) {
   const IsduResult r = twin.isdu_read(id.index, id.subindex);
   if (!r.ok() || r.data.size() != wire_size(parameter_row(id).type)) return 0;
   return raw_to_display(id, decode_number(parameter_row(id).type, r.data));
@@ -79,8 +79,61 @@ bool run_until(Twin& twin, Pred done, int max_cycles) {
   return false;
 }
 
+// Failed checks, each with the limit it names (A-SIZE-5).
+struct Reasons {
+  std::vector<std::pair<std::string, std::string>> list; // binding limit, text
+  void add(std::string limit, std::string text) { list.emplace_back(std::move(limit), std::move(text)); }
+};
+
+// The limit an error code points at (manual 7.2).
+std::string category_of_error(uint8_t code) {
+  if (code & (1u << static_cast<int>(ErrorBit::TrackingError))) return "tracking";
+  if (code & (1u << static_cast<int>(ErrorBit::Positioning))) return "settling";
+  if (code & (1u << static_cast<int>(ErrorBit::Temperature))) return "temperature";
+  if (code & (1u << static_cast<int>(ErrorBit::MotorVoltage))) return "voltage";
+  return "device_error";
+}
+
 int cycles_for(double seconds, double cycle_s) {
   return static_cast<int>(std::ceil(seconds / cycle_s - 1e-9));
+}
+
+double read_tracking_limit_deg(Twin& twin) { return read_display(twin, param::kTrackingErrorMax); }
+
+// A-SIZE-15: the bus power of one sample: mechanical power plus the
+// winding's copper loss (the output stage taken as lossless).
+double bus_power_W(const MotorModel& motor, const TraceRow& row) {
+  return row.torque_Nm * deg_to_rad(row.velocity_dps) + motor.copper_loss_W(row.torque_Nm);
+}
+
+SupplyFigures supply_figures(const MotorModel& motor, const std::vector<TraceRow>& rows, std::size_t from,
+                             std::size_t cycle_from, double dt_s, double bus_max_V) {
+  SupplyFigures f;
+  f.bus_max_V = bus_max_V;
+  double regen = 0, sq = 0;
+  std::size_t n = 0;
+  for (std::size_t r = from; r < rows.size(); ++r) {
+    const double u = std::max(rows[r].supply_V, 1.0);
+    const double p = bus_power_W(motor, rows[r]);
+    const double i = std::max(0.0, p) / u;
+    f.peak_current_A = std::max(f.peak_current_A, i);
+    f.peak_bus_V = std::max(f.peak_bus_V, rows[r].supply_V);
+    if (p < 0) {
+      regen += -p * dt_s;
+      f.regen_energy_J = std::max(f.regen_energy_J, regen);
+    } else {
+      regen = 0;
+    }
+    if (r >= cycle_from) {
+      sq += i * i;
+      ++n;
+    }
+  }
+  f.rms_current_A = n ? std::sqrt(sq / static_cast<double>(n)) : 0.0;
+  // Manual 7.2, 114.4 cause 2 "motor voltage too high ... In case of
+  // overvoltage: install more capacity on the motor supply or a chopper".
+  f.overvoltage_advice = bus_max_V > 0 && f.peak_bus_V > bus_max_V;
+  return f;
 }
 
 } // namespace
@@ -89,6 +142,9 @@ Evaluation evaluate(const SizingRequest& rq, const ParameterSetValues& set, bool
   TwinConfig cfg;
   cfg.load = rq.load;
   cfg.supply.voltage_V = rq.voltage_V;
+  cfg.mounting_tilt_deg = rq.mounting_tilt_deg;
+  cfg.supply.source_resistance_ohm = rq.source_resistance_ohm;
+  cfg.supply.bus_capacitance_F = rq.bus_capacitance_F;
   cfg.thermal.ambient_C = rq.ambient_C;
   cfg.record_trace = true;
   const std::unique_ptr<Twin> twin_owner = make_twin(cfg);
@@ -102,6 +158,7 @@ Evaluation evaluate(const SizingRequest& rq, const ParameterSetValues& set, bool
   ev.torque_capability_Nm = motor.peak_torque_Nm();
   write_all(twin, set.writes);
   ev.tracking_limit_deg = read_tracking_limit_deg(twin);
+  ev.supply.bus_max_V = read_display(twin, param::kMotorVoltageMax);
 
   // Travel time (manual 3.5.2 (1)): the device's own plan for that distance
   // and those limits, i.e. the time-optimal S-curve (device.cpp, T3).
@@ -111,14 +168,14 @@ Evaluation evaluate(const SizingRequest& rq, const ParameterSetValues& set, bool
   ev.travel_s = Profile::rest_to_rest(internal_counts_to_rad(int64_t{target_wire} * kInternalPerWireCount), limits)
                     .duration_s();
 
-  std::vector<std::string> reasons;
+  Reasons reasons;
   ProcessDataOut pd;
   pd.motor_on = true;
   pd.parameter_set = static_cast<uint8_t>(set.set);
   twin.set_pd_out(pd);
   if (!run_until(twin, [&] { return twin.pd_in().ready || twin.pd_in().error; }, kSwitchOnCycles) ||
       !twin.pd_in().ready) {
-    reasons.push_back("motor did not switch on: " + error_text(twin.pd_in().error_code));
+    reasons.add("switch_on", "motor did not switch on: " + error_text(twin.pd_in().error_code));
   }
 
   const double cycle_s = cfg.cycle_s;
@@ -129,7 +186,7 @@ Evaluation evaluate(const SizingRequest& rq, const ParameterSetValues& set, bool
   std::size_t last_cycle_row = 0; // trace row where the last full cycle starts
   const std::size_t first_move_row = twin.trace().size();
   std::size_t last_dwell_row = 0; // trace row where the last dwell starts
-  for (int i = 0; i < moves && reasons.empty(); ++i) {
+  for (int i = 0; i < moves && reasons.list.empty(); ++i) {
     if (i == moves - 2) last_cycle_row = twin.trace().size();
     const bool out = (i % 2) == 0;
     MoveResult mr;
@@ -157,19 +214,21 @@ Evaluation evaluate(const SizingRequest& rq, const ParameterSetValues& set, bool
     }
     ev.moves.push_back(mr);
     if (in.error) {
-      reasons.push_back(fmt::format("move {} to {} deg failed: {}", i + 1, mr.target_deg, error_text(in.error_code)));
+      reasons.add(category_of_error(in.error_code),
+                  fmt::format("move {} to {} deg failed: {}", i + 1, mr.target_deg, error_text(in.error_code)));
       break;
     }
     if (!ended || !mr.completed) {
-      reasons.push_back(fmt::format("move {} to {} deg did not complete within {:.3f} s", i + 1, mr.target_deg,
-                                    move_cycles * cycle_s));
+      reasons.add("settling", fmt::format("move {} to {} deg did not complete within {:.3f} s", i + 1, mr.target_deg,
+                                          move_cycles * cycle_s));
       break;
     }
     pd.move = false;
     twin.set_pd_out(pd);
     last_dwell_row = twin.trace().size();
     if (run_until(twin, [&] { return twin.pd_in().error; }, dwell_cycles)) {
-      reasons.push_back(fmt::format("after move {}: {}", i + 1, error_text(twin.pd_in().error_code)));
+      reasons.add(category_of_error(twin.pd_in().error_code),
+                  fmt::format("after move {}: {}", i + 1, error_text(twin.pd_in().error_code)));
     }
     // Overshoot and the window entered for good are watched until the next move.
     if (twin.moves().size() > records_before) {
@@ -185,7 +244,8 @@ Evaluation evaluate(const SizingRequest& rq, const ParameterSetValues& set, bool
     ev.positioning_s = std::max(ev.positioning_s, m.positioning_s);
     ev.max_tracking_error_deg = std::max(ev.max_tracking_error_deg, m.max_tracking_error_deg);
   }
-  ev.cycle_s = 2.0 * ev.positioning_s + 2.0 * rq.dwell_s;
+  ev.handshake_s = rq.handshake_cycles * cfg.cycle_s; // A-SIZE-16
+  ev.cycle_s = 2.0 * (ev.positioning_s + ev.handshake_s) + 2.0 * rq.dwell_s;
   ev.cycles_per_min = ev.cycle_s > 0 ? 60.0 / ev.cycle_s : 0.0;
 
   // Torque and losses from the trace (one sample per IO-Link cycle, A-SIZE-8).
@@ -217,7 +277,7 @@ Evaluation evaluate(const SizingRequest& rq, const ParameterSetValues& set, bool
     }
     return s;
   };
-  const bool all_moves_ran = reasons.empty() && static_cast<int>(ev.moves.size()) == moves;
+  const bool all_moves_ran = reasons.list.empty() && static_cast<int>(ev.moves.size()) == moves;
   ev.completed = all_moves_ran;
   if (all_moves_ran) {
     const Sums cycle = sums(last_cycle_row);
@@ -232,34 +292,68 @@ Evaluation evaluate(const SizingRequest& rq, const ParameterSetValues& set, bool
       ev.mean_loss_W = (cycle.loss * cycle_s + hold_loss * extra_s) / total_s;
     }
   }
+  ev.supply = supply_figures(motor, rows, first_move_row, last_cycle_row, cycle_s, ev.supply.bus_max_V);
   const ThermalEstimate th = estimate_thermal(ev.mean_loss_W, rq.ambient_C);
   ev.steady_temperature_C = th.steady_C;
   ev.time_to_warning_s = th.time_to_warning_s;
 
-  // Feasible with margin (A-SIZE-5).
-  if (reasons.empty()) {
-    if (warnings != 0) reasons.push_back(warning_text(warnings));
+  // Feasible with margin (A-SIZE-5); the same checks for a given set and
+  // for every set the search tries.
+  const double warning_limit_C = kTemperatureWarning_C - rq.thermal_margin_K;
+  ev.continuous_torque_Nm = continuous_torque_Nm(rq.ambient_C, rq.thermal_margin_K);
+  ev.utilisation.peak_torque_pct = 100.0 * (1.0 - ev.min_torque_headroom);
+  ev.utilisation.rms_torque_pct = ev.continuous_torque_Nm > 0 ? 100.0 * ev.rms_torque_Nm / ev.continuous_torque_Nm : 0;
+  ev.utilisation.thermal_margin_K = kTemperatureWarning_C - ev.steady_temperature_C;
+  if (reasons.list.empty()) {
+    if (warnings & (1u << static_cast<int>(WarningBit::Positioning))) reasons.add("settling", warning_text(warnings));
+    else if (warnings != 0) reasons.add(warnings & (1u << static_cast<int>(WarningBit::Temperature)) ? "temperature" : "voltage",
+                                        warning_text(warnings));
     if (ev.peak_torque_Nm > kTorqueMargin * ev.torque_capability_Nm) {
-      reasons.push_back(fmt::format("peak torque {:.3f} N m is above {:.0f} % of the motor's {:.3f} N m",
-                                    ev.peak_torque_Nm, 100 * kTorqueMargin, ev.torque_capability_Nm));
+      reasons.add("torque_at_speed", fmt::format("peak torque {:.3f} N m is above {:.0f} % of the motor's {:.3f} N m",
+                                                 ev.peak_torque_Nm, 100 * kTorqueMargin, ev.torque_capability_Nm));
     } else if (ev.min_torque_headroom < 1.0 - kTorqueMargin) {
-      reasons.push_back(fmt::format(
+      reasons.add("torque_at_speed", fmt::format(
           "torque within {:.0f} % of the motor's capability at {:.0f} deg/s and {:.1f} V (manual 3.5.3: "
           "the reachable speed falls with the voltage)",
           100 * (1.0 - kTorqueMargin), worst_headroom_speed_dps, rq.voltage_V));
     }
     if (ev.tracking_limit_deg > 0 && ev.max_tracking_error_deg > kTrackingMargin * ev.tracking_limit_deg) {
-      reasons.push_back(fmt::format("tracking error {:.3f} deg is above {:.0f} % of the {:.1f} deg limit (index 87.1)",
-                                    ev.max_tracking_error_deg, 100 * kTrackingMargin, ev.tracking_limit_deg));
+      reasons.add("tracking", fmt::format("tracking error {:.3f} deg is above {:.0f} % of the {:.1f} deg limit (index 87.1)",
+                                          ev.max_tracking_error_deg, 100 * kTrackingMargin, ev.tracking_limit_deg));
     }
-    if (ev.steady_temperature_C >= kTemperatureWarning_C) {
-      reasons.push_back(fmt::format("continuous cycling heats the module to {:.1f} degC (warning at 70 degC, 115.1){}",
-                                    ev.steady_temperature_C,
-                                    ev.time_to_warning_s ? fmt::format(" after {:.0f} s", *ev.time_to_warning_s) : ""));
+    if (ev.steady_temperature_C >= warning_limit_C) {
+      reasons.add("temperature",
+                  fmt::format("continuous cycling heats the module to {:.1f} degC, less than the required {:.1f} K "
+                              "below the 70 degC warning (115.1){}",
+                              ev.steady_temperature_C, rq.thermal_margin_K,
+                              ev.time_to_warning_s ? fmt::format("; warning after {:.0f} s", *ev.time_to_warning_s) : ""));
+    }
+    if (rq.max_positioning_ms && ev.positioning_s > *rq.max_positioning_ms * 1e-3) {
+      reasons.add("max_positioning", fmt::format("positioning {:.1f} ms is above the required {:.1f} ms",
+                                                 ev.positioning_s * 1e3, *rq.max_positioning_ms));
+    }
+    if (rq.max_cycle_ms && ev.cycle_s > *rq.max_cycle_ms * 1e-3) {
+      reasons.add("max_cycle", fmt::format("cycle {:.1f} ms is above the required {:.1f} ms", ev.cycle_s * 1e3,
+                                           *rq.max_cycle_ms));
     }
   }
-  ev.feasible = reasons.empty();
-  for (const std::string& r : reasons) ev.reason += (ev.reason.empty() ? "" : "; ") + r;
+  ev.feasible = reasons.list.empty();
+  for (const auto& r : reasons.list) ev.reason += (ev.reason.empty() ? "" : "; ") + r.second;
+  if (!ev.feasible) {
+    ev.binding_limit = reasons.list.front().first;
+  } else {
+    // The limit closest to failing: the largest used fraction of what the margin allows.
+    const double rise_allowed = warning_limit_C - rq.ambient_C;
+    const std::pair<double, const char*> used[] = {
+        {(1.0 - ev.min_torque_headroom) / kTorqueMargin, "torque_at_speed"},
+        {ev.tracking_limit_deg > 0 ? ev.max_tracking_error_deg / (kTrackingMargin * ev.tracking_limit_deg) : 0.0, "tracking"},
+        {rise_allowed > 0 ? (ev.steady_temperature_C - rq.ambient_C) / rise_allowed : 1.0, "temperature"},
+        {rq.max_positioning_ms ? ev.positioning_s / (*rq.max_positioning_ms * 1e-3) : 0.0, "max_positioning"},
+        {rq.max_cycle_ms ? ev.cycle_s / (*rq.max_cycle_ms * 1e-3) : 0.0, "max_cycle"}};
+    const auto* top = &used[0];
+    for (const auto& u : used) if (u.first > top->first) top = &u;
+    ev.binding_limit = top->second;
+  }
   if (keep_trace) ev.trace = rows;
   return ev;
 }

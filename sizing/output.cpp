@@ -38,7 +38,12 @@ nlohmann::json to_json(const SizingRequest& rq, const SizingResult& r) {
   j["mode"] = r.recommended ? "recommend" : "evaluate";
   j["request"] = {{"angle_deg", rq.angle_deg},   {"load_gcm2", e.load_gcm2},       {"voltage_V", rq.voltage_V},
                   {"dwell_s", rq.dwell_s},       {"tolerance_deg", rq.tolerance_deg}, {"wait_ms", rq.wait_ms},
-                  {"ambient_C", rq.ambient_C},   {"parameter_set", rq.parameter_set}, {"cycles", rq.cycles}};
+                  {"ambient_C", rq.ambient_C},   {"parameter_set", rq.parameter_set}, {"cycles", rq.cycles},
+                  {"thermal_margin_K", rq.thermal_margin_K},
+                  {"mounting_tilt_deg", rq.mounting_tilt_deg},
+                  {"handshake_cycles", rq.handshake_cycles},
+                  {"max_positioning_ms", optional_number(rq.max_positioning_ms)},
+                  {"max_cycle_ms", optional_number(rq.max_cycle_ms)}};
   j["travel_s"] = ns_rounded(e.travel_s);
   j["completed"] = e.completed;
   j["settling_s"] = time_if(e.completed, e.settling_s);
@@ -54,8 +59,27 @@ nlohmann::json to_json(const SizingRequest& rq, const SizingResult& r) {
   j["mean_loss_W"] = e.mean_loss_W;
   j["steady_temperature_C"] = e.steady_temperature_C;
   j["time_to_warning_s"] = optional_number(e.time_to_warning_s);
-  j["feasible"] = e.feasible;
+  // The answer (issue 17): for a search, whether the target (or, without
+  // one, any set) is met with every margin; for a given set, its own check.
+  j["feasible"] = r.feasible;
   j["reason"] = e.reason;
+  j["objective"] = r.objective.empty() ? "evaluate" : r.objective;
+  j["binding_limit"] = r.binding_limit;
+  j["best_positioning_s"] = time_if(r.best_positioning_s >= 0, r.best_positioning_s);
+  j["best_cycle_s"] = time_if(r.best_cycle_s >= 0, r.best_cycle_s);
+  j["utilisation"] = {{"peak_torque_pct", e.utilisation.peak_torque_pct},
+                      {"rms_torque_pct", e.utilisation.rms_torque_pct},
+                      {"thermal_margin_K", e.utilisation.thermal_margin_K},
+                      {"required_thermal_margin_K", rq.thermal_margin_K}};
+  j["continuous_torque_Nm"] = e.continuous_torque_Nm;
+  j["candidates"] = r.candidates;
+  j["handshake_s"] = e.handshake_s;
+  j["supply"] = {{"peak_current_A", e.supply.peak_current_A},
+                 {"rms_current_A", e.supply.rms_current_A},
+                 {"regen_energy_J", e.supply.regen_energy_J},
+                 {"peak_bus_V", e.supply.peak_bus_V},
+                 {"bus_max_V", e.supply.bus_max_V},
+                 {"overvoltage_advice", e.supply.overvoltage_advice}};
   j["simulations"] = r.simulations;
   nlohmann::json writes = nlohmann::json::array();
   for (const IsduWrite& w : e.set.writes) {
@@ -91,14 +115,16 @@ std::string summary_text(const SizingRequest& rq, const SizingResult& r) {
   s += fmt::format("Sizing: {} deg back and forth, load {:.1f} g cm^2, {:.1f} V, dwell {} s, ambient {} degC\n",
                    rq.angle_deg, e.load_gcm2, rq.voltage_V, rq.dwell_s, rq.ambient_C);
   s += fmt::format("{} parameter set {}: speed {:.1f} deg/s, acceleration {:.1f} %, jerk {:.1f} %\n",
-                   r.recommended ? (e.feasible ? "Recommended" : "No feasible set; last tried") : "Given",
+                   r.recommended ? (r.feasible ? (r.objective == "gentlest" ? "Gentlest set meeting the target:"
+                                                                             : "Fastest feasible set:")
+                                               : "Target not reachable; fastest feasible") : "Given",
                    e.set.set, e.set.setting.speed_dps, e.set.setting.accel_pct, e.set.setting.jerk_pct);
   s += fmt::format("  travel time       {:8.4f} s   (planned S-curve, manual 3.5.2 (1))\n", e.travel_s);
   s += fmt::format("  settling time     {}   (incl. waiting time {:.1f} ms, simulated)\n",
                    time_text(e.completed, e.settling_s, "s"), e.set.wait_ms);
   s += fmt::format("  positioning time  {}   (worst of {} moves{})\n", time_text(e.completed, e.positioning_s, "s"),
                    e.moves.size(), e.completed ? "" : "; not all completed");
-  s += fmt::format("  cycle             {}   = 2 moves + 2 dwells{}\n", time_text(e.completed, e.cycle_s, "s"),
+  s += fmt::format("  cycle             {}   = 2 moves + 2 handshakes + 2 dwells{}\n", time_text(e.completed, e.cycle_s, "s"),
                    e.completed ? fmt::format(": {:.1f} cycles/min", e.cycles_per_min) : "");
   s += fmt::format("  torque peak / rms {:8.3f} / {:.3f} N m of {:.3f} N m ({:.0f} %)\n", e.peak_torque_Nm,
                    e.rms_torque_Nm, e.torque_capability_Nm,
@@ -107,7 +133,17 @@ std::string summary_text(const SizingRequest& rq, const SizingResult& r) {
                    e.tracking_limit_deg);
   s += fmt::format("  temperature       {:8.1f} degC steady under continuous cycling ({:.2f} W), 70 degC warning: {}\n",
                    e.steady_temperature_C, e.mean_loss_W, duration_text(e.time_to_warning_s));
-  s += fmt::format("  feasible          {}{}\n", e.feasible ? "yes" : "NO", e.feasible ? "" : ": " + e.reason);
+  s += fmt::format("  utilisation       peak torque {:.0f} % at speed, RMS {:.0f} % of continuous {:.3f} N m, "
+                   "thermal margin {:.1f} K (required {:.1f} K)\n",
+                   e.utilisation.peak_torque_pct, e.utilisation.rms_torque_pct, e.continuous_torque_Nm,
+                   e.utilisation.thermal_margin_K, rq.thermal_margin_K);
+  s += fmt::format("  supply            peak {:.2f} A, RMS {:.2f} A, regenerated {:.3f} J per braking, bus peak {:.2f} V "
+                   "(window max {:.1f} V){}\n",
+                   e.supply.peak_current_A, e.supply.rms_current_A, e.supply.regen_energy_J, e.supply.peak_bus_V,
+                   e.supply.bus_max_V,
+                   e.supply.overvoltage_advice ? ": manual 7.2 114.4 applies, add capacity or a chopper" : "");
+  s += fmt::format("  binding limit     {}\n", r.binding_limit);
+  s += fmt::format("  feasible          {}{}\n", r.feasible ? "yes" : "NO", r.feasible ? "" : ": " + e.reason);
   s += fmt::format("ISDU writes, as scenario steps ({} simulation{}):\n", r.simulations, r.simulations == 1 ? "" : "s");
   for (const IsduWrite& w : e.set.writes) s += "  " + isdu_write_line(w) + "\n";
   return s;

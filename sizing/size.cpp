@@ -1,7 +1,5 @@
-// validate(), and size(): evaluate the given set, or search the fastest
-// feasible one (A-SIZE-10): all three limits scaled together from the
-// voltage's top speed and 100 %/100 % down until feasible, bisected, then
-// acceleration/jerk and speed each raised again where that is faster.
+// validate(), and size(): evaluate the given set, or search (search.cpp,
+// A-SIZE-10) the fastest feasible one or the gentlest one meeting a target.
 #include <cmath>
 #include <string>
 
@@ -20,9 +18,6 @@ void check_range(const char* option, double value, double lo, double hi, const c
   }
 }
 
-constexpr int kBisectSteps = 5;      // stage 1: the common scale to (hi - lo) / 32
-constexpr int kRaiseSteps = 3;       // stages 2 and 3
-constexpr double kMinScale = 1.0 / 64.0;
 
 } // namespace
 
@@ -44,6 +39,14 @@ double validate(const SizingRequest& rq) {
   check_range("--ambient-C", rq.ambient_C, 0.0, 50.0, " degC", "A-SIZE-1");
   check_range("--parameter-set", rq.parameter_set, 0, 7, "", "index 64..71, manual 6.2");
   check_range("--cycles", rq.cycles, 1, 20, "", "A-SIZE-3");
+  check_range("--thermal-margin-K", rq.thermal_margin_K, 0.0, kMaxThermalMargin_K, " K",
+              "required distance below the 70 degC warning, A-SIZE-5");
+  if (rq.max_positioning_ms) check_range("--max-positioning-ms", *rq.max_positioning_ms, 1.0, 600000.0, " ms", "A-SIZE-10");
+  check_range("--source-resistance-ohm", rq.source_resistance_ohm, 0.0, 10.0, " ohm", "A-SIZE-15");
+  check_range("--bus-capacitance-F", rq.bus_capacitance_F, 0.0, 1.0, " F", "A-SIZE-15");
+  check_range("--mounting-tilt-deg", rq.mounting_tilt_deg, 0.0, 180.0, " deg", "0 vertical, 90 horizontal, A-TWIN-24");
+  check_range("--handshake-cycles", rq.handshake_cycles, 0, 100, "", "IO-Link cycles per move, A-SIZE-16");
+  if (rq.max_cycle_ms) check_range("--max-cycle-ms", *rq.max_cycle_ms, 1.0, 600000.0, " ms", "A-SIZE-10");
   if (rq.setting) {
     const char* why = "manual 6.2, index 64..71";
     check_range("--speed-dps", rq.setting->speed_dps, 0.1, kMaxSpeed_dps, " deg/s", why);
@@ -74,75 +77,17 @@ SizingResult size(const SizingRequest& rq) {
   if (rq.setting) {
     result.evaluation = evaluate(rq, make_parameter_set(rq, *rq.setting, load_gcm2), rq.keep_trace);
     result.simulations = 1;
+    result.feasible = result.evaluation.feasible;
+    result.binding_limit = result.evaluation.binding_limit;
+    result.best_positioning_s = result.evaluation.positioning_s;
+    result.best_cycle_s = result.evaluation.cycle_s;
     return result;
   }
-  result.recommended = true;
-  const double v_top = voltage_speed_limit_dps(rq.voltage_V);
-  auto run = [&](double speed_scale, double accel_scale) {
-    const MotionSetting s{v_top * speed_scale, 100.0 * accel_scale, 100.0 * accel_scale};
-    Evaluation ev = evaluate(rq, make_parameter_set(rq, s, load_gcm2), false);
-    ++result.simulations;
-    result.tried.push_back(ev);
-    return ev;
-  };
-
-  // Stage 1: one scale for speed, acceleration and jerk.
-  std::optional<Evaluation> best;
-  double lo = 0, hi = 1; // lo feasible (once found), hi infeasible
-  double scale = 1;
-  for (; scale >= kMinScale; scale /= 2) {
-    Evaluation ev = run(scale, scale);
-    if (ev.feasible) {
-      best = std::move(ev);
-      lo = scale;
-      break;
-    }
-    hi = scale;
-  }
-  if (!best) {
-    result.evaluation = result.tried.back();
-    result.evaluation.reason = "no feasible set down to " + fmt::format("{:.1f}", 100 * kMinScale) +
-                               " % of speed and acceleration: " + result.evaluation.reason;
-    return result;
-  }
-  if (lo < 1) {
-    for (int i = 0; i < kBisectSteps; ++i) {
-      const double mid = 0.5 * (lo + hi);
-      Evaluation ev = run(mid, mid);
-      if (ev.feasible) { // a larger scale than the best so far
-        lo = mid;
-        best = std::move(ev);
-      } else {
-        hi = mid;
-      }
-    }
-    // Stages 2 and 3: raise acceleration/jerk, then speed, where that is not
-    // slower (a speed the move never reaches costs nothing: taken at once).
-    double accel_scale = lo, speed_scale = lo;
-    for (int which = 0; which < 2; ++which) {
-      double a = lo, b = 1.0; // a feasible, b to try
-      for (int i = 0; i < kRaiseSteps; ++i) {
-        const double mid = i == 0 ? b : 0.5 * (a + b);
-        const double sp = which == 0 ? speed_scale : mid;
-        const double ac = which == 0 ? mid : accel_scale;
-        Evaluation ev = run(sp, ac);
-        if (ev.feasible && ev.positioning_s <= best->positioning_s) {
-          best = std::move(ev);
-          a = mid;
-          if (i == 0) break; // the full value works
-        } else {
-          b = mid;
-        }
-      }
-      if (which == 0) accel_scale = a;
-      else speed_scale = a;
-    }
-  }
+  result = (rq.max_positioning_ms || rq.max_cycle_ms) ? search_gentlest(rq, load_gcm2) : search_fastest(rq, load_gcm2);
   if (rq.keep_trace) {
-    best = evaluate(rq, best->set, true); // deterministic: the same run again, with its trace
+    result.evaluation = evaluate(rq, result.evaluation.set, true); // deterministic: the same run again, with its trace
     ++result.simulations;
   }
-  result.evaluation = std::move(*best);
   return result;
 }
 

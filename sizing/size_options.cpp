@@ -9,6 +9,7 @@
 
 #include "io/output_path.hpp"
 #include "scenarios/load_file.hpp"
+#include "scenarios/scenario_parser.hpp"
 #include "sizing/output.hpp"
 #include "sizing/report.hpp"
 
@@ -31,6 +32,13 @@ const OptionSpec<S> kSizeOptions[] = {
     {"jerk-pct", "Evaluate this jerk, 0.1 .. 100 % [default: recommended]", &S::jerk_pct},
     {"parameter-set", "Parameter set 0 .. 7 (index 64 + n)", &S::parameter_set, false, true},
     {"cycles", "Back-and-forth cycles simulated, 1 .. 20", &S::cycles, false, true},
+    {"thermal-margin-K", "Required margin below the 70 degC warning, K", &S::thermal_margin_K, false, true},
+    {"max-positioning-ms", "Target: the gentlest set positioning within this time, ms", &S::max_positioning_ms},
+    {"max-cycle-ms", "Target: the gentlest set whose cycle fits this time, ms", &S::max_cycle_ms},
+    {"source-resistance-ohm", "Supply source resistance, ohm (0: ideal source)", &S::source_resistance_ohm, false, true},
+    {"bus-capacitance-F", "Capacitance on the motor supply, F (with a source resistance)", &S::bus_capacitance_F, false, true},
+    {"handshake-cycles", "IO-Link cycles per move for the PLC handshake (A-SIZE-16)", &S::handshake_cycles, false, true},
+    {"mounting-tilt-deg", "Axis tilt from vertical, 0 .. 180 deg (90 horizontal: gravity acts); default: the load file's mounting:, else 0", &S::mounting_tilt_deg},
     {"report", "Write an HTML sizing report into this folder", &S::report},
 };
 
@@ -41,9 +49,36 @@ std::span<const OptionSpec<SizeOptions>> size_option_table() { return kSizeOptio
 // The scenario parser reads the file, so keys, errors and MJCF paths behave
 // the same: keys a scenario needs are appended at the end, which keeps every
 // line number of the file.
-LoadSpec load_from_file(const std::string& path, std::string_view option) {
+LoadSpec load_from_file(const std::string& path, std::string_view option) { return read_load_file(path, option).load; }
+
+LoadFile read_load_file(const std::string& path, std::string_view option) {
   try {
-    return parse_load_file(path); // the YAML safety layer and limits of scenarios (issue 12)
+    (void)parse_load_file(path); // the YAML safety layer and limits of scenarios first (issue 12)
+  } catch (const ScenarioError& e) {
+    throw SizingInputError(fmt::format("{} {}", option, e.what()));
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SizingInputError(fmt::format("{} {}: cannot read the file", option, path));
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  std::string text = buffer.str();
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw SizingInputError(fmt::format("{}:{}:{}: {}", path, e.mark.line + 1, e.mark.column + 1, e.msg));
+  }
+  if (!root.IsMap() || !root["load"]) {
+    throw SizingInputError(
+        fmt::format("{}: expected a top-level 'load:' key (e.g. load: {{disk: {{mass_kg: 0.4, radius_m: 0.1}}}})", path));
+  }
+  if (!root["name"]) text += "\nname: load from " + std::filesystem::path(path).filename().string() + "\n";
+  if (!root["steps"]) text += "\nsteps:\n  - comment: sizing load\n"; // a scenario needs one step
+  try {
+    const Scenario sc = parse_scenario_text(text, path, std::filesystem::path(path).parent_path().string());
+    LoadFile f{sc.load, std::nullopt};
+    if (root["mounting"]) f.mounting_tilt_deg = sc.mounting_tilt_deg;
+    return f;
   } catch (const ScenarioError& e) {
     throw SizingInputError(fmt::format("{} {}", option, e.what()));
   }
@@ -54,7 +89,11 @@ SizingRequest make_request(const SizeOptions& a) {
   rq.angle_deg = a.angle_deg;
   if (a.load_gcm2 && !a.load.empty()) throw SizingInputError("--load-gcm2 and --load: give only one of them");
   if (a.load_gcm2) rq.load = InertiaLoad{*a.load_gcm2};
-  else if (!a.load.empty()) rq.load = load_from_file(a.load);
+  else if (!a.load.empty()) {
+    LoadFile f = read_load_file(a.load);
+    rq.load = std::move(f.load);
+    rq.mounting_tilt_deg = f.mounting_tilt_deg.value_or(0.0);
+  }
   else throw SizingInputError("size: give the load with --load-gcm2 J or --load LOAD.yaml");
   rq.voltage_V = a.voltage_V;
   rq.dwell_s = a.dwell_s;
@@ -64,6 +103,13 @@ SizingRequest make_request(const SizeOptions& a) {
   rq.ambient_C = a.ambient_C;
   rq.parameter_set = a.parameter_set;
   rq.cycles = a.cycles;
+  rq.thermal_margin_K = a.thermal_margin_K;
+  rq.max_positioning_ms = a.max_positioning_ms;
+  rq.max_cycle_ms = a.max_cycle_ms;
+  rq.source_resistance_ohm = a.source_resistance_ohm;
+  rq.bus_capacitance_F = a.bus_capacitance_F;
+  rq.handshake_cycles = a.handshake_cycles;
+  if (a.mounting_tilt_deg) rq.mounting_tilt_deg = *a.mounting_tilt_deg;
   if (a.speed_dps || a.accel_pct || a.jerk_pct) {
     // Options left out keep the factory value of sets 1..7 (manual 6.2).
     const MotionSetting factory;

@@ -25,6 +25,12 @@ struct SizeOptions {
   std::optional<double> speed_dps, accel_pct, jerk_pct;
   int parameter_set = 1;
   int cycles = 2;
+  double thermal_margin_K = 5.0;
+  std::optional<double> max_positioning_ms, max_cycle_ms;
+  double source_resistance_ohm = 0.0;
+  double bus_capacitance_F = 0.0;
+  int handshake_cycles = 4;
+  std::optional<double> mounting_tilt_deg;
   std::string report;        // HTML report folder ("" none)
 };
 
@@ -35,6 +41,14 @@ std::span<const OptionSpec<SizeOptions>> size_option_table();
 // (scenarios/README.md); a scenario file works too (only its load is used).
 // Throws SizingInputError naming `option` and the file.
 LoadSpec load_from_file(const std::string& path, std::string_view option = "--load");
+
+// The load and, when the file has a `mounting:` key (the scenario's
+// {axis: vertical|horizontal} | {tilt_deg: T}), the axis tilt from vertical.
+struct LoadFile {
+  LoadSpec load;
+  std::optional<double> mounting_tilt_deg;
+};
+LoadFile read_load_file(const std::string& path, std::string_view option = "--load");
 
 // Throws SizingInputError (no load given, both given, a bad load file).
 SizingRequest make_request(const SizeOptions& options);

@@ -44,6 +44,41 @@ struct SizingRequest {
   std::optional<MotionSetting> setting; // given: evaluate it; unset: recommend one
   int cycles = 2;                // back-and-forth cycles simulated (A-SIZE-3)
   bool keep_trace = false;       // keep the chosen evaluation's trace (reports)
+  // Required distance of the steady temperature below the 70 degC warning
+  // (manual 7.3 115.1), K (A-SIZE-5).
+  double thermal_margin_K = 5.0;
+  // Targets (issue 17): given one, the search looks for the gentlest set
+  // (lowest RMS torque) meeting it; an explicit set must meet it to be feasible.
+  std::optional<double> max_positioning_ms; // worst move's positioning time
+  std::optional<double> max_cycle_ms;       // cycle_s (2 positionings + 2 dwells)
+  // The 24 V source as the twin models it (SupplySpec): 0 ohm is ideal.
+  double source_resistance_ohm = 0.0;
+  double bus_capacitance_F = 0.0;
+  // IO-Link cycles per move the PLC handshake adds to the cycle (A-SIZE-16):
+  // Move reaches the device (1), Done comes back (1), the PLC reacts (1),
+  // Move stays low one cycle before the next command (manual 3.2 T7) (1).
+  int handshake_cycles = 4;
+  // Mounting (A-TWIN-24): axis tilt from vertical, 0 = vertical (gravity
+  // along the axis, no torque), 90 = horizontal (an eccentric load's weight
+  // loads the motor).
+  double mounting_tilt_deg = 0.0;
+};
+
+// What the motor supply sees (issue 17, A-SIZE-15), from the trace.
+struct SupplyFigures {
+  double peak_current_A = 0;  // drawn from the source (regeneration counts as 0 drawn)
+  double rms_current_A = 0;   // over the last simulated cycle
+  double regen_energy_J = 0;  // the largest energy fed back in one braking
+  double peak_bus_V = 0;      // highest bus voltage seen
+  double bus_max_V = 0;       // configured upper window, index 85.2
+  bool overvoltage_advice = false; // manual 7.2 114.4 cause 2: capacity or a chopper
+};
+
+// Utilisation as the pro tools show it (issue 17).
+struct Utilisation {
+  double peak_torque_pct = 0;  // max over samples of |torque| / capability at that speed and voltage
+  double rms_torque_pct = 0;   // RMS torque / continuous torque (A-SIZE-14)
+  double thermal_margin_K = 0; // 70 degC warning - steady temperature
 };
 
 // One ISDU write of the parameter set, raw wire value (manual 6.2).
@@ -86,7 +121,8 @@ struct Evaluation {
   bool completed = false;          // every move reached Done; else the times below are not meaningful
   double settling_s = 0;           // worst move
   double positioning_s = 0;        // worst move
-  double cycle_s = 0;              // 2 positionings + 2 dwells
+  double cycle_s = 0;              // 2 positionings + 2 handshakes + 2 dwells
+  double handshake_s = 0;          // per move (A-SIZE-16)
   double cycles_per_min = 0;
   double peak_torque_Nm = 0;       // max |motor torque| over all moves (trace samples)
   double rms_torque_Nm = 0;        // over the last simulated cycle
@@ -99,6 +135,13 @@ struct Evaluation {
   std::optional<double> time_to_warning_s; // to 70 degC (115.1) from ambient; none if never
   bool feasible = false;
   std::string reason;              // why not feasible ("" when feasible)
+  // The limit that failed (infeasible) or is closest to failing (feasible):
+  // switch_on, settling, torque_at_speed, tracking, temperature, voltage,
+  // max_positioning, max_cycle (A-SIZE-5).
+  std::string binding_limit;
+  Utilisation utilisation;
+  double continuous_torque_Nm = 0; // A-SIZE-14
+  SupplyFigures supply;
   std::vector<MoveResult> moves;
   std::vector<TraceRow> trace;     // with SizingRequest::keep_trace
   double sim_time_s = 0;
@@ -109,6 +152,14 @@ struct SizingResult {
   Evaluation evaluation;     // the given set, or the recommendation (or the last one tried)
   int simulations = 0;       // twin runs made
   std::vector<Evaluation> tried; // every evaluation of the search, in order (without traces)
+  // Search outcome (issue 17, A-SIZE-10): "fastest" without a target,
+  // "gentlest" with --max-positioning-ms / --max-cycle-ms; "" for a given set.
+  std::string objective;
+  bool feasible = false;           // the answer holds (the target is met with all margins)
+  std::string binding_limit;       // what stops a faster set ("module_limits": speed, acceleration and jerk at their maximum)
+  double best_positioning_s = -1;  // fastest reachable (with a target that cannot be met)
+  double best_cycle_s = -1;
+  int candidates = 0;              // grid points the planner looked at
 };
 
 // Limits (A-SIZE-1, A-SIZE-2; manual 6.2 ranges).
@@ -120,6 +171,7 @@ inline constexpr double kMaxDwell_s = 60.0;
 inline constexpr double kMaxSpeed_dps = 4300.0;
 inline constexpr double kTemperatureWarning_C = 70.0; // manual 7.3 115.1
 
+inline constexpr double kMaxThermalMargin_K = 45.0;
 // Margins for "feasible" (A-SIZE-5).
 inline constexpr double kTorqueMargin = 0.90;   // peak <= 90 % of capability
 inline constexpr double kTrackingMargin = 0.80; // max tracking error <= 80 % of index 87.1
@@ -140,7 +192,16 @@ ParameterSetValues make_parameter_set(const SizingRequest& request, const Motion
 // Runs the twin for one parameter set (no validation).
 Evaluation evaluate(const SizingRequest& request, const ParameterSetValues& set, bool keep_trace);
 
-// validate + evaluate the given set, or search the fastest feasible one.
+// validate + evaluate the given set, or search the fastest feasible one, or
+// (with a target) the gentlest one meeting it.
 SizingResult size(const SizingRequest& request);
+
+// The searches behind size() (search.cpp, A-SIZE-10); load from validate().
+SizingResult search_fastest(const SizingRequest& request, double load_gcm2);
+SizingResult search_gentlest(const SizingRequest& request, double load_gcm2);
+
+// Torque the module holds continuously at this ambient without reaching the
+// 70 degC warning minus the margin (A-SIZE-14), N m.
+double continuous_torque_Nm(double ambient_C, double thermal_margin_K);
 
 } // namespace sreh::sizing

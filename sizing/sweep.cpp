@@ -60,10 +60,23 @@ std::vector<SizingRequest> sweep_requests(const SweepRequest& rq) {
   return out;
 }
 
+std::pair<std::size_t, std::size_t> shard_range(std::size_t shard, std::size_t shards, std::size_t total) {
+  return {(shard - 1) * total / shards, shard * total / shards};
+}
+
 SweepResult run_sweep(const SweepRequest& rq) {
-  const std::vector<SizingRequest> requests = sweep_requests(rq);
-  for (const SizingRequest& r : requests) validate(r); // bad input before any long run
+  std::vector<SizingRequest> requests = sweep_requests(rq);
+  for (const SizingRequest& r : requests) validate(r); // bad input before any long run, in every shard
   SweepResult result;
+  result.shard = rq.shard;
+  result.shards = rq.shards;
+  result.total_points = requests.size();
+  if (rq.shards > 1) {
+    const auto [begin, end] = shard_range(rq.shard, rq.shards, requests.size());
+    result.first_point = begin;
+    requests = std::vector<SizingRequest>(requests.begin() + static_cast<std::ptrdiff_t>(begin),
+                                          requests.begin() + static_cast<std::ptrdiff_t>(end));
+  }
   result.points.resize(requests.size());
   std::vector<std::exception_ptr> errors(requests.size());
   std::atomic<std::size_t> next{0};

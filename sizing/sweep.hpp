@@ -8,6 +8,8 @@
 #include <functional>
 #include <iosfwd>
 #include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "sizing/sizing.hpp"
@@ -23,6 +25,9 @@ struct SweepRequest {
   double jerk_pct = 100.0;
   SizingRequest base;                 // dwell, tolerance, wait, ambient, cycles, parameter set
   int threads = 2;
+  // Shard `shard` of `shards` (1-based, issue 17): a contiguous block of the
+  // grid, [floor((i-1) M / N), floor(i M / N)) of M points (A-SIZE-11).
+  std::size_t shard = 1, shards = 1;
   // Called after each finished point (from worker threads, serialised).
   std::function<void(std::size_t done, std::size_t total)> progress;
 };
@@ -37,7 +42,25 @@ struct SweepPoint {
 
 struct SweepResult {
   std::vector<SweepPoint> points; // loads outermost, then angles, voltages, speeds
+  std::size_t shard = 1, shards = 1;
+  std::size_t first_point = 0, total_points = 0; // the block of the whole grid these points are
 };
+
+// The points of shard i of N among `total` (1-based i): [begin, end).
+std::pair<std::size_t, std::size_t> shard_range(std::size_t shard, std::size_t shards, std::size_t total);
+
+// "i/N", "auto" (Slurm array: i = SLURM_ARRAY_TASK_ID - SLURM_ARRAY_TASK_MIN + 1,
+// N = SLURM_ARRAY_TASK_COUNT) or "auto/N" (Kubernetes indexed Job:
+// i = JOB_COMPLETION_INDEX + 1). `env` looks a variable up (nullptr: unset).
+// Throws SizingInputError naming --shard.
+std::pair<std::size_t, std::size_t> parse_shard(const std::string& text, const char* (*env)(const char*));
+
+// First line of a shard's CSV, before the header (only when sharded).
+std::string shard_marker(const SweepResult& result);
+
+// Joins shard CSVs (any order) into the unsharded CSV, byte for byte;
+// throws SizingInputError for a missing, repeated or foreign part.
+void merge_sweep_csv(std::ostream& out, const std::vector<std::string>& part_paths);
 
 // The grid's requests in result order; throws SizingInputError for an
 // empty axis or a value outside the module's limits (naming it).

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <tuple>
 #include <thread>
 
 #include <fmt/format.h>
@@ -30,6 +32,7 @@ const OptionSpec<W> kSweepOptions[] = {
     {"threads", "Worker threads 1 .. 64 [default: one per core]", &W::threads},
     {"csv", "Write the results to this CSV file (one row per grid point)", &W::csv},
     {"report", "Write an HTML report with plots into this folder", &W::report},
+    {"shard", "Run only shard i of N: i/N, auto (Slurm array), auto/N (Kubernetes indexed Job)", &W::shard},
     {"targets-s", "Target positioning times in s for the heaviest-load plot, comma separated [default: 8 spanning the feasible times]", &W::targets_s},
 };
 
@@ -71,6 +74,10 @@ SweepRequest make_sweep_request(const SweepOptions& a) {
   rq.base.timeout_ms = a.timeout_ms;
   rq.base.ambient_C = a.ambient_C;
   rq.base.cycles = a.cycles;
+  if (!a.shard.empty()) {
+    if (!a.report.empty()) throw SizingInputError("--shard with --report: merge the parts, then report the whole sweep");
+    std::tie(rq.shard, rq.shards) = parse_shard(a.shard, [](const char* name) -> const char* { return std::getenv(name); });
+  }
   rq.threads = a.threads > 0 ? a.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   return rq;
 }
@@ -84,8 +91,13 @@ SweepResult run_sweep_command(const SweepOptions& a, const SweepRequest& rq) {
   }
   SweepResult result = run_sweep(rq);
   try {
-    if (!a.csv.empty()) io::write_file_atomic(a.csv, [&](std::ostream& out) { write_sweep_csv(out, result); });
-    if (!a.report.empty()) {
+    if (!a.csv.empty()) {
+      io::write_file_atomic(a.csv, [&](std::ostream& out) {
+        if (rq.shards > 1) out << shard_marker(result); // for `sweep merge`
+        write_sweep_csv(out, result);
+      });
+    }
+    if (!a.report.empty() && rq.shards == 1) {
       const std::vector<double> targets = a.targets_s.empty() ? default_targets_s(result) : a.targets_s;
       write_sweep_report(a.report, rq, result, targets);
     }

@@ -22,6 +22,7 @@ struct SweepOptions {
   int cycles = 2;
   int threads = 0; // 0: one per core
   std::string csv, report;
+  std::string shard; // "i/N", "auto", "auto/N"; "" runs the whole grid
 };
 
 // Every option of `sweep`; list options take comma-separated values on the CLI.

@@ -1,6 +1,7 @@
 #include "sizing/thermal_estimate.hpp"
 
 #include "sizing/sizing.hpp"
+#include "device_logic/motor_model.hpp"
 #include "twin/thermal.hpp"
 
 namespace sreh::sizing {
@@ -23,6 +24,27 @@ ThermalEstimate estimate_thermal(double mean_loss_W, double ambient_C) {
     }
   }
   return e;
+}
+
+} // namespace sreh::sizing
+
+namespace sreh::sizing {
+
+// A-SIZE-14: the continuous torque is the standstill torque whose copper
+// loss holds the module's steady temperature at the 70 degC warning minus
+// the required margin, at this ambient (the twin's own thermal model): what
+// the pro tools call the rated/continuous torque, derated for ambient.
+double continuous_torque_Nm(double ambient_C, double thermal_margin_K) {
+  const MotorModel motor;
+  const Thermal thermal(ThermalSpec{ambient_C, 1.0});
+  const double limit_C = kTemperatureWarning_C - thermal_margin_K;
+  if (thermal.steady_winding_C(0.0) >= limit_C) return 0.0;
+  double lo = 0.0, hi = 10.0 * motor.peak_torque_Nm();
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (thermal.steady_winding_C(motor.copper_loss_W(mid)) < limit_C ? lo : hi) = mid;
+  }
+  return lo;
 }
 
 } // namespace sreh::sizing

@@ -28,7 +28,7 @@ int size_command(const SizeArgs& a) {
   }
   if (a.json) std::cout << out.json.dump(2) << "\n";
   else std::cout << sizing::summary_text(out.request, out.result);
-  return out.result.evaluation.feasible ? 0 : 1;
+  return out.result.feasible ? 0 : 1;
 }
 
 } // namespace

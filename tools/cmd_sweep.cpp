@@ -7,6 +7,12 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <string>
+#include <vector>
+
+#include "io/atomic_file.hpp"
+#include "io/output_path.hpp"
+#include "sizing/sweep.hpp"
 
 #include <fmt/format.h>
 
@@ -39,6 +45,19 @@ int sweep_command(const sizing::SweepOptions& a) {
   return 0;
 }
 
+int merge_command(const std::string& csv, const std::vector<std::string>& parts) {
+  try {
+    io::check_outputs({{"--csv", csv, io::OutputKind::File}}, parts); // the one output rule (issue 12)
+    io::write_file_atomic(csv, [&](std::ostream& out) { sizing::merge_sweep_csv(out, parts); });
+  } catch (const sizing::SizingInputError& e) {
+    throw InputError(e.what());
+  } catch (const io::PathError& e) {
+    throw InputError(e.what());
+  }
+  std::cout << fmt::format("{} parts merged: {}\n", parts.size(), csv);
+  return 0;
+}
+
 } // namespace
 
 SREH_REGISTER_COMMAND(31, [](CLI::App& app, int& exit_code) {
@@ -46,9 +65,24 @@ SREH_REGISTER_COMMAND(31, [](CLI::App& app, int& exit_code) {
   CLI::App* cmd = app.add_subcommand(
       "sweep", "Sizing over a grid of loads x angles x voltages (x speeds): CSV and plots (exit 0 ran, 2 bad input)");
   add_table_options(cmd, sizing::sweep_option_table(), *a);
-  cmd->get_option("--csv")->required(); // the CLI's output (Python returns the columns)
   cmd->get_option("--threads")->check(CLI::Range(1, 64));
-  cmd->callback([a, &exit_code] { exit_code = sweep_command(*a); });
+  // `sweep merge --csv OUT PART...` (issue 17): the grid options are then
+  // not needed, so they are checked in the callback rather than by CLI11.
+  cmd->get_option("--loads-gcm2")->required(false);
+  cmd->get_option("--angles-deg")->required(false);
+  auto parts = std::make_shared<std::vector<std::string>>();
+  auto merged = std::make_shared<std::string>();
+  CLI::App* merge = cmd->add_subcommand("merge", "Join the CSVs of `sweep --shard i/N` into the unsharded CSV (byte-identical)");
+  merge->add_option("--csv", *merged, "Write the merged CSV here")->required();
+  merge->add_option("parts", *parts, "The part CSVs, any order")->required();
+  merge->callback([parts, merged, &exit_code] { exit_code = merge_command(*merged, *parts); });
+  cmd->callback([a, merge, &exit_code] {
+    if (merge->parsed()) return;
+    if (a->csv.empty()) throw CLI::RequiredError("--csv"); // the CLI's output (Python returns the columns)
+    if (a->loads_gcm2.empty()) throw CLI::RequiredError("--loads-gcm2");
+    if (a->angles_deg.empty()) throw CLI::RequiredError("--angles-deg");
+    exit_code = sweep_command(*a);
+  });
 });
 
 } // namespace sreh::tools

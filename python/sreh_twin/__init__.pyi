@@ -128,10 +128,14 @@ def size(*, angle_deg: float, load_gcm2: float | None = ..., load: _Path | None 
          dwell_s: float = ..., tolerance_deg: float = ..., wait_ms: float = ..., timeout_ms: float | None = ...,
          ambient_C: float = ..., speed_dps: float | None = ..., accel_pct: float | None = ...,
          jerk_pct: float | None = ..., parameter_set: int = ..., cycles: int = ...,
+         thermal_margin_K: float = ..., max_positioning_ms: float | None = ...,
+         max_cycle_ms: float | None = ..., source_resistance_ohm: float = ...,
+         bus_capacitance_F: float = ..., handshake_cycles: int = ...,
+         mounting_tilt_deg: float | None = ...,
          report: _Path | None = ...) -> dict[str, Any]: ...
 _Floats = float | Sequence[float] | npt.NDArray[np.floating[Any]]
 def sweep(*, loads_gcm2: _Floats, angles_deg: _Floats, voltages_V: _Floats = ..., speeds_dps: _Floats = ...,
           accel_pct: float = ..., jerk_pct: float = ..., dwell_s: float = ..., tolerance_deg: float = ...,
           wait_ms: float = ..., timeout_ms: float | None = ..., ambient_C: float = ..., cycles: int = ...,
           threads: int = ..., csv: _Path | None = ..., report: _Path | None = ...,
-          targets_s: _Floats = ...) -> dict[str, npt.NDArray[Any]]: ...
+          shard: str | None = ..., targets_s: _Floats = ...) -> dict[str, npt.NDArray[Any]]: ...
