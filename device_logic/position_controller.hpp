@@ -72,7 +72,7 @@ class PositionController {
   double sp_vel_ = 0;      // setpoint velocity through the same difference and filter
   double integral_ = 0;
   static constexpr int kMaxDelaySteps = 4;
-  std::array<double, kMaxDelaySteps> pending_{}; // outputs computed in the last periods (computation delay)
+  std::array<double, kMaxDelaySteps> pending_{}; // outputs of the last periods (loop delay, A-CTRL-7)
   int pending_head_ = 0;
   bool primed_ = false;
   bool saturated_ = false;
