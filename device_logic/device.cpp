@@ -6,6 +6,8 @@
 #include <cmath>
 
 #include "device_logic/device_impl.hpp"
+
+#include <utility>
 #include "device_logic/position_frame.hpp"
 
 namespace sreh {
@@ -25,8 +27,11 @@ void Device::Impl::init_origin() { origin = initial_origin(encoder, dir(), store
 void Device::Impl::power_on(const SensorReadings& s) {
   const ParameterStore keep = std::move(store);
   const bool failed = firmware_failed;
+  MoveRecorder records = std::move(move_recorder); // records not yet handed out survive
   *this = Impl(keep);
   firmware_failed = failed;
+  move_recorder = std::move(records);
+  move_recorder.restart_numbering();
   powered = true;
   encoder = s.encoder_counts;
   prev_encoder = encoder;
@@ -190,6 +195,11 @@ void Device::Impl::enter(State to, Event via) {
       faults.warning_cause[static_cast<int>(WarningBit::Positioning)] = 0; // manual 3.5.7: next move clears
       store.set_raw_internal(96, 0, store.raw(96, 0) + 1); // manual 6.3 (DE): number of moves
       ++moves_started;
+      move_recorder.start({time_ns, latched.parameter_set, user_deg(start_phys), user_deg(target_phys),
+                           set.tolerance_deg, set.wait_ms, set.settling_timeout_ms, set.timeout_enabled});
+      if (profile.duration_s() <= 0) { // a zero-length move is at (b) at once: travel 0
+        move_recorder.step(time_ns, 0.0, internal_counts_to_deg(user_now()), false);
+      }
       break;
     }
     case Event::MoveStartStopped: // T3 with Stop: Done without moving
@@ -198,6 +208,7 @@ void Device::Impl::enter(State to, Event via) {
       break;
     case Event::StopMove: // T4
       start_stop_profile();
+      move_recorder.mark_stopped();
       break;
     case Event::MotionComplete: // T5
       last_target_phys = target_phys;
@@ -223,6 +234,7 @@ void Device::Impl::enter(State to, Event via) {
 
 MotorCommand Device::Impl::control(double dt_s) {
   const double measured = counts_to_rad(encoder);
+  step_tracking_error_deg = 0;
   if (!motor_on()) { // no setpoint: the flange turns freely (manual 3.1 Motor Off)
     setpoint = KinematicState{measured, 0, 0, 0};
     torque_Nm = 0;
@@ -252,6 +264,7 @@ MotorCommand Device::Impl::control(double dt_s) {
   }
 
   const double error_rad = setpoint.pos - measured;
+  step_tracking_error_deg = std::abs(rad_to_deg(error_rad)); // before any trip below, so the trip is in the records
   // Tracking error (manual 6.2 index 87, 7.2 114.5): against the planned setpoint.
   if (store.raw(87, 2) == 1 && std::abs(rad_to_deg(error_rad)) > tracking_limit_deg()) {
     raise_error(ErrorBit::TrackingError, cause::kTrackingError);
@@ -283,6 +296,39 @@ MotorCommand Device::Impl::control(double dt_s) {
   torque_Nm = controller.update(setpoint, measured, inertia_kgm2, lim_pos, lim_neg, dt_s);
   torque_limit_Nm = torque_Nm >= 0 ? lim_pos : lim_neg;
   return MotorCommand{torque_Nm, true};
+}
+
+double Device::Impl::user_deg(int64_t phys_counts) const {
+  return internal_counts_to_deg(user_position(phys_counts, dir(), origin));
+}
+
+double Device::Impl::setpoint_user_deg() const {
+  return motor_on() ? rad_to_deg(dir() * setpoint.pos) - internal_counts_to_deg(origin)
+                    : internal_counts_to_deg(user_now());
+}
+
+// Move records (issue 13, manual 3.5.2 Fig. 3): every control step, on the
+// encoder reading, with the set latched at T3. Done ends a record at (f);
+// any other way out of Busy (an error, the motor off) ends it without a
+// settling time. A completed move stays held while its target is.
+void Device::Impl::record_move_step() {
+  const double position = internal_counts_to_deg(user_now());
+  // The one tracking error (issue 16): setpoint minus encoder, every control step.
+  peak_tracking_error_deg = std::max(peak_tracking_error_deg, step_tracking_error_deg);
+  if (!move_recorder.open() && !move_recorder.holding()) return;
+  if (move_recorder.open()) {
+    move_recorder.step(time_ns, step_tracking_error_deg, position, state == State::Busy && phase == MotionPhase::Travel);
+    if (state == State::Done) {
+      move_recorder.finish(time_ns, MoveOutcome::Done, position);
+    } else if (state != State::Busy) {
+      move_recorder.finish(time_ns, faults.any_error() ? MoveOutcome::Error : MoveOutcome::MotorOff, position,
+                           faults.error_byte());
+    }
+  } else if (state == State::Done || state == State::Ready || state == State::Busy) {
+    move_recorder.step(time_ns, step_tracking_error_deg, position, false);
+  } else {
+    move_recorder.release();
+  }
 }
 
 ProcessDataIn Device::Impl::pd_in() const {
@@ -371,7 +417,9 @@ MotorCommand Device::tick(double dt_s, const SensorReadings& sensors) {
   d.run_diagnostics(dt_ns);
   if (d.boot_mode) return {};
   d.run_monitors(dt_ns);
-  return d.control(dt_s);
+  const MotorCommand cmd = d.control(dt_s);
+  d.record_move_step();
+  return cmd;
 }
 
 IsduResult Device::isdu_read(uint16_t index, uint8_t subindex) { return impl_->read(index, subindex); }
@@ -380,9 +428,19 @@ IsduResult Device::isdu_write(uint16_t index, uint8_t subindex, std::span<const 
 }
 
 void Device::power_off() {
-  impl_->store.abort_block();
-  impl_->powered = false;
+  Impl& d = *impl_;
+  d.store.abort_block();
+  if (d.powered) { // a move in progress ends with the supply; a held one is handed out
+    d.move_recorder.finish(d.time_ns, MoveOutcome::MotorOff, internal_counts_to_deg(d.user_now()));
+    d.move_recorder.release();
+  }
+  d.powered = false;
 }
+
+double Device::take_peak_tracking_error_deg() { return std::exchange(impl_->peak_tracking_error_deg, 0.0); }
+
+std::vector<MoveRecord> Device::take_finished_moves() { return impl_->move_recorder.take_finished(); }
+std::optional<MoveRecord> Device::pending_move() const { return impl_->move_recorder.pending(); }
 void Device::power_on(const SensorReadings& sensors) { impl_->power_on(sensors); }
 bool Device::powered() const { return impl_->powered; }
 bool Device::in_boot_mode() const { return impl_->boot_mode; }
@@ -427,12 +485,9 @@ Telemetry Device::telemetry() const {
   const Impl& d = *impl_;
   Telemetry t;
   const int dir = d.dir();
-  auto user_deg = [&](double phys_rad) {
-    return rad_to_deg(dir * phys_rad) - internal_counts_to_deg(d.origin);
-  };
   t.state = d.state;
   t.position_deg = internal_counts_to_deg(d.user_now());
-  t.setpoint_deg = d.motor_on() ? user_deg(d.setpoint.pos) : t.position_deg;
+  t.setpoint_deg = d.setpoint_user_deg();
   t.tracking_error_deg = t.setpoint_deg - t.position_deg;
   t.velocity_dps = rad_to_deg(dir * d.velocity_rad_s);
   t.torque_Nm = d.motor_on() ? d.torque_Nm : 0.0;

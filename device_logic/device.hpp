@@ -14,6 +14,7 @@
 
 #include "device_logic/device_types.hpp"
 #include "device_logic/isdu.hpp"
+#include "device_logic/move_record.hpp"
 #include "device_logic/process_data.hpp"
 
 namespace sreh {
@@ -62,6 +63,16 @@ class Device {
   bool powered() const;
 
   std::vector<uint8_t> save_nvm() const;     // memory image, for a file
+
+  // Move records (issue 13): one per accepted Move (T3), built by the device
+  // on its own clock (start_ns: ns since its power-on). A record is handed out
+  // once its move ended and the target is no longer held (next move, error,
+  // motor off, power off); pending_move() is the open or held one.
+  std::vector<MoveRecord> take_finished_moves();
+  std::optional<MoveRecord> pending_move() const;
+  // The largest |setpoint - encoder| of any control step with the motor on
+  // since the last call (the one definition of the tracking error, issue 16).
+  double take_peak_tracking_error_deg();
   Telemetry telemetry() const;
   LedColor led() const;                      // LED band now (blinking resolved)
   IoLinkLedMode io_link_led() const;

@@ -8,6 +8,7 @@
 #include "device_logic/device.hpp"
 #include "device_logic/faults.hpp"
 #include "device_logic/motor_model.hpp"
+#include "device_logic/move_record.hpp"
 #include "device_logic/parameter_store.hpp"
 #include "device_logic/planner.hpp"
 #include "device_logic/position_controller.hpp"
@@ -106,6 +107,11 @@ struct Device::Impl {
   // diagnostics (manual 6.3): sub-minute remainders
   int64_t powered_rem_ns = 0, motor_on_rem_ns = 0, moving_rem_ns = 0, temp_warn_rem_ns = 0;
 
+  // move records (issue 13): built here, where the set was latched
+  MoveRecorder move_recorder;
+  double peak_tracking_error_deg = 0; // max |setpoint - encoder| since the last take (motor on)
+  double step_tracking_error_deg = 0; // |setpoint - encoder| of this control step (0 with the motor off)
+
   // locator (manual 6.6, 126/127)
   bool locator = false;
   int64_t locator_start_ns = 0;
@@ -130,6 +136,9 @@ struct Device::Impl {
   void run_diagnostics(int64_t dt_ns);
   MotorCommand control(double dt_s);
   ProcessDataIn pd_in() const;
+  double user_deg(int64_t phys_counts) const;     // process-data degrees of a physical position
+  double setpoint_user_deg() const;               // the setpoint now, process-data degrees
+  void record_move_step();                        // the move recorder's control step
   LedColor led() const;
   double tracking_limit_deg() const;
 

@@ -14,6 +14,7 @@
 #include "device_logic/parameter_table.hpp"
 #include "device_logic/units.hpp"
 #include "python/bindings.hpp"
+#include "scenarios/result_json.hpp"
 #include "scenarios/atomic_file.hpp"
 #include "scenarios/isdu_value.hpp"
 #include "scenarios/scenario.hpp"
@@ -304,21 +305,10 @@ class PyTwin {
     return out.str();
   }
 
+  // The device's move records, exactly as `run --json` shows them (issue 13).
   pyb::list moves() const {
     pyb::list out;
-    for (const MoveRecord& m : twin_->moves()) {
-      pyb::dict d;
-      d["start_s"] = m.start_s;
-      d["target_deg"] = m.target_deg;
-      d["travel_s"] = m.travel_s;
-      d["settling_s"] = m.completed ? pyb::object(pyb::float_(m.settling_s)) : pyb::none();
-      d["positioning_s"] = m.completed ? pyb::object(pyb::float_(m.positioning_s)) : pyb::none();
-      d["max_tracking_error_deg"] = m.max_tracking_error_deg;
-      d["overshoot_deg"] = m.overshoot_deg;
-      d["in_window_s"] = m.in_window_s >= 0 ? pyb::object(pyb::float_(m.in_window_s)) : pyb::none();
-      d["completed"] = m.completed;
-      out.append(d);
-    }
+    for (const MoveRecord& m : twin_->moves()) out.append(to_python(move_json(m)));
     return out;
   }
 

@@ -116,8 +116,8 @@ std::string settling_plot(const ReportInput& in, const Columns& c, std::size_t i
   const double b = mv.start_s + mv.travel_s;
   const double t_end = c.t.empty() ? b : c.t.back();
   double x_lo = 0, x_hi = 0;
-  if (mv.completed && mv.positioning_s >= 0) {
-    const double f = mv.start_s + mv.positioning_s;
+  if (mv.positioning_s) {
+    const double f = mv.start_s + *mv.positioning_s;
     const double span = std::max(f - b, 0.01);
     x_lo = b - 0.3 * span;
     x_hi = f + 0.3 * span;
@@ -134,23 +134,25 @@ std::string settling_plot(const ReportInput& in, const Columns& c, std::size_t i
     dev_setpoint[k] = c.setpoint[k] - mv.target_deg;
     if (c.t[k] >= b && c.t[k] <= x_hi) max_dev = std::max(max_dev, std::abs(dev_actual[k]));
   }
-  const double y_half = 1.15 * std::max({4.0 * in.tolerance_deg, max_dev, 1e-3});
+  const double y_half = 1.15 * std::max({4.0 * mv.tolerance_deg, max_dev, 1e-3});
 
   svg::Plot p;
   p.id = fmt::format("p-settle-{}", i + 1);
-  p.title = fmt::format("Move {} to {:.3f} deg: settling (manual 3.5.2 Fig. 3)", i + 1, mv.target_deg);
+  p.title = fmt::format("Move {} to {:.3f} deg (set {}): settling (manual 3.5.2 Fig. 3)", i + 1, mv.target_deg,
+                        mv.parameter_set);
   p.x = {"time", "s", x_lo, x_hi};
   p.y = {"deviation from target", "deg", -y_half, y_half};
   p.series = {{"setpoint - target (A)", c.t, dev_setpoint, kSetpointColor, 1.5, false},
               {"actual - target (B)", c.t, dev_actual, kActualColor, 1.4, false}};
-  if (in.tolerance_deg > 0) {
-    p.bands.push_back({{}, {}, -in.tolerance_deg, in.tolerance_deg, "tolerance window (5)", "#2ca02c", 0.14});
+  if (mv.tolerance_deg > 0) {
+    p.bands.push_back({{}, {}, -mv.tolerance_deg, mv.tolerance_deg,
+                       fmt::format("tolerance window (5) +-{:g} deg", mv.tolerance_deg), "#2ca02c", 0.14});
   }
   p.vlines.push_back({b, "(b) trajectory end", "#555555"});
-  if (mv.completed && mv.positioning_s >= 0) {
-    const double f = mv.start_s + mv.positioning_s;
-    if (i < in.wait_ms.size() && in.wait_ms[i] > 0) {
-      p.bands.push_back({f - in.wait_ms[i] * 1e-3, f, {}, {}, fmt::format("waiting time (3) {:g} ms", in.wait_ms[i]), "#1f77b4", 0.12});
+  if (mv.positioning_s) {
+    const double f = mv.start_s + *mv.positioning_s;
+    if (mv.wait_ms > 0) {
+      p.bands.push_back({f - mv.wait_ms * 1e-3, f, {}, {}, fmt::format("waiting time (3) {:g} ms", mv.wait_ms), "#1f77b4", 0.12});
     }
     p.vlines.push_back({f, "(f) complete", "#1565c0"});
   } else {
@@ -191,8 +193,8 @@ std::string report_html(const ReportInput& in) {
     for (std::size_t i = 0; i < in.moves.size(); ++i) {
       const MoveRecord& m = in.moves[i];
       o += fmt::format("<tr><td>{}</td><td>{:.3f}</td><td>{:.3f}</td><td>{}</td><td>{}</td><td>{}</td><td>{:.4f}</td><td class=\"{}\">{}</td></tr>\n", i + 1,
-                       m.start_s, m.target_deg, ms(m.travel_s), ms(m.settling_s), ms(m.positioning_s), m.max_tracking_error_deg,
-                       m.completed ? "ok" : "bad", m.completed ? "yes" : "no");
+                       m.start_s, m.target_deg, ms(m.travel_s), ms(m.settling_s.value_or(-1)), ms(m.positioning_s.value_or(-1)),
+                       m.max_tracking_error_deg, m.completed() ? "ok" : "bad", m.completed() ? "yes" : "no");
     }
     o += "</table>\n";
   }

@@ -21,10 +21,8 @@ struct ReportInput {
   bool passed = false;
   std::vector<ReportCheck> checks;
   std::vector<TraceRow> trace;
-  std::vector<MoveRecord> moves;
+  std::vector<MoveRecord> moves;   // the device's records: each with its own set's tolerance and waiting time
   double tracking_limit_deg = 0; // index 87 limit drawn on the tracking-error plot; 0: none
-  double tolerance_deg = 0;      // position tolerance (5), the window half width; 0: none
-  std::vector<double> wait_ms;   // waiting time (3) per move; missing entries: not drawn
   std::string video_file;        // relative to the report directory; empty: no video
 };
 

@@ -10,20 +10,38 @@ nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : 
 // Simulated times are whole cycles; rounding hides float noise (0.10400000000000001).
 nlohmann::json time_s(double v) { return number(std::round(v * 1e9) / 1e9); }
 
+nlohmann::json optional_time(const std::optional<double>& v) { return v ? number(*v) : nlohmann::json(nullptr); }
+
 } // namespace
+
+// The device's move record as `run --json` shows it (interfaces.md `moves[]`).
+nlohmann::json move_json(const MoveRecord& m) {
+  return {{"number", m.number},
+          {"parameter_set", m.parameter_set},
+          {"start_s", number(m.start_s)},
+          {"start_deg", number(m.start_deg)},
+          {"target_deg", number(m.target_deg)},
+          {"end_deg", number(m.end_deg)},
+          {"tolerance_deg", number(m.tolerance_deg)},
+          {"wait_ms", number(m.wait_ms)},
+          {"settling_timeout_ms", number(m.settling_timeout_ms)},
+          {"settling_timeout_active", m.settling_timeout_active},
+          {"travel_s", number(m.travel_s)},
+          {"settling_s", optional_time(m.settling_s)},
+          {"positioning_s", optional_time(m.positioning_s)},
+          {"in_window_s", optional_time(m.in_window_s)},
+          {"max_tracking_error_deg", number(m.max_tracking_error_deg)},
+          {"overshoot_deg", number(m.overshoot_deg)},
+          {"stopped", m.stopped},
+          {"outcome", outcome_name(m.outcome)},
+          {"error_code", m.error_code},
+          {"completed", m.completed()}};
+}
 
 nlohmann::json to_json(const RunResult& r) {
   nlohmann::json moves = nlohmann::json::array();
   for (const MoveRecord& m : r.moves) {
-    moves.push_back({{"start_s", number(m.start_s)},
-                     {"target_deg", number(m.target_deg)},
-                     {"travel_s", number(m.travel_s)},
-                     {"settling_s", m.completed ? number(m.settling_s) : nlohmann::json(nullptr)},
-                     {"positioning_s", m.completed ? number(m.positioning_s) : nlohmann::json(nullptr)},
-                     {"max_tracking_error_deg", number(m.max_tracking_error_deg)},
-                     {"overshoot_deg", number(m.overshoot_deg)},
-                     {"in_window_s", m.in_window_s >= 0 ? number(m.in_window_s) : nlohmann::json(nullptr)},
-                     {"completed", m.completed}});
+    moves.push_back(move_json(m));
   }
   nlohmann::json checks = nlohmann::json::array();
   for (const CheckRecord& c : r.checks) {

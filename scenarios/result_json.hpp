@@ -8,5 +8,7 @@
 namespace sreh {
 
 nlohmann::json to_json(const RunResult& result);
+// One move record as in `moves[]` (also used by the Python API and serve).
+nlohmann::json move_json(const MoveRecord& move);
 
 } // namespace sreh

@@ -1,5 +1,7 @@
 #include "scenarios/runner.hpp"
 
+#include "device_logic/parameter_ids.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -74,7 +76,6 @@ class ScenarioRun {
   void cycle() {
     twin_->run_cycle();
     const Telemetry t = twin_->telemetry();
-    r_.max_tracking_error_deg = std::max(r_.max_tracking_error_deg, std::abs(t.tracking_error_deg));
     r_.max_temperature_C = std::max(r_.max_temperature_C, t.temperature_C);
     r_.min_supply_V = std::min(r_.min_supply_V, t.supply_V);
     r_.max_supply_V = std::max(r_.max_supply_V, t.supply_V);
@@ -332,19 +333,19 @@ class ScenarioRun {
       double v = 0;
       switch (c.metric) {
         case RunMetric::MaxTrackingErrorDeg:
-          v = std::max(r_.max_tracking_error_deg, max_of([](const MoveRecord& m) { return m.max_tracking_error_deg; }));
+          v = twin_->max_tracking_error_deg(); // every control step of the run (issue 16: one maximum)
           break;
         case RunMetric::Moves: v = static_cast<double>(moves.size()); break;
         case RunMetric::MovesCompleted:
-          v = static_cast<double>(std::count_if(moves.begin(), moves.end(), [](const MoveRecord& m) { return m.completed; }));
+          v = static_cast<double>(std::count_if(moves.begin(), moves.end(), [](const MoveRecord& m) { return m.completed(); }));
           break;
         case RunMetric::MaxTravelS: v = max_of([](const MoveRecord& m) { return m.travel_s; }); break;
         case RunMetric::MaxSettlingS:
           // A move that never completed never settled.
-          v = max_of([](const MoveRecord& m) { return m.completed ? m.settling_s : kInf; });
+          v = max_of([](const MoveRecord& m) { return m.settling_s.value_or(kInf); });
           break;
         case RunMetric::MaxPositioningS:
-          v = max_of([](const MoveRecord& m) { return m.completed ? m.positioning_s : kInf; });
+          v = max_of([](const MoveRecord& m) { return m.positioning_s.value_or(kInf); });
           break;
         case RunMetric::MaxTemperatureC: v = r_.max_temperature_C; break;
         case RunMetric::MinSupplyV: v = r_.min_supply_V; break;
@@ -364,19 +365,19 @@ class ScenarioRun {
     const Snapshot s = take_snapshot(*twin_);
     r_.final_state = FinalState{s.state, s.position_deg, s.in.error_code, s.in.warning_code, s.telemetry.led};
     r_.moves = twin_->moves();
+    r_.max_tracking_error_deg = twin_->max_tracking_error_deg();
     r_.sim_time_s = twin_->time_s();
     r_.cycles = twin_->cycles();
     if (o_.record_trace) r_.trace = twin_->trace();
     r_.nvm_image = twin_->save_nvm();
-    auto raw = [&](uint16_t index, uint8_t sub) -> double {
-      const IsduResult res = twin_->isdu_read(index, sub);
-      uint64_t v = 0;
-      for (uint8_t b : res.data) v = (v << 8) | b;
-      return res.ok() ? static_cast<double>(v) : 0.0;
+    // The run's tracking limit (index 87, one for all sets); each move's own
+    // tolerance and waiting time are in its record.
+    auto display = [&](ParamId id) -> double {
+      const IsduResult res = twin_->isdu_read(id.index, id.subindex);
+      if (!res.ok() || res.data.size() != wire_size(parameter_row(id).type)) return 0.0;
+      return raw_to_display(id, decode_number(parameter_row(id).type, res.data));
     };
-    r_.tracking_limit_deg = raw(87, 2) != 0 ? raw(87, 1) * 0.1 : 0.0; // 87.1 raw 0.1 deg (A-PARAM-1)
-    r_.tolerance_deg = raw(65, 5) * 360.0 / 524288.0;                 // 2^-19 rev
-    r_.wait_ms = raw(65, 6) * 0.1;
+    r_.tracking_limit_deg = display(param::kTrackingErrorActive) != 0 ? display(param::kTrackingErrorMax) : 0.0;
   }
 
   const Scenario& s_;

@@ -41,17 +41,15 @@ struct RunResult {
   FinalState final_state;
   double sim_time_s = 0;
   uint64_t cycles = 0;
-  double max_tracking_error_deg = 0;
+  double max_tracking_error_deg = 0;  // every control step (Twin::max_tracking_error_deg)
   double max_temperature_C = 0;
   double min_supply_V = 0;
   double max_supply_V = 0;
   std::vector<TraceRow> trace;        // with RunOptions::record_trace
   std::vector<uint8_t> nvm_image;     // non-volatile memory at the end (--save-nvm)
-  // Settings at the end of the run, for plots: the index-87 tracking limit (0
-  // when monitoring is off) and the tolerance / waiting time of parameter set 1.
+  // The index-87 tracking limit at the end of the run, for plots (0 when
+  // monitoring is off). Each move's tolerance and waiting time are in its record.
   double tracking_limit_deg = 0;
-  double tolerance_deg = 0;
-  double wait_ms = 0;
 };
 
 struct RunOptions {

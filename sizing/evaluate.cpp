@@ -145,14 +145,14 @@ Evaluation evaluate(const SizingRequest& rq, const ParameterSetValues& set, bool
       const MoveRecord& rec = twin.moves().back();
       mr.max_tracking_error_deg = rec.max_tracking_error_deg;
       mr.overshoot_deg = rec.overshoot_deg;
-      mr.in_window_s = rec.in_window_s;
+      mr.in_window_s = rec.in_window_s.value_or(-1);
       mr.simulated_travel_s = rec.travel_s;
-      mr.completed = rec.completed && in.done && !in.error;
-      if (mr.completed) {
+      mr.completed = rec.completed() && in.done && !in.error;
+      if (mr.completed && rec.settling_s) {
         // A-SIZE-7: settling as simulated, from the end of the trajectory (b)
         // to Done (f); positioning = planned travel + settling (>= travel).
-        mr.settling_s = rec.settling_s;
-        mr.positioning_s = ev.travel_s + rec.settling_s;
+        mr.settling_s = *rec.settling_s;
+        mr.positioning_s = ev.travel_s + *rec.settling_s;
       }
     }
     ev.moves.push_back(mr);
@@ -174,7 +174,7 @@ Evaluation evaluate(const SizingRequest& rq, const ParameterSetValues& set, bool
     // Overshoot and the window entered for good are watched until the next move.
     if (twin.moves().size() > records_before) {
       ev.moves.back().overshoot_deg = twin.moves().back().overshoot_deg;
-      ev.moves.back().in_window_s = twin.moves().back().in_window_s;
+      ev.moves.back().in_window_s = twin.moves().back().in_window_s.value_or(-1);
     }
   }
   ev.sim_time_s = twin.time_s();

@@ -160,8 +160,6 @@ void write_report_dir(const RunArgs& a, const RunResult& r) {
   in.trace = r.trace;
   in.moves = r.moves;
   in.tracking_limit_deg = r.tracking_limit_deg;
-  in.tolerance_deg = r.tolerance_deg;
-  in.wait_ms.assign(r.moves.size(), r.wait_ms);
   if (!a.video.empty()) {
     namespace fs = std::filesystem;
     in.video_file = fs::relative(fs::absolute(a.video), fs::absolute(a.report)).generic_string();

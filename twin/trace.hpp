@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "device_logic/device_types.hpp"
+#include "device_logic/move_record.hpp"
 #include "device_logic/process_data.hpp"
 
 namespace sreh {
@@ -31,19 +32,8 @@ struct TraceRow {
   IoLinkLedMode iolink_led = IoLinkLedMode::NotConnected; // manual 1
 };
 
-// One executed move command (interfaces.md `moves`), manual 3.5.2 terms.
-struct MoveRecord {
-  double start_s = 0;          // Move accepted (point a)
-  double travel_s = 0;         // (1) duration of the target trajectory
-  double settling_s = 0;       // (2) from trajectory end (b) to completion (f), >= 0; <0 if never completed
-  double positioning_s = 0;    // (4) travel + settling (>= travel); <0 if never completed
-  double max_tracking_error_deg = 0;
-  double overshoot_deg = 0;    // furthest past the target in the direction of travel, from (b) until the next move (>= 0)
-  double in_window_s = -1;     // from (b) until the position entered the tolerance window for good (servo.md),
-                               // while the target is held; <0: outside the window when the move's record ended
-  double target_deg = 0;
-  bool completed = false;      // reached Done (false: stopped, error, SettlingTimeout 114.8)
-};
+// Move records: device_logic/move_record.hpp (the device emits them, issue 13).
+
 
 // Writes the CSV header and rows (interfaces.md column order first).
 void write_trace_csv(std::ostream& out, const std::vector<TraceRow>& rows);

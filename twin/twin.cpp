@@ -64,70 +64,22 @@ struct Twin::Impl {
     direction = (r.ok() && !r.data.empty() && r.data[0] == 1) ? -1.0 : 1.0;
   }
 
-  // Move records (interfaces.md `moves`, manual 3.5.2 Fig. 3), evaluated
-  // every control step on the tick time t_s. Travel ends at (b), the tick
-  // the trajectory ends; positioning at (f), the tick the device reports
-  // Done; settling = positioning - travel >= 0 by construction (A-TWIN-12).
-  void track_move(double t_s) {
-    const Telemetry tel = device.telemetry();
-    // A record per accepted Move (T3), zero-length moves included.
-    if (tel.moves_started != moves_seen) {
-      moves_seen = tel.moves_started;
-      MoveRecord rec;
-      rec.start_s = t_s;
-      rec.settling_s = -1;
-      rec.positioning_s = -1;
-      moves.push_back(rec);
-      move_open = true;
-      travel_done = false;
-      overshoot_open = false;
-      start_position_deg = tel.position_deg;
+  // Move records come from the device (issue 13); the twin collects them on
+  // the run's clock: the device counts from its own power-on.
+  void collect_moves() {
+    if (pending_in_list) {
+      moves.pop_back();
+      pending_in_list = false;
     }
-    if (overshoot_open) {
-      // Past the target in the direction of travel, while the module holds it.
-      if (tel.state == State::Done || tel.state == State::Busy || tel.state == State::Ready) {
-        MoveRecord& rec = moves.back();
-        rec.overshoot_deg = std::max(rec.overshoot_deg, travel_sign * (tel.position_deg - rec.target_deg));
-        watch_window(rec, t_s, tel);
-      } else {
-        overshoot_open = false;
-      }
+    auto place = [&](MoveRecord m) {
+      m.start_s = static_cast<double>(m.start_ns + device_epoch_ns) / 1e9;
+      moves.push_back(m);
+    };
+    for (const MoveRecord& m : device.take_finished_moves()) place(m);
+    if (const auto m = device.pending_move()) {
+      place(*m);
+      pending_in_list = true;
     }
-    if (!move_open) return;
-    MoveRecord& rec = moves.back();
-    rec.max_tracking_error_deg = std::max(rec.max_tracking_error_deg, std::abs(tel.tracking_error_deg));
-    if (!travel_done && (!tel.moving || tel.state != State::Busy)) {
-      travel_done = true;
-      rec.travel_s = t_s - rec.start_s;
-      rec.target_deg = tel.setpoint_deg;
-      const double d = rec.target_deg - start_position_deg;
-      travel_sign = d > 0 ? 1.0 : d < 0 ? -1.0 : 0.0;
-      overshoot_open = tel.state == State::Busy || tel.state == State::Done;
-      if (overshoot_open) {
-        rec.overshoot_deg = std::max(0.0, travel_sign * (tel.position_deg - rec.target_deg));
-        travel_end_s = t_s;
-        in_window = false;
-        watch_window(rec, t_s, tel);
-      }
-    }
-    if (tel.state == State::Done && travel_done) {
-      rec.positioning_s = t_s - rec.start_s;
-      rec.settling_s = rec.positioning_s - rec.travel_s;
-      rec.completed = true;
-      move_open = false;
-    } else if (tel.state != State::Busy) {
-      move_open = false; // stopped, motor off or an error: never completed
-    }
-  }
-
-  // servo.md: the instant the position entered the tolerance window for
-  // good (inclusive, A-MOTION-6), counted from (b), as long as the target is
-  // held; leaving the window again clears it.
-  void watch_window(MoveRecord& rec, double t_s, const Telemetry& tel) {
-    const bool inside = std::abs(tel.position_deg - rec.target_deg) <= tel.tolerance_deg;
-    if (inside && !in_window) rec.in_window_s = t_s - travel_end_s;
-    if (!inside) rec.in_window_s = -1;
-    in_window = inside;
   }
 
   void record_row(const PdOutFrame& out_frame) {
@@ -181,14 +133,9 @@ struct Twin::Impl {
   std::vector<TraceRow> trace;
   std::vector<MoveRecord> moves;
   int64_t ticked_counts = 0; // encoder reading the device saw last
-  uint32_t moves_seen = 0; // the device's T3 count, reset with its power
-  bool move_open = false;
-  bool travel_done = false;
-  bool overshoot_open = false;  // the last move's target is being held
-  double travel_sign = 0;       // +1 / -1: direction of the last move (process-data frame)
-  double start_position_deg = 0;
-  double travel_end_s = 0;      // (b) of the last move, tick time
-  bool in_window = false;       // the last move's target window holds the position now
+  int64_t device_epoch_ns = 0; // run time of the device's last power-on
+  double max_tracking_error_deg = 0; // over the run, every control step
+  bool pending_in_list = false; // moves.back() is the device's open or held record
 };
 
 Twin::Twin(const TwinConfig& config) : impl_(std::make_unique<Impl>(config)) {
@@ -217,8 +164,7 @@ IsduResult Twin::isdu_write(uint16_t index, uint8_t subindex, std::span<const ui
   // A completed firmware update restarts the device (manual 9): the master
   // starts the port up again.
   if (before != ComPhase::Startup && s.device.com_phase() == ComPhase::Startup) {
-    s.moves_seen = 0;
-    s.move_open = false;
+    s.device_epoch_ns = s.time_ns; // the device's clock restarts with it
     s.startup_left = kStartupCycles;
   }
   return r;
@@ -240,15 +186,16 @@ void Twin::set_master_cycle_s(double cycle_s) {
 
 double Twin::master_cycle_s() const { return impl_->config.cycle_s; }
 
-void Twin::power_off() { impl_->device.power_off(); }
+void Twin::power_off() {
+  impl_->device.power_off();
+  impl_->collect_moves();
+}
 
 void Twin::power_on() {
   Impl& s = *impl_;
   if (s.device.powered()) return;
   s.device.power_on(s.plant.sensors());
-  s.moves_seen = 0;
-  s.move_open = false;
-  s.overshoot_open = false;
+  s.device_epoch_ns = s.time_ns;
   s.startup_left = kStartupCycles;
   s.refresh_direction();
 }
@@ -304,11 +251,9 @@ void Twin::run_cycle() {
   }
   const double dt = s.config.physics_dt_s;
   for (int i = 0; i < s.steps; ++i) {
-    const double t_s = s.plant.time_s();
     s.ticked_counts = s.plant.sensors().encoder_counts;
     const MotorCommand cmd = s.device.tick(dt, s.plant.sensors());
     s.plant.step(cmd);
-    s.track_move(t_s);
   }
   if (s.turning && ++s.turn_done == s.turn_cycles) {
     s.turning = false;
@@ -316,6 +261,8 @@ void Twin::run_cycle() {
   }
   ++s.cycles;
   s.time_ns += s.cycle_ns;
+  s.collect_moves();
+  s.max_tracking_error_deg = std::max(s.max_tracking_error_deg, s.device.take_peak_tracking_error_deg());
   s.update_visuals();
   if (s.config.record_trace) s.record_row(out_frame);
 }
@@ -326,6 +273,7 @@ IoLinkLedMode Twin::iolink_led() const { return impl_->device.io_link_led(); }
 Telemetry Twin::telemetry() const { return impl_->device.telemetry(); }
 const std::vector<TraceRow>& Twin::trace() const { return impl_->trace; }
 const std::vector<MoveRecord>& Twin::moves() const { return impl_->moves; }
+double Twin::max_tracking_error_deg() const { return impl_->max_tracking_error_deg; }
 double Twin::load_inertia_gcm2() const { return kgm2_to_gcm2(impl_->plant.load_inertia_kgm2()); }
 const Device& Twin::device() const { return impl_->device; }
 const Plant& Twin::plant() const { return impl_->plant; }

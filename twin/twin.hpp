@@ -119,7 +119,11 @@ class Twin {
 
   Telemetry telemetry() const;
   const std::vector<TraceRow>& trace() const;
+  // One record per accepted Move, from the device (issue 13); the last may
+  // still be open (or its target held) while the run goes on.
   const std::vector<MoveRecord>& moves() const;
+  // The largest |setpoint - encoder| of any control step so far (motor on).
+  double max_tracking_error_deg() const;
   double load_inertia_gcm2() const;     // actual load about the axis, as MuJoCo computes it
   const Device& device() const;
   const Plant& plant() const;

@@ -59,11 +59,11 @@ ReportInput sample_run(double cycle_s = 0.002, double duration_s = 0.6) {
   m.positioning_s = 0.2345;
   m.max_tracking_error_deg = 0.3;
   m.target_deg = 90.0;
-  m.completed = true;
+  m.outcome = MoveOutcome::Done;
+  m.tolerance_deg = 0.05; // each move's own set (issue 13)
+  m.wait_ms = 20.0;
   in.moves = {m};
   in.tracking_limit_deg = 2.0;
-  in.tolerance_deg = 0.05;
-  in.wait_ms = {20.0};
   return in;
 }
 
@@ -93,9 +93,9 @@ TEST(Report, FailedRunAndIncompleteMoveAreMarked) {
   ReportInput in = sample_run();
   in.passed = false;
   in.checks.push_back({"warning_code == 0", false});
-  in.moves[0].completed = false;
-  in.moves[0].settling_s = -1;
-  in.moves[0].positioning_s = -1;
+  in.moves[0].outcome = MoveOutcome::Error;
+  in.moves[0].settling_s.reset();
+  in.moves[0].positioning_s.reset();
   const std::string html = report_html(in);
   EXPECT_NE(html.find("FAILED"), std::string::npos);
   EXPECT_NE(html.find("<td class=\"bad\">FAIL</td>"), std::string::npos);
