@@ -218,8 +218,8 @@ double settling_without_wait(double load_gcm2, double tolerance_deg) {
   write_raw(twin, 65, 7, 10000); // settling timeout 1 s
   const Outcome o = move(twin, 90, 1.5);
   EXPECT_TRUE(o.done) << load_gcm2 << " g cm^2, " << tolerance_deg << " deg, error " << int{o.error_code};
-  if (twin.moves().empty() || !twin.moves()[0].completed) return -1.0;
-  return twin.moves()[0].settling_s;
+  if (twin.moves().empty() || !twin.moves()[0].completed()) return -1.0;
+  return twin.moves()[0].settling_s.value_or(-1.0);
 }
 
 TEST(TwinPhysics, SettlingWithoutWaitGrowsWithLoadAndTighterWindow_3_5_7) {
@@ -269,10 +269,10 @@ TEST(TwinPhysics, HeavyLoadLeavesWindowAfterDoneWithoutWaitingTime_3_5_7) {
   write_raw(twin, 65, 5, 73); // 0.0501 deg
   write_raw(twin, 65, 6, 0);  // no waiting time
   ASSERT_TRUE(move(twin, 90, 1.0).done);
-  EXPECT_EQ(twin.moves()[0].settling_s, 0.0);
+  EXPECT_EQ(twin.moves()[0].settling_s.value_or(-1.0), 0.0);
   for (int k = 0; k < 50; ++k) twin.run_cycle(); // 0.1 s holding
   EXPECT_NE(twin.telemetry().warning_code, 0);
-  EXPECT_GT(twin.moves()[0].in_window_s, 0.0);
+  EXPECT_GT(twin.moves()[0].in_window_s.value_or(0.0), 0.0);
 }
 
 // A window of a few encoder counts (3 counts = 0.002 deg) meets quantisation
