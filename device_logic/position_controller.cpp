@@ -11,12 +11,12 @@ namespace sreh {
 
 ControllerGains default_controller_gains() {
   ControllerGains g;
-  g.velocity_bandwidth_rad_s = 1500.0; // A-CTRL-1
+  g.velocity_bandwidth_rad_s = 1000.0; // A-CTRL-1: what the 3-period loop delay allows (A-CTRL-7)
   g.schedule_exponent = 0.8;           // A-CTRL-1
   g.position_ratio = 0.25;             // A-CTRL-2
   g.integral_ratio = 0.2;              // A-CTRL-3
   g.velocity_filter_s = 0.2e-3;        // A-CTRL-4
-  g.delay_steps = 1;                   // A-CTRL-7
+  g.delay_steps = 3;                   // A-CTRL-7: encoder transfer + computation + PWM reload
   return g;
 }
 
@@ -33,7 +33,8 @@ void PositionController::reset(double measured_pos_rad) {
   vel_est_ = 0.0;
   sp_vel_ = 0.0;
   integral_ = 0.0;
-  pending_ = 0.0;
+  pending_.fill(0.0);
+  pending_head_ = 0;
   primed_ = true;
   saturated_ = false;
 }
@@ -78,8 +79,10 @@ double PositionController::update(const KinematicState& setpoint, double measure
   if (!winds_up) integral_ = std::clamp(integral_ + d_integral, lo, hi);
 
   if (gains_.delay_steps <= 0) return torque;
-  const double out = pending_; // computed one period ago (A-CTRL-7)
-  pending_ = torque;
+  const int n = std::min(gains_.delay_steps, kMaxDelaySteps);
+  const double out = pending_[static_cast<std::size_t>(pending_head_)]; // computed n periods ago (A-CTRL-7)
+  pending_[static_cast<std::size_t>(pending_head_)] = torque;
+  pending_head_ = (pending_head_ + 1) % n;
   return out;
 }
 

@@ -3,8 +3,9 @@
 //   position loop (P, with velocity feed-forward from the planner)
 //     -> velocity loop (PI, with acceleration feed-forward J a)
 //       -> torque (current) reference, saturated to what the motor can give
-//          now, with anti-windup; handed to the current loop one control
-//          period later (computation delay).
+//          now, with anti-windup; handed to the current loop
+//          `delay_steps` control periods later (A-CTRL-7: the encoder's
+//          serial transfer, the computation, the PWM reload).
 //
 //   v_cmd  = v_sp~ + Kp e,           e = pos_sp - encoder
 //   torque = J a_sp + Kv (v_cmd - v~) + I,   dI/dt = Kv wi (v_cmd - v~)
@@ -23,6 +24,8 @@
 // wrong configured load is a wrong plant for this loop: overshoot, ringing,
 // at worst tracking errors or instability, from the dynamics alone.
 #pragma once
+#include <array>
+
 #include "device_logic/planner.hpp"
 
 namespace sreh {
@@ -33,7 +36,7 @@ struct ControllerGains {
   double position_ratio = 0;           // position loop bandwidth / velocity loop bandwidth
   double integral_ratio = 0;           // velocity integral corner / velocity loop bandwidth
   double velocity_filter_s = 0;        // time constant of the low-pass on encoder differences
-  int delay_steps = 0;                 // computation delay in control periods (0 or 1)
+  int delay_steps = 0;                 // loop delay in control periods (0 .. 4)
 
   double velocity_bandwidth_for(double inertia_kgm2) const; // wv(J)
 };
@@ -68,7 +71,9 @@ class PositionController {
   double vel_est_ = 0;     // measured velocity, filtered
   double sp_vel_ = 0;      // setpoint velocity through the same difference and filter
   double integral_ = 0;
-  double pending_ = 0;     // output computed last period (computation delay)
+  static constexpr int kMaxDelaySteps = 4;
+  std::array<double, kMaxDelaySteps> pending_{}; // outputs of the last periods (loop delay, A-CTRL-7)
+  int pending_head_ = 0;
   bool primed_ = false;
   bool saturated_ = false;
 };

@@ -84,7 +84,9 @@ def test_trace_columns_are_numpy_arrays_with_fixed_dtypes():
     # Frames as integers in the manual's bit numbering (2.3): bits 55..24
     # actual position, bit 3 Done.
     position = (trace["pd_in"] >> np.uint64(24)).astype(np.uint32).view(np.int32)
-    assert position[-1] == round(90 * 65536 / 360)
+    # Within one wire count (0.0055 deg): friction can hold the rotor an
+    # encoder count short of the target for a while (A-CTRL-7, A-TWIN-22).
+    assert abs(int(position[-1]) - round(90 * 65536 / 360)) <= 1
     done = (trace["pd_in"] >> np.uint64(3)) & np.uint64(1)
     states = np.array(sreh_twin.STATES)[trace["state"]]
     # The frame of a row is the device's answer at the cycle's start: Done

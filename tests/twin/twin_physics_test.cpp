@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "device_logic/planner.hpp"
 #include "device_logic/units.hpp"
@@ -201,26 +202,85 @@ TEST(TwinPhysics, SettlingGrowsWithTighterToleranceAndHeavierLoad_3_5_7) {
   EXPECT_GE(heavy_tight - 0.005, 0.001); // at least 1 ms beyond the waiting time
 }
 
+// Issue 14 done-when, manual 3.5.2 Fig. 3 / 3.5.7 with no waiting time:
+// settling (from (b) to the first sample inside the window) grows with the
+// load and with a tighter window, from the loop delays (A-CTRL-7) and the
+// load's compliance (A-TWIN-20), never from an `if`. One 90 deg move per
+// cell at 3000 deg/s, 100 %, 100 % (parameter set 1 defaults).
+double settling_without_wait(double load_gcm2, double tolerance_deg) {
+  TwinConfig c;
+  c.load = InertiaLoad{load_gcm2};
+  c.record_trace = false;
+  Twin twin(c);
+  write_raw(twin, 65, 4, static_cast<uint16_t>(load_gcm2));
+  write_raw(twin, 65, 5, static_cast<uint16_t>(std::lround(tolerance_deg / 360.0 * 524288.0)));
+  write_raw(twin, 65, 6, 0);     // no waiting time
+  write_raw(twin, 65, 7, 10000); // settling timeout 1 s
+  const Outcome o = move(twin, 90, 1.5);
+  EXPECT_TRUE(o.done) << load_gcm2 << " g cm^2, " << tolerance_deg << " deg, error " << int{o.error_code};
+  if (twin.moves().empty() || !twin.moves()[0].completed()) return -1.0;
+  return twin.moves()[0].settling_s.value_or(-1.0);
+}
+
+TEST(TwinPhysics, SettlingWithoutWaitGrowsWithLoadAndTighterWindow_3_5_7) {
+  const std::vector<double> loads{0, 1000, 5000, 10000, 15000};
+  const std::vector<double> tolerances{1.0, 0.2, 0.05, 0.01}; // loosest first
+  const double noise_s = 0.001;
+  std::vector<std::vector<double>> t(loads.size(), std::vector<double>(tolerances.size()));
+  for (std::size_t i = 0; i < loads.size(); ++i) {
+    for (std::size_t j = 0; j < tolerances.size(); ++j) t[i][j] = settling_without_wait(loads[i], tolerances[j]);
+  }
+  for (std::size_t i = 0; i < loads.size(); ++i) {
+    for (std::size_t j = 0; j < tolerances.size(); ++j) {
+      EXPECT_GE(t[i][j], 0.0) << loads[i] << ", " << tolerances[j];
+      if (i > 0) {
+        EXPECT_GE(t[i][j], t[i - 1][j] - noise_s) << "heavier load, " << loads[i] << ", " << tolerances[j];
+      }
+      if (j > 0) {
+        EXPECT_GE(t[i][j], t[i][j - 1] - noise_s) << "tighter window, " << loads[i] << ", " << tolerances[j];
+      }
+    }
+  }
+  // The heaviest load in the tightest window takes real time; the light
+  // ones in a loose window are there at (b).
+  EXPECT_GE(t.back().back(), 0.001);
+  EXPECT_EQ(t.front().front(), 0.0);
+}
+
+TEST(TwinPhysics, HeavyTightSettlesTwiceAsLongAsLightLoose_3_5_7) {
+  const double heavy_tight = settling_without_wait(15000, 0.01);
+  const double light_loose = settling_without_wait(100, 0.5);
+  EXPECT_GE(heavy_tight, 2.0 * light_loose);
+  EXPECT_GE(heavy_tight, 0.001);
+  EXPECT_GE(heavy_tight, settling_without_wait(15000, 0.1)); // 0.01 deg at least as long as 0.1 deg
+}
+
 // Manual 3.5.7 / 7.3 115.3 ("vibration ... especially in combination with
-// large loads"): with no waiting time the heaviest load is found good at the
-// end of the trajectory, swings out of a 0.01 deg window and raises 115.3;
-// in_window_s records when it entered the window for good (servo.md).
-TEST(TwinPhysics, HeavyLoadLeavesTightWindowAfterDoneWithoutWaitingTime_3_5_7) {
+// large loads"): with no waiting time the heaviest load is found good in a
+// 0.05 deg window at the end of the trajectory, the flange's swing pulls
+// the rotor out of it and 115.3 follows; in_window_s records when it
+// entered the window for good (servo.md).
+TEST(TwinPhysics, HeavyLoadLeavesWindowAfterDoneWithoutWaitingTime_3_5_7) {
   TwinConfig c;
   c.load = InertiaLoad{15000};
   c.record_trace = false;
   Twin twin(c);
   write_raw(twin, 65, 4, 15000);
-  write_raw(twin, 65, 5, 15); // 0.0103 deg
+  write_raw(twin, 65, 5, 73); // 0.0501 deg
   write_raw(twin, 65, 6, 0);  // no waiting time
   ASSERT_TRUE(move(twin, 90, 1.0).done);
-  EXPECT_EQ(twin.moves()[0].settling_s, 0.0);
+  EXPECT_EQ(twin.moves()[0].settling_s.value_or(-1.0), 0.0);
   for (int k = 0; k < 50; ++k) twin.run_cycle(); // 0.1 s holding
   EXPECT_NE(twin.telemetry().warning_code, 0);
-  const MoveRecord& rec = twin.moves()[0];
-  EXPECT_GT(rec.in_window_s, 0.005);
-  EXPECT_LT(rec.in_window_s, 0.05);
-  EXPECT_GT(rec.overshoot_deg, 0.0);
+  EXPECT_GT(twin.moves()[0].in_window_s.value_or(0.0), 0.0);
+}
+
+// A window of a few encoder counts (3 counts = 0.002 deg) meets quantisation
+// and friction inside the loop: late even with no load and no waiting time.
+TEST(TwinPhysics, FewCountWindowSettlesLate_3_5_7) {
+  const double few_counts_deg = 3 * 360.0 / 524288.0;
+  EXPECT_GT(settling_without_wait(0, few_counts_deg), settling_without_wait(0, 0.5));
+  EXPECT_GT(settling_without_wait(15000, few_counts_deg), 0.01);
 }
 
 } // namespace
