@@ -312,10 +312,10 @@ double Device::Impl::setpoint_user_deg() const {
 // any other way out of Busy (an error, the motor off) ends it without a
 // settling time. A completed move stays held while its target is.
 void Device::Impl::record_move_step() {
-  const double position = internal_counts_to_deg(user_now());
   // The one tracking error (issue 16): setpoint minus encoder, every control step.
   peak_tracking_error_deg = std::max(peak_tracking_error_deg, step_tracking_error_deg);
-  if (!move_recorder.open() && !move_recorder.holding()) return;
+  if (!move_recorder.open() && !move_recorder.holding()) return; // the common case: nothing more per step
+  const double position = internal_counts_to_deg(user_now());
   if (move_recorder.open()) {
     move_recorder.step(time_ns, step_tracking_error_deg, position, state == State::Busy && phase == MotionPhase::Travel);
     if (state == State::Done) {
