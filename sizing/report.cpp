@@ -87,6 +87,8 @@ std::string numbers_table(const SizingRequest& rq, const SizingResult& r) {
   o += row("steady temperature", fmt::format("{:.1f} degC ({:.2f} W mean loss)", e.steady_temperature_C, e.mean_loss_W));
   o += row("time to 70 degC warning",
            e.time_to_warning_s ? fmt::format("{:.0f} s", *e.time_to_warning_s) : std::string("never"));
+  o += row("time to 75 degC trip (114.3)",
+           e.time_to_trip_s ? fmt::format("{:.0f} s", *e.time_to_trip_s) : std::string("never"));
   o += row("simulations", fmt::format("{}", r.simulations));
   return o + "</table>\n";
 }
@@ -194,6 +196,7 @@ std::string size_report_html(const SizingRequest& rq, const SizingResult& r) {
     te.bands = {{{}, {}, -e.set.tolerance_deg, e.set.tolerance_deg, "tolerance window", "#2ca02c", 0.15}};
     o += report::figure(te);
   }
+  o += temperature_plot(e.mean_loss_W, rq.ambient_C, rq.thermal_margin_K, e.time_to_trip_s);
   o += "<p class=\"note\">Travel time from the device's planner; settling and positioning simulated; torque "
        "sampled per IO-Link cycle; temperature from the twin's lumped thermal model at the cycle's mean loss "
        "(docs/assumptions/sizing.md).</p>\n</body>\n</html>\n";
