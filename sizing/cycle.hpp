@@ -68,7 +68,7 @@ struct SegmentResult {
   // Moves:
   int parameter_set = -1;
   double start_deg = 0, target_deg = 0; // absolute, process-data degrees
-  double load_gcm2 = 0;          // actual load during the move (= the set's 64+n.4)
+  double load_gcm2 = 0;          // actual load on the flange during the move (MuJoCo; the set's 64+n.4 says the same)
   double process_torque_Nm = 0;
   double travel_s = 0;           // planned (manual 3.5.2 (1))
   double settling_s = -1;        // simulated; < 0: never completed

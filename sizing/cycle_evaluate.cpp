@@ -134,7 +134,7 @@ CycleEvaluation evaluate_cycle(const CycleRequest& rq, const CyclePlan& plan, co
         sr.parameter_set = set.set;
         sr.start_deg = wire_counts_to_deg(last_target);
         sr.target_deg = wire_counts_to_deg(end);
-        sr.load_gcm2 = plan.sets[k].load_gcm2;
+        sr.load_gcm2 = std::max(0.0, twin.load_inertia_gcm2()); // what the flange carries now (MuJoCo)
         sr.process_torque_Nm = m->process_torque_Nm.value_or(rq.process_torque_Nm);
         const int64_t distance = end - last_target;
         sr.travel_s = distance == 0 ? 0.0
