@@ -137,19 +137,19 @@ std::string cycle_summary_text(const CycleRequest& rq, const CycleResult& r) {
     s += fmt::format("  set {}: speed {:.1f} deg/s, acceleration {:.1f} %, jerk {:.1f} %, load {:.0f} g cm^2\n", p.set,
                      p.tidy.speed_dps, p.tidy.accel_pct, p.tidy.jerk_pct, p.load_gcm2);
   }
-  s += "  #  kind    what                         set  travel s  settle s  position s  duration s  peak/rms N m\n";
+  s += "  #   kind   from -> to deg       load g cm^2  set  travel s  settle s  positioning s  duration s  peak / rms N m\n";
   for (std::size_t i = 0; i < e.segments.size(); ++i) {
     const SegmentResult& g = e.segments[i];
+    auto t = [&](double v) { return g.completed ? fmt::format("{:.4f}", v) : std::string("-"); };
     if (g.kind == "move") {
-      s += fmt::format("  {:<2} move    {:>8.2f} -> {:<8.2f} deg {:>6}  {:>3}  {:8.4f}  {:>8}  {:>10}  {:>10}  {:.3f}/{:.3f}\n",
-                       i + 1, g.start_deg, g.target_deg, fmt::format("{:.0f}gcm2", g.load_gcm2), g.parameter_set,
-                       g.travel_s, g.completed ? fmt::format("{:.4f}", g.settling_s) : "-",
-                       g.completed ? fmt::format("{:.4f}", g.positioning_s) : "-",
-                       g.completed ? fmt::format("{:.4f}", g.duration_s) : "-", g.peak_torque_Nm, g.rms_torque_Nm);
+      s += fmt::format("  {:<3} move   {:>8.2f} -> {:<8.2f}  {:>11.0f}  {:>3}  {:>8.4f}  {:>8}  {:>13}  {:>10}  {:.3f} / {:.3f}\n",
+                       i + 1, g.start_deg, g.target_deg, g.load_gcm2, g.parameter_set, g.travel_s, t(g.settling_s),
+                       t(g.positioning_s), t(g.duration_s), g.peak_torque_Nm, g.rms_torque_Nm);
     } else if (g.kind == "dwell") {
-      s += fmt::format("  {:<2} dwell   hold {:+.3f} N m{:>16}{:>46.4f}\n", i + 1, g.process_torque_Nm, "", g.duration_s);
+      s += fmt::format("  {:<3} dwell  holding torque {:+.3f} N m {:>47}  {:>10.4f}  {:.3f} rms\n", i + 1,
+                       g.process_torque_Nm, "", g.duration_s, g.hold_rms_torque_Nm);
     } else {
-      s += fmt::format("  {:<2} load    load change (grip / release){:>45}\n", i + 1, "0");
+      s += fmt::format("  {:<3} load   load change (grip / release) {:>44}  {:>10.4f}\n", i + 1, "", 0.0);
     }
   }
   s += fmt::format("  cycle             {}   (moves incl. {} ms handshake each + dwells){}\n",

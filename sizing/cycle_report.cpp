@@ -103,10 +103,10 @@ std::string segment_time_plot(const CycleEvaluation& e) {
   p.x = {"segment", "#", 0.5, static_cast<double>(e.segments.size()) + 0.5};
   p.y = {"time", "s", 0.0, {}};
   double top = 0;
+  bool first = true, first_dwell = true; // one legend entry per colour
   for (std::size_t i = 0; i < e.segments.size(); ++i) {
     const SegmentResult& s = e.segments[i];
     const double x0 = static_cast<double>(i + 1) - 0.35, x1 = static_cast<double>(i + 1) + 0.35;
-    const bool first = i == 0;
     if (s.kind == "move") {
       const double settle = std::max(0.0, s.settling_s);
       p.bands.push_back({x0, x1, 0.0, s.travel_s, first ? "travel" : "", "#1f77b4", 0.8});
@@ -114,8 +114,10 @@ std::string segment_time_plot(const CycleEvaluation& e) {
       p.bands.push_back({x0, x1, s.travel_s + settle, s.travel_s + settle + e.handshake_s, first ? "handshake" : "",
                          "#7f7f7f", 0.8});
       top = std::max(top, s.travel_s + settle + e.handshake_s);
+      first = false;
     } else if (s.kind == "dwell") {
-      p.bands.push_back({x0, x1, 0.0, s.duration_s, "", "#2ca02c", 0.5});
+      p.bands.push_back({x0, x1, 0.0, s.duration_s, first_dwell ? "dwell" : "", "#2ca02c", 0.5});
+      first_dwell = false;
       top = std::max(top, s.duration_s);
     }
   }
