@@ -14,6 +14,9 @@
 namespace sreh::sizing {
 namespace {
 
+// Manual 2.5: process-data positions are int32 wire counts, +-2^15 revolutions.
+constexpr double kWirePositionLimit_deg = 32768.0 * 360.0;
+
 std::string where(const CycleRequest& rq, const CycleSegment& s) {
   return fmt::format("{}:{}:{}", rq.file, s.line, s.column);
 }
@@ -66,17 +69,22 @@ CyclePlan plan_sets(const CycleRequest& rq) {
       seg_spec[i] = spec;
     }
   }
-  // The longest distance of each move over two repetitions (the first starts at 0).
+  // The longest distance of each move over the repetitions (the first
+  // starts at 0); relative moves must stay inside the position range.
   std::vector<double> distance(rq.segments.size(), 0.0);
   {
     double pos = 0;
-    for (int rep = 0; rep < 2; ++rep) {
+    for (int rep = 0; rep < std::max(2, rq.cycles); ++rep) {
       for (std::size_t i = 0; i < rq.segments.size(); ++i) {
         const auto* m = std::get_if<CycleMove>(&rq.segments[i].what);
         if (!m) continue;
         const double to = m->relative ? pos + m->target_deg : m->target_deg;
         distance[i] = std::max(distance[i], std::abs(to - pos));
         pos = to;
+        if (std::abs(pos) >= kWirePositionLimit_deg) {
+          throw SizingInputError(fmt::format("{}: repetition {} reaches {} deg, outside the position range of "
+                                             "+-32768 revolutions (manual 2.5)", where(rq, rq.segments[i]), rep + 1, pos));
+        }
       }
     }
   }
