@@ -10,7 +10,6 @@
 #include <fmt/format.h>
 
 #include "io/atomic_file.hpp"
-#include "io/output_path.hpp"
 #include "sizing/cycle_output.hpp"
 #include "sizing/output.hpp"
 #include "sizing/report.hpp"

@@ -118,8 +118,15 @@ std::string speed_torque_plot(const SizingRequest& rq, const Evaluation& e) {
     (brake ? braking : motoring).x.push_back(std::abs(r.velocity_dps));
     (brake ? braking : motoring).y.push_back(std::abs(r.torque_Nm));
   }
-  p.series = {cap, motoring, braking};
-  p.hlines = {{kTorqueMargin * e.torque_capability_Nm, fmt::format("{:.0f} % of peak", 100 * kTorqueMargin), "#9467bd", true}};
+  // The RMS point (issue 17): RMS torque at the RMS speed, against the continuous torque.
+  double sq_speed = 0;
+  for (const TraceRow& r : e.trace) sq_speed += r.velocity_dps * r.velocity_dps;
+  const double rms_speed = e.trace.empty() ? 0.0 : std::sqrt(sq_speed / static_cast<double>(e.trace.size()));
+  svg::Series rms{fmt::format("RMS point ({:.0f} deg/s, {:.3f} N m)", rms_speed, e.rms_torque_Nm),
+                  {rms_speed}, {e.rms_torque_Nm}, "#000000", 4.0, false, true};
+  p.series = {cap, motoring, braking, rms};
+  p.hlines = {{kTorqueMargin * e.torque_capability_Nm, fmt::format("{:.0f} % of peak", 100 * kTorqueMargin), "#9467bd", true},
+              {e.continuous_torque_Nm, "continuous torque (A-SIZE-14)", "#2ca02c", true}};
   p.vlines = {{e.set.setting.speed_dps, "set speed", "#555555"}};
   return report::figure(p, false);
 }

@@ -36,6 +36,8 @@ TEST(Report, SizeReportHasPlotsNumbersAndWrites) {
   EXPECT_NE(html.find("srehPlot("), std::string::npos);
   EXPECT_NE(html.find("Speed-torque"), std::string::npos);
   EXPECT_NE(html.find("capability (motoring)"), std::string::npos);
+  EXPECT_NE(html.find("RMS point"), std::string::npos); // issue 17
+  EXPECT_NE(html.find("continuous torque (A-SIZE-14)"), std::string::npos);
   const std::regex number(R"(<text[^>]*>(-?[0-9]+(\.[0-9]+)?)</text>)");
   std::size_t svgs = 0;
   for (std::size_t a = html.find("<svg"); a != std::string::npos; a = html.find("<svg", a + 1), ++svgs) {
