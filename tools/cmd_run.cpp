@@ -170,7 +170,7 @@ void write_report_dir(const RunArgs& a, const RunResult& r) {
   in.passed = r.passed;
   for (const auto& c : r.checks) in.checks.push_back({c.description, c.passed, c.step, c.line, c.t_s, c.actual});
   in.trace = r.trace;
-  in.moves = r.moves;  // spans: the report reads the run's rows and records in place
+  in.moves = r.moves;
   in.tracking_limit_deg = r.tracking_limit_deg;
   in.command_line = command_line();
   in.version = SREH_VERSION;
