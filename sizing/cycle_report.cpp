@@ -1,7 +1,6 @@
 // The sizing report of a cycle (`size --cycle ... --report DIR`) and the
 // temperature plot both reports share (issue 17): renders' figure/SVG code
-// as the single-move report. Kept apart from report.cpp so that the page
-// shell of the single-move report can change without touching these.
+// as the single-move report, in the one page shell (io/html_page.hpp).
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -10,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "io/atomic_file.hpp"
+#include "io/html_page.hpp"
 #include "sizing/cycle_output.hpp"
 #include "sizing/output.hpp"
 #include "sizing/report.hpp"
@@ -153,9 +153,7 @@ std::string temperature_plot(double mean_loss_W, double ambient_C, double therma
 std::string cycle_report_html(const CycleRequest& rq, const CycleResult& r) {
   const CycleEvaluation& e = r.evaluation;
   const std::string title = fmt::format("Sizing: cycle {}", std::filesystem::path(rq.file).filename().string());
-  std::string o = fmt::format("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>{}</title>\n"
-                              "<style>{}</style>\n{}</head>\n<body>\n<h1>{}</h1>\n",
-                              xml_escape(title), report::kPageCss, report::interactive_head(), xml_escape(title));
+  std::string o = io::html_page_open(title, report::page_head()) + fmt::format("<h1>{}</h1>\n", xml_escape(title));
   o += fmt::format("<p><span class=\"result {}\">{}</span> binding limit: {}. {}</p>\n", e.feasible ? "ok" : "bad",
                    e.feasible ? "FEASIBLE" : "NOT FEASIBLE", xml_escape(e.binding_limit), xml_escape(e.reason));
   o += "<h2>Numbers</h2>\n<table>\n";
@@ -229,7 +227,7 @@ std::string cycle_report_html(const CycleRequest& rq, const CycleResult& r) {
     o += report::figure(p);
   }
   o += "<p class=\"note\">Every figure from the twin running the cycle (docs/sizing.md \"Cycles\"); temperature from "
-       "its lumped thermal model at the last repetition's mean loss (A-SIZE-6).</p>\n</body>\n</html>\n";
+       "its lumped thermal model at the last repetition's mean loss (A-SIZE-6).</p>\n" + io::html_page_close();
   return o;
 }
 
