@@ -213,8 +213,8 @@ MotorCommand Device::Impl::tick(int64_t dt_ns, const SensorReadings& sensors) {
   encoder = sensors.encoder_counts;
   supply_V = sensors.supply_V;
   temperature_C = sensors.temperature_C;
+  const double dt_s = ns_to_seconds(dt_ns);
   if (dt_ns > 0) { // encoder speed, first-order filtered (A-MON-3)
-    const double dt_s = ns_to_seconds(dt_ns);
     const double raw = internal_counts_to_rad(encoder - prev_encoder) / dt_s;
     velocity_rad_s += (raw - velocity_rad_s) * std::min(1.0, dt_s / kVelocityFilter_s);
   }
@@ -224,7 +224,7 @@ MotorCommand Device::Impl::tick(int64_t dt_ns, const SensorReadings& sensors) {
   run_diagnostics(dt_ns);
   if (boot_mode) return {};
   run_monitors(dt_ns);
-  const MotorCommand cmd = control(dt_ns);
+  const MotorCommand cmd = control(dt_ns, dt_s);
   record_move_step();
   return cmd;
 }

@@ -31,7 +31,8 @@ struct Device::Impl : DeviceConfiguration, DeviceState, DeviceMonitors {
   MotorModel motor; // constant
 
   Impl() = default;
-  explicit Impl(const DeviceSnapshot& s) : DeviceConfiguration(s.configuration), DeviceState(s.state), DeviceMonitors(s.monitors) {}
+  explicit Impl(const DeviceSnapshot& s)
+      : DeviceConfiguration(s.configuration), DeviceState(s.state), DeviceMonitors(s.monitors) {}
   DeviceSnapshot snapshot() const {
     return {static_cast<const DeviceConfiguration&>(*this), static_cast<const DeviceState&>(*this),
             static_cast<const DeviceMonitors&>(*this)};
@@ -54,7 +55,7 @@ struct Device::Impl : DeviceConfiguration, DeviceState, DeviceMonitors {
   // device_motion.cpp: the control step and the move records
   void start_move();
   void start_stop_profile();
-  MotorCommand control(int64_t dt_ns);
+  MotorCommand control(int64_t dt_ns, double dt_s); // dt_s = dt_ns / 1e9, derived once per tick
   double user_deg(int64_t phys_counts) const;     // process-data degrees of a physical position
   double setpoint_user_deg() const;               // the setpoint now, process-data degrees
   void record_move_step();                        // the move recorder's control step

@@ -1,9 +1,10 @@
 // ISDU routing of the Device (manual chapter 6): volatile diagnostics and
 // the device-side system commands here, stored parameters in ParameterStore.
 #include <algorithm>
-#include "device_logic/byte_order.hpp"
 #include <cmath>
+#include <utility>
 
+#include "device_logic/byte_order.hpp"
 #include "device_logic/device_impl.hpp"
 #include "device_logic/parameter_table.hpp"
 #include "device_logic/position_frame.hpp"
@@ -60,15 +61,20 @@ IsduResult Device::Impl::read(uint16_t index, uint8_t sub) const {
   auto plain = [&](ParamType type, int64_t value) {
     return sub == 0 ? number(type, value) : isdu_error(kIsduSubindexNotAvailable);
   };
+  auto octets = [&](std::vector<uint8_t> bytes) {
+    return sub == 0 ? isdu_data(std::move(bytes)) : isdu_error(kIsduSubindexNotAvailable);
+  };
   switch (index) {
     case kIndexSystemCommand: return isdu_error(kIsduAccessDenied); // system command: write-only
     case param::kErrorCounter.index: return plain(ParamType::UInt16, error_counter);
     case param::kDeviceStatus.index: return plain(ParamType::UInt8, device_status());
-    case param::kDetailedDeviceStatus.index: return sub == 0 ? isdu_data(detailed_device_status()) : isdu_error(kIsduSubindexNotAvailable);
-    case param::kProcessDataInImage.index: return sub == 0 ? isdu_data({last_in_frame.begin(), last_in_frame.end()}) : isdu_error(kIsduSubindexNotAvailable);
-    case param::kProcessDataOutImage.index: return sub == 0 ? isdu_data({last_out_frame.begin(), last_out_frame.end()}) : isdu_error(kIsduSubindexNotAvailable);
-    case param::kTemperature.index: return plain(ParamType::UInt8, std::clamp<int64_t>(std::llround(temperature_C * 2.0), 0, 255));
-    case param::kMotorVoltage.index: return plain(ParamType::UInt16, std::clamp<int64_t>(std::llround(supply_V * 1000.0), 0, 65535));
+    case param::kDetailedDeviceStatus.index: return octets(detailed_device_status());
+    case param::kProcessDataInImage.index: return octets({last_in_frame.begin(), last_in_frame.end()});
+    case param::kProcessDataOutImage.index: return octets({last_out_frame.begin(), last_out_frame.end()});
+    case param::kTemperature.index: // raw 0.5 degC
+      return plain(ParamType::UInt8, std::clamp<int64_t>(std::llround(temperature_C * 2.0), 0, 255));
+    case param::kMotorVoltage.index: // raw mV
+      return plain(ParamType::UInt16, std::clamp<int64_t>(std::llround(supply_V * 1000.0), 0, 65535));
     case param::kErrorCauses: {
       if (sub > 8) return isdu_error(kIsduSubindexNotAvailable);
       std::vector<uint8_t> all;

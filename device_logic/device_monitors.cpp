@@ -1,68 +1,14 @@
 // Monitors and indicators of the Device: the link watchdog (manual 5),
 // temperature and motor voltage (7.2, 7.3, index 85), the tracking error
 // (index 87), the locator timeout (6.6), persistent diagnostics (6.3) and
-// the LED band (3.1, index 83). The monitors' own step functions first,
-// then how the Device acts on their verdicts.
+// the LED band (3.1, index 83): how the Device acts on its monitors'
+// verdicts (the monitors themselves: device_monitors.hpp).
 #include <algorithm>
 #include <cmath>
 
 #include "device_logic/device_impl.hpp"
 
 namespace sreh {
-
-// A-LINK-1: max(20 ms, 3 master cycles).
-int64_t LinkWatchdog::timeout_ns() const { return std::max(kLinkWatchdogMin_ns, kLinkWatchdogCycles * master_cycle_ns); }
-
-bool LinkWatchdog::step(int64_t dt_ns) {
-  since_exchange_ns += dt_ns;
-  if (!link_up || since_exchange_ns <= timeout_ns()) return false;
-  link_up = false;
-  return true;
-}
-
-uint8_t VoltageMonitor::step(double supply_V, double min_V, double max_V, int64_t dt_ns) {
-  uint8_t code = 0;
-  if (supply_V < min_V) code = cause::kVoltageLow;
-  else if (supply_V > max_V) code = cause::kVoltageHigh;
-  if (code != 0 && code == cause) out_ns += dt_ns;
-  else out_ns = 0;
-  cause = code;
-  return code != 0 && out_ns >= kVoltageDebounce_ns ? code : 0;
-}
-
-// The warning clears itself below the hysteresis band (A-MON-2).
-TemperatureMonitor::Verdict TemperatureMonitor::step(double temperature_C, bool warning_now) {
-  Verdict v;
-  v.over_temperature = temperature_C >= kTemperatureError_C;
-  if (temperature_C >= kTemperatureWarning_C) v.warning = true;
-  else if (temperature_C < kTemperatureWarning_C - kTemperatureHysteresis_C) v.warning = false;
-  else v.warning = warning_now;
-  return v;
-}
-
-bool TrackingMonitor::step(double error_deg, double limit_deg, bool active) {
-  step_error_deg = error_deg;
-  peak_error_deg = std::max(peak_error_deg, error_deg);
-  return active && error_deg > limit_deg;
-}
-
-DiagnosticsClock::Minutes DiagnosticsClock::step(int64_t dt_ns, bool motor_on, bool moving, bool temp_warning) {
-  auto count = [dt_ns](int64_t& rem) {
-    rem += dt_ns;
-    const int64_t whole = rem / kMinute_ns;
-    rem -= whole * kMinute_ns;
-    return whole;
-  };
-  Minutes m;
-  m.powered = count(powered_rem_ns);
-  if (motor_on) m.motor_on = count(motor_on_rem_ns);
-  if (moving) m.moving = count(moving_rem_ns);
-  if (temp_warning) m.temp_warning = count(temp_warn_rem_ns);
-  return m;
-}
-
-// ---------------------------------------------------------------------------
-// The Device acting on its monitors
 
 // Manual 5: the link is interrupted.
 void Device::Impl::link_lost() {
@@ -81,8 +27,10 @@ void Device::Impl::run_monitors(int64_t dt_ns) {
 
   // Motor voltage (manual 6.2 index 85, 7.2 114.4, 7.3 115.2): an error with
   // the motor on, a warning with it off.
-  const double lo = raw_to_display(param::kMotorVoltageMin, store.raw(param::kMotorVoltageMin)); // V
-  const double hi = raw_to_display(param::kMotorVoltageMax, store.raw(param::kMotorVoltageMax));
+  static const double min_scale = parameter_row(param::kMotorVoltageMin).display_scale; // mV -> V
+  static const double max_scale = parameter_row(param::kMotorVoltageMax).display_scale;
+  const double lo = static_cast<double>(store.raw(param::kMotorVoltageMin)) * min_scale;
+  const double hi = static_cast<double>(store.raw(param::kMotorVoltageMax)) * max_scale;
   const uint8_t out = voltage.step(supply_V, lo, hi, dt_ns);
   if (out != 0 && motor_on()) raise_error(ErrorBit::MotorVoltage, out);
   set_warning(WarningBit::MotorVoltage, out != 0 && !motor_on() ? out : 0);

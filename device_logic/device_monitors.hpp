@@ -5,7 +5,10 @@
 // Device turns verdicts into errors, warnings and counter updates. Volatile:
 // a power cycle starts them afresh. Timing constants: ASSUMPTIONS.md.
 #pragma once
+#include <algorithm>
 #include <cstdint>
+
+#include "device_logic/faults.hpp"
 
 namespace sreh {
 
@@ -23,10 +26,15 @@ struct LinkWatchdog {
   bool link_up = false; // cycles arriving (watchdog not expired)
 
   void feed() { since_exchange_ns = 0, link_up = true; } // a master cycle arrived
-  int64_t timeout_ns() const;
+  int64_t timeout_ns() const { return std::max(kLinkWatchdogMin_ns, kLinkWatchdogCycles * master_cycle_ns); }
   // One control step; true exactly once when the link is lost (it was up and
   // the silence now exceeds the timeout).
-  bool step(int64_t dt_ns);
+  bool step(int64_t dt_ns) {
+    since_exchange_ns += dt_ns;
+    if (!link_up || since_exchange_ns <= timeout_ns()) return false;
+    link_up = false;
+    return true;
+  }
   bool operator==(const LinkWatchdog&) const = default;
 };
 
@@ -39,7 +47,15 @@ struct VoltageMonitor {
 
   // The cause code once the supply has been outside [min_V, max_V] for the
   // debounce time, else 0.
-  uint8_t step(double supply_V, double min_V, double max_V, int64_t dt_ns);
+  uint8_t step(double supply_V, double min_V, double max_V, int64_t dt_ns) {
+    uint8_t code = 0;
+    if (supply_V < min_V) code = cause::kVoltageLow;
+    else if (supply_V > max_V) code = cause::kVoltageHigh;
+    if (code != 0 && code == cause) out_ns += dt_ns;
+    else out_ns = 0;
+    cause = code;
+    return code != 0 && out_ns >= kVoltageDebounce_ns ? code : 0;
+  }
   bool operator==(const VoltageMonitor&) const = default;
 };
 
@@ -54,7 +70,14 @@ struct TemperatureMonitor {
     bool over_temperature = false; // 114.3
     bool warning = false;          // 115.1 on after this step
   };
-  static Verdict step(double temperature_C, bool warning_now);
+  static Verdict step(double temperature_C, bool warning_now) {
+    Verdict v;
+    v.over_temperature = temperature_C >= kTemperatureError_C;
+    if (temperature_C >= kTemperatureWarning_C) v.warning = true;
+    else if (temperature_C < kTemperatureWarning_C - kTemperatureHysteresis_C) v.warning = false;
+    else v.warning = warning_now;
+    return v;
+  }
   bool operator==(const TemperatureMonitor&) const = default;
 };
 
@@ -67,7 +90,11 @@ struct TrackingMonitor {
 
   // One control step with the motor on; true: the error exceeds the limit
   // while monitoring is active (114.5).
-  bool step(double error_deg, double limit_deg, bool active);
+  bool step(double error_deg, double limit_deg, bool active) {
+    step_error_deg = error_deg;
+    peak_error_deg = std::max(peak_error_deg, error_deg);
+    return active && error_deg > limit_deg;
+  }
   void idle() { step_error_deg = 0; } // a step with the motor off: no setpoint
   double take_peak() {
     const double p = peak_error_deg;
@@ -85,8 +112,23 @@ struct DiagnosticsClock {
   struct Minutes {
     int64_t powered = 0, motor_on = 0, moving = 0, temp_warning = 0; // whole minutes completed this step
   };
-  Minutes step(int64_t dt_ns, bool motor_on, bool moving, bool temp_warning);
+  Minutes step(int64_t dt_ns, bool motor_on, bool moving, bool temp_warning) {
+    Minutes m;
+    m.powered = count(powered_rem_ns, dt_ns);
+    if (motor_on) m.motor_on = count(motor_on_rem_ns, dt_ns);
+    if (moving) m.moving = count(moving_rem_ns, dt_ns);
+    if (temp_warning) m.temp_warning = count(temp_warn_rem_ns, dt_ns);
+    return m;
+  }
   bool operator==(const DiagnosticsClock&) const = default;
+
+ private:
+  static int64_t count(int64_t& rem_ns, int64_t dt_ns) {
+    rem_ns += dt_ns;
+    int64_t whole = 0;
+    while (rem_ns >= kMinute_ns) rem_ns -= kMinute_ns, ++whole; // no division on the common path
+    return whole;
+  }
 };
 
 // Locator (manual 6.6, commands 126/127): the LED band flashes white and

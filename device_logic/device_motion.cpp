@@ -45,8 +45,7 @@ void Device::Impl::start_stop_profile() {
   phase = MotionPhase::Travel;
 }
 
-MotorCommand Device::Impl::control(int64_t dt_ns) {
-  const double dt_s = ns_to_seconds(dt_ns);
+MotorCommand Device::Impl::control(int64_t dt_ns, double dt_s) {
   const double measured = internal_counts_to_rad(encoder);
   tracking.idle();
   if (!motor_on()) { // no setpoint: the flange turns freely (manual 3.1 Motor Off)

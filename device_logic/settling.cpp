@@ -23,7 +23,9 @@ void SettlingMonitor::start(const SettlingParameters& p) { // point (b)
   result_ = SettlingResult::Settling;
 }
 
-SettlingResult SettlingMonitor::update(double error_rad, double dt_s) { return update_ns(error_rad, seconds_to_ns(dt_s)); }
+SettlingResult SettlingMonitor::update(double error_rad, double dt_s) {
+  return update_ns(error_rad, seconds_to_ns(dt_s));
+}
 
 SettlingResult SettlingMonitor::update_ns(double error_rad, int64_t dt_ns) {
   if (result_ != SettlingResult::Settling) return result_;
