@@ -10,16 +10,14 @@
 #include <string>
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
 #include "io/atomic_file.hpp"
 #include "io/output_path.hpp"
-#include "io/text.hpp"
 #include "scenarios/limits.hpp"
-#include "scenarios/result_json.hpp"
 #include "scenarios/runner.hpp"
 #include "scenarios/scenario_parser.hpp"
 #include "tools/command.hpp"
+#include "tools/run_output.hpp"
 #include "twin/plant.hpp"
 #include "twin/trace.hpp"
 #ifdef SREH_WITH_RENDER
@@ -112,18 +110,6 @@ void write_nvm(const RunArgs& a, const RunResult& r) {
   io::write_file_atomic(a.save_nvm, [&](std::ostream& out) {
     out.write(reinterpret_cast<const char*>(r.nvm_image.data()), static_cast<std::streamsize>(r.nvm_image.size()));
   });
-}
-
-void print_summary(const RunResult& r) {
-  std::cout << (r.passed ? "PASS" : "FAIL") << "  " << io::escape_control(r.name) << "\n";
-  for (const auto& f : r.failures) std::cout << "  " << io::escape_control(f) << "\n";
-  std::size_t passed = 0;
-  for (const auto& c : r.checks) passed += c.passed ? 1 : 0;
-  std::cout << fmt::format("  {} of {} checks held, {} moves, {:.3f} s simulated{}\n", passed, r.checks.size(),
-                           r.moves.size(), r.sim_time_s, r.stopped_early ? " (stopped at the first failure)" : "");
-  std::cout << fmt::format("  final: {} at {:.3f} deg, error_code {}, warning_code {}\n",
-                           state_name(r.final_state.state), r.final_state.position_deg, r.final_state.error_code,
-                           r.final_state.warning_code);
 }
 
 #ifdef SREH_WITH_RENDER
@@ -263,13 +249,21 @@ int run_command(RunArgs a) {
     }
   }
   // The report plots the whole trace, so it keeps it in memory (and --trace
-  // is written from there after the run, the same bytes); --trace alone streams.
+  // is written from there after the run, the same bytes), and draws every
+  // check and move; without it, all that grows with run length streams.
   const bool in_memory = !a.report.empty();
+  std::optional<RunOutput> output;
+  try {
+    output.emplace(a.json, in_memory);
+  } catch (const std::runtime_error& e) {
+    throw InputError(e.what());
+  }
   try {
     Progress progress(isatty(STDERR_FILENO) != 0);
     RunOptions options;
     options.limits = a.limits;
     options.record_trace = in_memory;
+    output->attach(options);
     if (trace && !in_memory) options.trace_sink = [&](const TraceRow& row) { trace->row(row); };
 #ifdef SREH_WITH_RENDER
     std::optional<VideoHook> video;
@@ -310,12 +304,7 @@ int run_command(RunArgs a) {
 #ifdef SREH_WITH_RENDER
   if (!a.report.empty()) write_report_dir(a, result);
 #endif
-  if (a.json) {
-    // Names and texts come from the file: invalid UTF-8 is replaced, never an internal error.
-    std::cout << to_json(result).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
-  } else {
-    print_summary(result);
-  }
+  output->print(std::cout, result);
   return result.passed ? 0 : 1;
 }
 
