@@ -4,8 +4,6 @@
 #include <ostream>
 #include <string>
 
-#include <nlohmann/json.hpp>
-
 #include "io/spool.hpp"
 #include "scenarios/result_json.hpp"
 
@@ -14,14 +12,15 @@ namespace {
 
 // As the CLI prints it: names and texts come from the file, invalid UTF-8 is
 // replaced, never an internal error.
-std::string dump(const nlohmann::json& j) { return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace); }
+std::string dump(const nlohmann::json& j, int indent) {
+  return j.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
+}
 
 // nlohmann's pretty printer indents a value nested `depth` levels deep by
 // 2 * depth more spaces on every line after its first. A raw newline never
 // occurs inside a dumped string (it is escaped), so every '\n' is one of
 // the printer's own line breaks.
-void write_indented(std::ostream& out, const std::string& text, int depth) {
-  const std::string pad(static_cast<std::size_t>(2 * depth), ' ');
+void write_indented(std::ostream& out, const std::string& text, const std::string& pad) {
   std::size_t from = 0;
   for (std::size_t nl = text.find('\n'); nl != std::string::npos; nl = text.find('\n', from)) {
     out.write(text.data() + from, static_cast<std::streamsize>(nl + 1 - from));
@@ -31,23 +30,39 @@ void write_indented(std::ostream& out, const std::string& text, int depth) {
   out.write(text.data() + from, static_cast<std::streamsize>(text.size() - from));
 }
 
+// The printer's layout of the top-level object (depth 0) and of its array
+// members (depth 1): pretty "{\n  "k": [\n    e1,\n    e2\n  ]\n}",
+// compact {"k":[e1,e2]}; empty "[]" and "{}" in both.
+struct Layout {
+  int indent;
+  bool pretty() const { return indent >= 0; }
+  std::string pad(int depth) const { return pretty() ? std::string(static_cast<std::size_t>(indent * depth), ' ') : ""; }
+  std::string open(bool first, int depth) const {
+    const std::string sep = first ? "" : ",";
+    return pretty() ? sep + "\n" + pad(depth) : sep;
+  }
+  std::string close(int depth) const { return pretty() ? "\n" + pad(depth) : ""; }
+  const char* colon() const { return pretty() ? ": " : ":"; }
+  void value(std::ostream& out, const nlohmann::json& j, int depth) const {
+    write_indented(out, dump(j, indent), pad(depth));
+  }
+};
+
 // One array member of the top-level object, elements appended as they come.
-// Pretty-printed, an array at depth 1 is "[\n    e1,\n    e2\n  ]", or "[]".
 class ArraySpool {
  public:
-  void add(const nlohmann::json& element) {
+  void add(const Layout& layout, const nlohmann::json& element) {
     std::ostream& out = spool_.stream();
-    out << (count_++ == 0 ? "\n    " : ",\n    ");
-    write_indented(out, dump(element), 2);
+    out << layout.open(count_++ == 0, 2);
+    layout.value(out, element, 2);
   }
-  void write(std::ostream& out) {
+  void write(std::ostream& out, const Layout& layout) {
     out << '[';
-    if (count_ == 0) {
-      out << ']';
-      return;
+    if (count_ > 0) {
+      spool_.copy_to(out);
+      out << layout.close(1);
     }
-    spool_.copy_to(out);
-    out << "\n  ]";
+    out << ']';
   }
 
  private:
@@ -58,6 +73,8 @@ class ArraySpool {
 } // namespace
 
 struct ResultJsonStream::Impl {
+  explicit Impl(int indent) : layout{indent < 0 ? -1 : indent} {}
+  Layout layout;
   // Keyed by the member names to_json gives these arrays.
   std::map<std::string, ArraySpool> arrays;
   ArraySpool& checks = arrays["checks"];
@@ -65,32 +82,35 @@ struct ResultJsonStream::Impl {
   ArraySpool& moves = arrays["moves"];
 };
 
-ResultJsonStream::ResultJsonStream() : impl_(std::make_unique<Impl>()) {}
+ResultJsonStream::ResultJsonStream(int indent) : impl_(std::make_unique<Impl>(indent)) {}
 ResultJsonStream::~ResultJsonStream() = default;
 
 void ResultJsonStream::attach(RunOptions& options) {
   Impl& s = *impl_;
-  options.check_sink = [&s](const CheckRecord& c) { s.checks.add(check_json(c)); };
-  options.failure_sink = [&s](const std::string& f) { s.failures.add(nlohmann::json(f)); };
-  options.move_sink = [&s](const MoveRecord& m) { s.moves.add(move_json(m)); };
+  options.check_sink = [&s](const CheckRecord& c) { s.checks.add(s.layout, check_json(c)); };
+  options.failure_sink = [&s](const std::string& f) { s.failures.add(s.layout, nlohmann::json(f)); };
+  options.move_sink = [&s](const MoveRecord& m) { s.moves.add(s.layout, move_json(m)); };
 }
 
-void ResultJsonStream::write(std::ostream& out, const RunResult& result) {
+void ResultJsonStream::write(std::ostream& out, const RunResult& result, const nlohmann::json& extra) {
   // Everything but the streamed arrays comes from to_json, so the members,
   // their order (sorted, nlohmann::json's object) and their values are its own.
-  const nlohmann::json head = to_json(result);
+  nlohmann::json head = to_json(result);
+  head.update(extra);
+  const Layout& layout = impl_->layout;
   out << '{';
   bool first = true;
   for (const auto& [key, value] : head.items()) {
-    out << (first ? "\n  " : ",\n  ") << dump(nlohmann::json(key)) << ": ";
+    out << layout.open(first, 1) << dump(nlohmann::json(key), -1) << layout.colon();
     first = false;
     if (auto a = impl_->arrays.find(key); a != impl_->arrays.end()) {
-      a->second.write(out);
+      a->second.write(out, layout);
     } else {
-      write_indented(out, dump(value), 1);
+      layout.value(out, value, 1);
     }
   }
-  out << (first ? "}" : "\n}");
+  if (!first) out << layout.close(0);
+  out << '}';
 }
 
 } // namespace sreh

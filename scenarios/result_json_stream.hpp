@@ -2,11 +2,13 @@
 // grow with the run (checks, failures, moves) are written to io::Spool
 // temporaries as the runner hands them over, and the JSON object is
 // assembled at the end by copying them in. The bytes are exactly those of
-// to_json(result).dump(2, ' ', false, replace) on the same run with
+// to_json(result).dump(indent, ' ', false, replace) on the same run with
 // everything kept in memory (tests/scenarios/result_json_stream_test.cpp).
 #pragma once
 #include <iosfwd>
 #include <memory>
+
+#include <nlohmann/json.hpp>
 
 #include "scenarios/runner.hpp"
 
@@ -14,8 +16,10 @@ namespace sreh {
 
 class ResultJsonStream {
  public:
-  // Throws std::runtime_error if no temporary file can be created.
-  ResultJsonStream();
+  // indent 2: as `run FILE --json` prints it; -1: compact, on one line (the
+  // JSON Lines of `run DIR --json`). Throws std::runtime_error if no
+  // temporary file can be created.
+  explicit ResultJsonStream(int indent = 2);
   ~ResultJsonStream();
   ResultJsonStream(const ResultJsonStream&) = delete;
   ResultJsonStream& operator=(const ResultJsonStream&) = delete;
@@ -25,7 +29,8 @@ class ResultJsonStream {
   void attach(RunOptions& options);
   // The whole object (without a final newline) for the finished run: its
   // streamed arrays from the spools, everything else from `result`.
-  void write(std::ostream& out, const RunResult& result);
+  // `extra` members (an object) are added to to_json's, e.g. the file name.
+  void write(std::ostream& out, const RunResult& result, const nlohmann::json& extra = nlohmann::json::object());
 
  private:
   struct Impl;

@@ -32,6 +32,8 @@ std::string seconds(double s) { return fmt::format("{:g} s", s); }
 
 struct StopRun {}; // stop_on_failure: unwinds the step loop
 
+std::unique_ptr<Twin> make_twin(const Scenario& s, const TwinConfig& config);
+
 class ScenarioRun {
  public:
   ScenarioRun(const Scenario& s, const RunOptions& o) : s_(s), o_(o) {}
@@ -42,16 +44,7 @@ class ScenarioRun {
     config.record_trace = o_.record_trace;
     config.trace_sink = o_.trace_sink;
     config.move_sink = [this](const MoveRecord& m) { finished_move(m); };
-    try {
-      twin_ = std::make_unique<Twin>(config);
-    } catch (const std::invalid_argument& e) {
-      // One line on stderr (interfaces.md): MuJoCo's messages span several.
-      std::string why = e.what();
-      std::replace(why.begin(), why.end(), '\n', ' ');
-      const bool has_load = !std::holds_alternative<NoLoad>(s_.load);
-      throw ScenarioError(has_load ? s_.load_loc : SourceLoc{s_.file, 0, 0},
-                          fmt::format("{}the twin rejects this setup: {}", has_load ? "load: " : "", why));
-    }
+    twin_ = make_twin(s_, config);
     r_.name = s_.name;
     const Snapshot first = take_snapshot(*twin_);
     r_.min_supply_V = r_.max_supply_V = first.telemetry.supply_V;
@@ -416,6 +409,21 @@ class ScenarioRun {
   Variables vars_;   // save_as / save, by name
 };
 
+// The scenario's twin; a setup the twin rejects (e.g. an invalid MJCF load)
+// is the scenario's error, at its load line.
+std::unique_ptr<Twin> make_twin(const Scenario& s, const TwinConfig& config) {
+  try {
+    return std::make_unique<Twin>(config);
+  } catch (const std::invalid_argument& e) {
+    // One line on stderr (interfaces.md): MuJoCo's messages span several.
+    std::string why = e.what();
+    std::replace(why.begin(), why.end(), '\n', ' ');
+    const bool has_load = !std::holds_alternative<NoLoad>(s.load);
+    throw ScenarioError(has_load ? s.load_loc : SourceLoc{s.file, 0, 0},
+                        fmt::format("{}the twin rejects this setup: {}", has_load ? "load: " : "", why));
+  }
+}
+
 std::vector<uint8_t> read_bytes(const std::string& path, const SourceLoc& loc) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw ScenarioError(loc, fmt::format("device.nvm_image: cannot read '{}'", path));
@@ -436,6 +444,11 @@ TwinConfig make_twin_config(const Scenario& s) {
   if (s.device.nvm_image_path) c.nvm_image = read_bytes(*s.device.nvm_image_path, s.device.nvm_image_loc);
   c.record_trace = false;
   return c;
+}
+
+void check_setup(const Scenario& scenario, const Limits& limits) {
+  check_run_bound(scenario, limits);
+  make_twin(scenario, make_twin_config(scenario));
 }
 
 RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {

@@ -84,4 +84,9 @@ TwinConfig make_twin_config(const Scenario& scenario);
 // options.limits (before running).
 RunResult run_scenario(const Scenario& scenario, const RunOptions& options = {});
 
+// Everything run_scenario refuses before the first cycle (the run bound, the
+// NVM image file, a setup the twin rejects), without running: throws
+// ScenarioError as run_scenario would. For checking a batch before any runs.
+void check_setup(const Scenario& scenario, const Limits& limits);
+
 } // namespace sreh

@@ -18,13 +18,21 @@ namespace sreh::tools {
 class RunOutput {
  public:
   // Throws std::runtime_error if a temporary file cannot be created.
-  RunOutput(bool json, bool in_memory);
+  // `json_line`: --json as one compact line (`run DIR --json`, JSON Lines).
+  RunOutput(bool json, bool in_memory, bool json_line = false);
   void attach(RunOptions& options); // before the run; must outlive it
+  // `run FILE`: the summary, or the --json object.
   void print(std::ostream& out, const RunResult& result);
+  // `run DIR`, per file: "PASS  FILE  NAME  (S s simulated, W s)" and the
+  // failures under it, or --json: the object of `run FILE --json` with
+  // "file", on one line.
+  void print_file_line(std::ostream& out, const RunResult& result, const std::string& file, double wall_s);
 
  private:
+  void print_failures(std::ostream& out, const RunResult& result);
   bool json_;
   bool in_memory_;
+  bool json_line_;
   std::optional<ResultJsonStream> json_stream_;
   std::optional<io::Spool> failure_lines_; // text: "  <failure>\n" each
 };
