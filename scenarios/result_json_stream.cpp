@@ -33,15 +33,18 @@ void write_indented(std::ostream& out, const std::string& text, const std::strin
 // The printer's layout of the top-level object (depth 0) and of its array
 // members (depth 1): pretty "{\n  "k": [\n    e1,\n    e2\n  ]\n}",
 // compact {"k":[e1,e2]}; empty "[]" and "{}" in both.
+// (Written piece by piece: GCC 12 warns wrongly on string concatenation here.)
 struct Layout {
   int indent;
   bool pretty() const { return indent >= 0; }
-  std::string pad(int depth) const { return pretty() ? std::string(static_cast<std::size_t>(indent * depth), ' ') : ""; }
-  std::string open(bool first, int depth) const {
-    const std::string sep = first ? "" : ",";
-    return pretty() ? sep + "\n" + pad(depth) : sep;
+  std::string pad(int depth) const { return std::string(pretty() ? static_cast<std::size_t>(indent * depth) : 0u, ' '); }
+  void open(std::ostream& out, bool first, int depth) const {
+    if (!first) out << ',';
+    if (pretty()) out << '\n' << pad(depth);
   }
-  std::string close(int depth) const { return pretty() ? "\n" + pad(depth) : ""; }
+  void close(std::ostream& out, int depth) const {
+    if (pretty()) out << '\n' << pad(depth);
+  }
   const char* colon() const { return pretty() ? ": " : ":"; }
   void value(std::ostream& out, const nlohmann::json& j, int depth) const {
     write_indented(out, dump(j, indent), pad(depth));
@@ -53,14 +56,14 @@ class ArraySpool {
  public:
   void add(const Layout& layout, const nlohmann::json& element) {
     std::ostream& out = spool_.stream();
-    out << layout.open(count_++ == 0, 2);
+    layout.open(out, count_++ == 0, 2);
     layout.value(out, element, 2);
   }
   void write(std::ostream& out, const Layout& layout) {
     out << '[';
     if (count_ > 0) {
       spool_.copy_to(out);
-      out << layout.close(1);
+      layout.close(out, 1);
     }
     out << ']';
   }
@@ -101,7 +104,8 @@ void ResultJsonStream::write(std::ostream& out, const RunResult& result, const n
   out << '{';
   bool first = true;
   for (const auto& [key, value] : head.items()) {
-    out << layout.open(first, 1) << dump(nlohmann::json(key), -1) << layout.colon();
+    layout.open(out, first, 1);
+    out << dump(nlohmann::json(key), -1) << layout.colon();
     first = false;
     if (auto a = impl_->arrays.find(key); a != impl_->arrays.end()) {
       a->second.write(out, layout);
@@ -109,7 +113,7 @@ void ResultJsonStream::write(std::ostream& out, const RunResult& result, const n
       layout.value(out, value, 1);
     }
   }
-  if (!first) out << layout.close(0);
+  if (!first) layout.close(out, 0);
   out << '}';
 }
 

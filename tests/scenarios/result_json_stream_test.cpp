@@ -38,11 +38,10 @@ std::string streamed_json(const std::string& text, RunResult* out = nullptr, int
 }
 
 // Passing and failing checks (two of them in a repeat), a finished move and
-// one still open at the end, run metrics, a name with invalid UTF-8 and
-// control characters (replaced / escaped the same way in both paths).
-constexpr const char* kBusyRun = "name: \"busy \\x01 run \\t \xff\"\n"
-                                 R"(load: {inertia_gcm2: 2000}
-expect:
+// one still open at the end, run metrics, a name with control characters,
+// a quote, a backslash and a non-ASCII letter (escaped the same way in both paths).
+constexpr const char* kBusyRun = "name: \"busy \\x01 run \\t \xC3\xBC \\\" \\\\\"\n"
+                                 R"(expect:
   moves: 2
   moves_completed: 1
   max_settling_s: 0.5
@@ -102,7 +101,7 @@ expect:
 steps:
   - pd: {motor_on: 1}
   - wait_until: {state: Ready, within_s: 0.02}
-  - expect: {state: Error}
+  - expect: {state: ErrorOn}
   - expect: {state: Ready}
 )";
   EXPECT_EQ(streamed_json(text), in_memory_json(text));
