@@ -1,10 +1,11 @@
 // `sreh-twin run SCENARIO.yaml`: simulate a scenario and check its
 // expectations (interfaces.md). Exit 0 all held, 1 a check failed, 2 bad input.
+// `run DIR`: a folder of them (tools/run_folder.cpp).
 #include <unistd.h>
 
 #include <chrono>
-#include <filesystem>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <regex>
@@ -344,7 +345,7 @@ int run_command(RunArgs a) {
 
 SREH_REGISTER_COMMAND(10, [](CLI::App& app, int& exit_code) {
   auto args = std::make_shared<RunArgs>();
-  CLI::App* cmd = app.add_subcommand("run", "Simulate a scenario and check its expectations (exit 0 held, 1 failed, 2 bad input)");
+  CLI::App* cmd = app.add_subcommand("run", "Simulate a scenario (or a folder of them) and check its expectations (exit 0 held, 1 failed, 2 bad input)");
   cmd->add_option("scenario", args->scenario,
                   "Scenario file (YAML, see scenarios/README.md), or a folder: every *.yaml in it, sorted by name, "
                   "one line each (exit 0 all held, 1 any failed, 2 bad input in any)")
