@@ -86,14 +86,13 @@ void BM_VideoFrames(benchmark::State& state) {
       d->qpos[0] = 0.05 * k; // the flange turns: every frame differs
       mj_kinematics(m, d);
       sreh::FrameInfo f;
-      f.t_s = k / 30.0 / 20.0;
+      f.row.t_s = k / 30.0 / 20.0;
       f.step = "4 wait_until";
-      f.target_deg = 270.0;
-      f.parameter_set = 1;
-      f.state = sreh::State::Busy;
-      f.setpoint_deg = 3.0 * k;
-      f.position_deg = 2.9 * k;
-      f.led = sreh::LedColor::Green;
+      f.row.pd_out = sreh::encode(sreh::ProcessDataOut{.target_position = 49152, .parameter_set = 1}); // 270 deg (2^16 counts/rev)
+      f.row.state = sreh::State::Busy;
+      f.row.setpoint_deg = 3.0 * k;
+      f.row.position_deg = 2.9 * k;
+      f.row.led = sreh::LedColor::Green;
       rec.add_frame(m, d, f);
     }
     rec.finish(); // ffmpeg reaped: its CPU time is in RUSAGE_CHILDREN now

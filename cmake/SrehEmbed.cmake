@@ -24,3 +24,13 @@ function(sreh_embed_files target)
   target_sources(${target} PRIVATE ${source} ${header})
   target_include_directories(${target} PUBLIC ${gen_dir})
 endfunction()
+
+# Debian's libjs-dygraphs (dygraph.min.js, dygraph.min.css), checked once:
+# the charting library the reports inline and serve's live page serves.
+set(SREH_DYGRAPHS_DIR /usr/share/javascript/dygraphs)
+set(SREH_DYGRAPHS_FILES ${SREH_DYGRAPHS_DIR}/dygraph.min.js ${SREH_DYGRAPHS_DIR}/dygraph.min.css)
+foreach(f ${SREH_DYGRAPHS_FILES})
+  if(NOT EXISTS ${f})
+    message(FATAL_ERROR "${f} missing: install Debian's libjs-dygraphs (./setup.sh)")
+  endif()
+endforeach()

@@ -82,6 +82,8 @@ std::string interactive_head() {
                      find_report_asset("dygraph.min.js"), kHelperJs);
 }
 
+std::string page_head() { return fmt::format("<style>{}</style>\n{}", kPageCss, interactive_head()); }
+
 std::string figure(const svg::Plot& p, bool interactive) {
   bool shared_x = interactive && !p.series.empty();
   for (const svg::Series& s : p.series) {

@@ -16,6 +16,10 @@ extern const char* const kPageCss;
 // that draws a figure. Once per page, before any figure.
 std::string interactive_head();
 
+// The <head> content of every report page: kPageCss and interactive_head(),
+// for io::html_page / io::html_page_open (the one page shell).
+std::string page_head();
+
 // The figure: SVG always; with `interactive` and series that share one x
 // vector also a dygraph, which replaces the SVG on screen once it is drawn.
 std::string figure(const svg::Plot& plot, bool interactive = true);

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "io/atomic_file.hpp"
+#include "io/html_page.hpp"
 #include "renders/figure.hpp"
 #include "renders/svg_plot.hpp"
 
@@ -33,7 +34,7 @@ struct Columns {
   bool any_external = false;
 };
 
-Columns columns(const std::vector<TraceRow>& rows) {
+Columns columns(std::span<const TraceRow> rows) {
   Columns c;
   for (const TraceRow& r : rows) {
     c.t.push_back(r.t_s);
@@ -191,9 +192,6 @@ std::string report_html(const ReportInput& in, const std::string& video_name) {
   const Columns c = columns(in.trace);
   std::string o;
   o.reserve(64 * 1024);
-  o += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
-  o += fmt::format("<title>sreh-twin: {}</title>\n<style>{}</style>\n{}</head>\n<body>\n", xml_escape(in.scenario_name),
-                   report::kPageCss, report::interactive_head());
   o += fmt::format("<h1>{}</h1>\n", xml_escape(in.scenario_name));
   o += summary(in);
 
@@ -251,8 +249,7 @@ std::string report_html(const ReportInput& in, const std::string& video_name) {
       o += fmt::format("<p class=\"note\">Settling plots of moves {} to {} left out; the table lists them all.</p>\n", n + 1, in.moves.size());
     }
   }
-  o += "</body>\n</html>\n";
-  return o;
+  return io::html_page("sreh-twin: " + in.scenario_name, report::page_head(), o);
 }
 
 fs::path write_report(const fs::path& dir, const ReportInput& in) {

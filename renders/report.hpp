@@ -6,6 +6,7 @@
 // No links out of the folder, no external fetches: it can be moved.
 #pragma once
 #include <filesystem>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -26,8 +27,9 @@ struct ReportInput {
   std::string scenario_name;
   bool passed = false;
   std::vector<ReportCheck> checks;
-  std::vector<TraceRow> trace;
-  std::vector<MoveRecord> moves;   // the device's records: each with its own set's tolerance and waiting time
+  // The run's own rows and records, not copies: they must outlive the call.
+  std::span<const TraceRow> trace;
+  std::span<const MoveRecord> moves; // the device's records: each with its own set's tolerance and waiting time
   double tracking_limit_deg = 0; // index 87 limit drawn on the tracking-error plot; 0: none
   std::string command_line;      // how the run was started
   std::string version;           // sreh-twin version

@@ -29,7 +29,7 @@ RunRecording::RunRecording(const mjModel* m) : impl_(std::make_unique<Impl>()) {
 
 RunRecording::~RunRecording() = default;
 
-void RunRecording::add(const mjData* d, const FrameInfo& info, double velocity_dps, bool moving) {
+void RunRecording::add(const mjData* d, const FrameInfo& info) {
   Impl& s = *impl_;
   const mjModel* m = s.model;
   if (info_.empty()) {
@@ -37,7 +37,8 @@ void RunRecording::add(const mjData* d, const FrameInfo& info, double velocity_d
     s.mocap.insert(s.mocap.end(), d->mocap_quat, d->mocap_quat + 4 * m->nmocap);
   }
   s.qpos.insert(s.qpos.end(), d->qpos, d->qpos + m->nq);
-  s.active.push_back(moving || std::abs(velocity_dps) > kTurningDps ? 1 : 0);
+  const TraceRow& r = info.row;
+  s.active.push_back(r.moving || r.settling || std::abs(r.velocity_dps) > kTurningDps ? 1 : 0);
   info_.push_back(info);
 }
 
@@ -47,11 +48,11 @@ std::vector<std::pair<double, double>> RunRecording::motion() const {
   for (std::size_t i = 0; i < a.size(); ++i) {
     if (!a[i]) continue;
     // A cycle's sample closes the cycle that led to it: motion from the one before.
-    const double t0 = i > 0 ? info_[i - 1].t_s : info_[i].t_s;
+    const double t0 = i > 0 ? info_[i - 1].row.t_s : info_[i].row.t_s;
     if (!runs.empty() && i > 0 && a[i - 1]) {
-      runs.back().second = info_[i].t_s;
+      runs.back().second = info_[i].row.t_s;
     } else {
-      runs.emplace_back(t0, info_[i].t_s);
+      runs.emplace_back(t0, info_[i].row.t_s);
     }
   }
   return runs;
@@ -76,10 +77,10 @@ VideoSummary RunRecording::render(VideoOptions o, bool fixed_slowmo, const TimeS
     for (uint64_t k = 0;; ++k) {
       const double t = rec.frame_time_s(k);
       if (t > t_end + 1e-9) break;
-      while (j + 1 < info_.size() && info_[j + 1].t_s <= t + 1e-9) ++j;
+      while (j + 1 < info_.size() && info_[j + 1].row.t_s <= t + 1e-9) ++j;
       // Between samples j and j+1: the pose and the continuous numbers blended.
-      const bool between = j + 1 < info_.size() && t > info_[j].t_s + 1e-9 && t >= info_.front().t_s;
-      const double w = between ? (t - info_[j].t_s) / (info_[j + 1].t_s - info_[j].t_s) : 0.0;
+      const bool between = j + 1 < info_.size() && t > info_[j].row.t_s + 1e-9 && t >= info_.front().row.t_s;
+      const double w = between ? (t - info_[j].row.t_s) / (info_[j + 1].row.t_s - info_[j].row.t_s) : 0.0;
       const double* q0 = s.qpos.data() + j * static_cast<std::size_t>(m->nq);
       const double* q1 = between ? q0 + m->nq : q0;
       for (int i = 0; i < m->nq; ++i) d->qpos[i] = q0[i] + w * (q1[i] - q0[i]);
@@ -90,12 +91,12 @@ VideoSummary RunRecording::render(VideoOptions o, bool fixed_slowmo, const TimeS
       if (between) {
         const FrameInfo& b = info_[j + 1];
         auto blend = [w](double a0, double a1) { return a0 + w * (a1 - a0); };
-        f.position_deg = blend(f.position_deg, b.position_deg);
-        f.setpoint_deg = blend(f.setpoint_deg, b.setpoint_deg);
-        f.tracking_error_deg = blend(f.tracking_error_deg, b.tracking_error_deg);
+        f.row.position_deg = blend(f.row.position_deg, b.row.position_deg);
+        f.row.setpoint_deg = blend(f.row.setpoint_deg, b.row.setpoint_deg);
+        f.row.tracking_error_deg = blend(f.row.tracking_error_deg, b.row.tracking_error_deg);
         if (f.ghost_joint_rad && b.ghost_joint_rad) f.ghost_joint_rad = blend(*f.ghost_joint_rad, *b.ghost_joint_rad);
       }
-      f.t_s = std::max(t, info_.front().t_s);
+      f.row.t_s = std::max(t, info_.front().row.t_s);
       rec.add_frame(m, d, f);
     }
     // The end state stays on screen a moment (A-RENDERS-12).

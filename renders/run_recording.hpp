@@ -2,7 +2,8 @@
 // overlay shows, once per IO-Link cycle, so that the video can be rendered
 // after the run with a time map built from where the motion actually was
 // (slow motion per move, idle compressed: renders/time_map.hpp).
-// About 100 bytes per cycle (50 kB per simulated second at 2 ms).
+// About 230 bytes per cycle (FrameInfo 208 + qpos; ~115 kB per simulated
+// second at 2 ms).
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -34,9 +35,10 @@ class RunRecording {
   RunRecording& operator=(const RunRecording&) = delete;
 
   // One sample per cycle, in time order. `d` is only read (qpos, mocap).
-  void add(const mjData_* d, const FrameInfo& info, double velocity_dps, bool moving);
+  // The row's moving / settling / velocity mark where the motion is.
+  void add(const mjData_* d, const FrameInfo& info);
   std::size_t samples() const { return info_.size(); }
-  double duration_s() const { return info_.empty() ? 0.0 : info_.back().t_s; }
+  double duration_s() const { return info_.empty() ? 0.0 : info_.back().row.t_s; }
   // Stretches where a trajectory runs or settles or the flange turns.
   std::vector<std::pair<double, double>> motion() const;
 

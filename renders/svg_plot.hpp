@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "io/html_page.hpp"
+
 namespace sreh::svg {
 
 struct Series {
@@ -82,6 +84,7 @@ std::vector<double> nice_ticks(double lo, double hi, int max_ticks = 6);
 std::vector<std::size_t> decimate_min_max(const std::vector<double>& x, const std::vector<double>& y, double x_lo,
                                           double x_hi, int columns);
 
-std::string xml_escape(std::string_view text);
+// One escaper for every page (io/html_page.hpp).
+inline std::string xml_escape(std::string_view text) { return io::html_escape(text); }
 
 } // namespace sreh::svg

@@ -15,6 +15,7 @@
 
 #include <fmt/format.h>
 
+#include "device_logic/units.hpp"
 #include "io/atomic_file.hpp"
 #include "renders/ffmpeg_encoder.hpp"
 #include "renders/png_writer.hpp"
@@ -25,18 +26,20 @@ namespace fs = std::filesystem;
 
 std::vector<std::pair<std::string, std::string>> overlay_lines(const FrameInfo& f) {
   auto code = [](uint8_t c) { return c == 0 ? std::string("none") : fmt::format("0x{:02X}", c); };
+  const TraceRow& r = f.row;
+  const ProcessDataOut out = decode_out(r.pd_out);
   std::vector<std::pair<std::string, std::string>> lines;
-  lines.emplace_back("t", fmt::format("{:.4f} s", f.t_s));
+  lines.emplace_back("t", fmt::format("{:.4f} s", r.t_s));
   if (!f.time_scale.empty()) lines.emplace_back("time scale", f.time_scale);
   if (!f.step.empty()) lines.emplace_back("step", f.step);
-  lines.emplace_back("state", std::string(state_name(f.state)));
-  if (f.target_deg) lines.emplace_back("target", fmt::format("{:.3f} deg", *f.target_deg));
-  if (f.parameter_set >= 0) lines.emplace_back("parameter set", fmt::format("{}", f.parameter_set));
-  lines.emplace_back("setpoint", fmt::format("{:.3f} deg", f.setpoint_deg));
-  lines.emplace_back("actual", fmt::format("{:.3f} deg", f.position_deg));
-  lines.emplace_back("tracking error", fmt::format("{:+.4f} deg", f.tracking_error_deg));
-  lines.emplace_back("error / warning", code(f.error_code) + " / " + code(f.warning_code));
-  lines.emplace_back("LED band", std::string(led_name(f.led)));
+  lines.emplace_back("state", std::string(state_name(r.state)));
+  lines.emplace_back("target", fmt::format("{:.3f} deg", wire_counts_to_deg(out.target_position)));
+  lines.emplace_back("parameter set", fmt::format("{}", out.parameter_set));
+  lines.emplace_back("setpoint", fmt::format("{:.3f} deg", r.setpoint_deg));
+  lines.emplace_back("actual", fmt::format("{:.3f} deg", r.position_deg));
+  lines.emplace_back("tracking error", fmt::format("{:+.4f} deg", r.tracking_error_deg));
+  lines.emplace_back("error / warning", code(r.error_code) + " / " + code(r.warning_code));
+  lines.emplace_back("LED band", std::string(led_name(r.led)));
   return lines;
 }
 
@@ -211,7 +214,7 @@ bool VideoRecorder::wants_frame(double t_s) const { return t_s + 1e-9 >= frame_t
 
 void VideoRecorder::add_frame(const mjModel* m, const mjData* d, const FrameInfo& info) {
   uint64_t count = 0;
-  while (wants_frame(info.t_s)) {
+  while (wants_frame(info.row.t_s)) {
     ++count;
     ++impl_->next_frame;
   }
@@ -227,16 +230,16 @@ void VideoRecorder::hold(const mjModel* m, const mjData* d, const FrameInfo& inf
   const uint64_t first = s.next_frame - count;
 
   SceneState scene;
-  scene.led = info.led;
+  scene.led = info.row.led;
   if (info.ghost_joint_rad) {
     scene.ghost_joint_rad = info.ghost_joint_rad;
   } else if (s.flange_qpos >= 0) {
-    scene.ghost_joint_rad = flange_angle_rad(m, d) + (info.setpoint_deg - info.position_deg) * std::numbers::pi / 180.0;
+    scene.ghost_joint_rad = flange_angle_rad(m, d) + (info.row.setpoint_deg - info.row.position_deg) * std::numbers::pi / 180.0;
   }
   if (s.options.overlay) {
     FrameInfo shown = info;
     if (s.options.time_map) {
-      const TimeSegment& seg = s.options.time_map->segment_at(info.t_s);
+      const TimeSegment& seg = s.options.time_map->segment_at(info.row.t_s);
       shown.time_scale = seg.label();
       if (seg.kind != TimeSegment::Kind::RealTime) scene.banner = seg.label();
     } else if (s.options.slowmo != 1.0) {

@@ -13,10 +13,10 @@
 #include <optional>
 #include <string>
 
-#include "device_logic/device_types.hpp"
 #include "renders/ffmpeg_encoder.hpp"
 #include "renders/offscreen.hpp"
 #include "renders/time_map.hpp"
+#include "twin/trace.hpp"
 
 struct mjModel_;
 struct mjData_;
@@ -43,23 +43,17 @@ struct VideoOptions {
   bool overlay = true;
 };
 
-// What the frame shows besides the MuJoCo state.
+// What the frame shows besides the MuJoCo state: the cycle's trace row as
+// the twin recorded it (time, state, positions, codes, LED band, and the
+// process data out whose target and parameter set the overlay shows), plus
+// what only a frame has.
 struct FrameInfo {
-  double t_s = 0;
-  State state = State::MotorOff;
-  double position_deg = 0;
-  double setpoint_deg = 0;
-  double tracking_error_deg = 0;
-  uint8_t error_code = 0;
-  uint8_t warning_code = 0;
-  LedColor led = LedColor::Off;
+  TraceRow row;
   // Flange joint angle of the planned setpoint (qpos sense, rad). Unset:
   // the flange joint angle + (setpoint - position), factory direction
   // (A-RENDERS-7).
   std::optional<double> ghost_joint_rad;
   std::string step;                  // "4 wait_until"; empty: not shown
-  std::optional<double> target_deg;  // target of the process data
-  int parameter_set = -1;            // motion parameter set of the process data; < 0: not shown
   std::string time_scale;            // filled by the recorder from its time map
 };
 

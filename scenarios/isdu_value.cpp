@@ -12,7 +12,14 @@ namespace {
 
 bool is_text_type(ParamType t) { return t == ParamType::String || t == ParamType::OctetString; }
 
-// The raw range a wire type can carry (not the parameter's own range).
+std::vector<uint8_t> encode_typed(const YamlReader& r, const YAML::Node& n, ParamType type, std::string_view what) {
+  const auto [lo, hi] = wire_range(type);
+  const int64_t raw = r.integer(n, fmt::format("{} ({})", what, type_name(type)), lo, hi);
+  return encode_number(type, raw);
+}
+
+} // namespace
+
 std::pair<int64_t, int64_t> wire_range(ParamType t) {
   switch (t) {
     case ParamType::UInt8: return {0, 0xFF};
@@ -23,25 +30,13 @@ std::pair<int64_t, int64_t> wire_range(ParamType t) {
   }
 }
 
-std::vector<uint8_t> encode_typed(const YamlReader& r, const YAML::Node& n, ParamType type, std::string_view what) {
-  const auto [lo, hi] = wire_range(type);
-  const int64_t raw = r.integer(n, fmt::format("{} ({})", what, type_name(type)), lo, hi);
-  return encode_number(type, raw);
-}
-
-// Smallest big-endian representation for an index the table does not know.
 std::vector<uint8_t> encode_untyped(int64_t v) {
   ParamType t = ParamType::Int32;
   if (v >= 0 && v <= 0xFF) t = ParamType::UInt8;
   else if (v >= 0 && v <= 0xFFFF) t = ParamType::UInt16;
   else if (v > std::numeric_limits<int32_t>::max()) t = ParamType::UInt32;
-  std::vector<uint8_t> out;
-  const std::size_t n = wire_size(t);
-  for (std::size_t i = 0; i < n; ++i) out.push_back(static_cast<uint8_t>(static_cast<uint64_t>(v) >> (8 * (n - 1 - i))));
-  return out;
+  return encode_number(t, v);
 }
-
-} // namespace
 
 std::vector<uint8_t> encode_isdu_value(const YamlReader& r, const YAML::Node& value, uint16_t index, uint8_t subindex,
                                        std::string_view what) {

@@ -5,10 +5,12 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <yaml-cpp/yaml.h>
 
+#include "device_logic/parameter_table.hpp"
 #include "scenarios/yaml_reader.hpp"
 
 namespace sreh::detail {
@@ -28,6 +30,14 @@ std::optional<int64_t> decode_isdu_number(uint16_t index, uint8_t subindex, std:
 
 // Text of a string answer (trailing NULs dropped, as IO-Link pads strings).
 std::string decode_isdu_text(std::span<const uint8_t> data);
+
+// The raw range a wire type can carry (not the parameter's own range);
+// {0, 0} for texts. Shared with serve's JSON parameter writes.
+std::pair<int64_t, int64_t> wire_range(ParamType type);
+
+// Smallest big-endian form (1, 2 or 4 octets) of a number for an index the
+// table does not know, so the device can answer 0x8011/0x8012.
+std::vector<uint8_t> encode_untyped(int64_t value);
 
 // Whether the table declares this variable as a string or octet string.
 bool is_text_parameter(uint16_t index, uint8_t subindex);

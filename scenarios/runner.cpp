@@ -119,15 +119,7 @@ class ScenarioRun {
   void execute(const Step&, const std::string&, const PdStep& a) {
     // Fields left out keep their value (interfaces.md); the step lasts one
     // cycle so that the device sees these outputs at least once.
-    if (a.target_raw) pd_.target_position = *a.target_raw;
-    if (a.parameter_set) pd_.parameter_set = *a.parameter_set;
-    if (a.motor_on) pd_.motor_on = *a.motor_on;
-    if (a.move) pd_.move = *a.move;
-    if (a.stop) pd_.stop = *a.stop;
-    if (a.reset_error) pd_.reset_error = *a.reset_error;
-    if (a.set_origin) pd_.set_origin = *a.set_origin;
-    if (a.relative) pd_.relative = *a.relative;
-    if (a.shortest_path) pd_.shortest_path = *a.shortest_path;
+    apply_pd_out(a, pd_);
     twin_->set_pd_out(pd_);
     cycle();
   }

@@ -12,6 +12,7 @@
 
 #include "device_logic/device_types.hpp"
 #include "scenarios/comparison.hpp"
+#include "scenarios/pd_out_fields.hpp"
 #include "twin/twin.hpp"
 
 namespace sreh {
@@ -56,17 +57,8 @@ struct Conditions {
 };
 
 // Process data out fields (manual 2.2); fields left out keep their value.
-struct PdStep {
-  std::optional<int32_t> target_raw; // target_deg is converted to wire counts by the parser
-  std::optional<uint8_t> parameter_set;
-  std::optional<bool> motor_on;
-  std::optional<bool> move;
-  std::optional<bool> stop;
-  std::optional<bool> reset_error;
-  std::optional<bool> set_origin;
-  std::optional<bool> relative;
-  std::optional<bool> shortest_path;
-};
+// Process data out fields to set (scenarios/pd_out_fields.hpp; left out: kept).
+using PdStep = PdOutUpdate;
 
 struct WaitStep { double duration_s = 0; };
 // `after_s`: the conditions must not hold before it (an exact time window).

@@ -33,8 +33,6 @@ using detail::YamlReader;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // Half a wire count (manual 2.5): a plain position in degrees matches the nearest count.
 constexpr double kHalfWireCountDeg = 180.0 / static_cast<double>(kWireCountsPerRev);
-// The int32 wire range in degrees (manual 2.5: +-2^15 revolutions).
-constexpr double kWireLimitDeg = 32768.0 * 360.0;
 // A-SCN-1: plausibility limits of world inputs.
 constexpr double kMaxSupplyV = 40.0;
 constexpr double kMaxTorqueNm = 50.0;
@@ -305,36 +303,9 @@ class Parser {
   }
 
   PdStep parse_pd(const YAML::Node& n, const std::string& what) {
-    r_.check_map(n, what, {"target_deg", "target_raw", "parameter_set", "motor_on", "move", "stop", "reset_error",
-                           "set_origin", "relative", "shortest_path"});
-    PdStep pd;
-    if (n["target_deg"] && n["target_raw"]) r_.fail(n["target_raw"], what + ": give target_deg or target_raw, not both");
-    if (n["target_deg"]) {
-      const double deg = r_.number(n["target_deg"], what + ".target_deg", -kWireLimitDeg, kWireLimitDeg);
-      const int64_t counts = deg_to_wire_counts(deg);
-      if (counts < std::numeric_limits<int32_t>::min() || counts > std::numeric_limits<int32_t>::max()) {
-        r_.fail(n["target_deg"], fmt::format("{}.target_deg: {} deg does not fit the int32 wire position (manual 2.5)", what, deg));
-      }
-      pd.target_raw = static_cast<int32_t>(counts);
-    }
-    if (n["target_raw"]) {
-      pd.target_raw = static_cast<int32_t>(r_.integer(n["target_raw"], what + ".target_raw",
-                                                      std::numeric_limits<int32_t>::min(),
-                                                      std::numeric_limits<int32_t>::max()));
-    }
-    // The wire carries a uint8 (manual 2.2); 8..255 are sent, the device rejects them (7.2, 114.7 code 2).
-    if (n["parameter_set"]) pd.parameter_set = static_cast<uint8_t>(r_.integer(n["parameter_set"], what + ".parameter_set", 0, 255));
-    auto bit = [&](const char* key, std::optional<bool>& out) {
-      if (n[key]) out = r_.boolean(n[key], fmt::format("{}.{}", what, key));
-    };
-    bit("motor_on", pd.motor_on);
-    bit("move", pd.move);
-    bit("stop", pd.stop);
-    bit("reset_error", pd.reset_error);
-    bit("set_origin", pd.set_origin);
-    bit("relative", pd.relative);
-    bit("shortest_path", pd.shortest_path);
-    return pd;
+    r_.check_map(n, what, pd_out_keys());
+    // Fields, types and ranges: the process-data table (scenarios/pd_out_fields.hpp).
+    return read_pd_out(detail::YamlFieldSource(r_, n, what), what);
   }
 
   WaitUntilStep parse_wait_until(const YAML::Node& n, const std::string& what) {

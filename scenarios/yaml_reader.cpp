@@ -154,4 +154,14 @@ Range YamlReader::range(const YAML::Node& node, std::string_view what, double mi
   return Range{v - tol, v + tol, true};
 }
 
+bool YamlFieldSource::has(std::string_view key) const { return static_cast<bool>(map_[std::string(key)]); }
+double YamlFieldSource::number(std::string_view key, double lo, double hi) const {
+  return r_.number(map_[std::string(key)], path(key), lo, hi);
+}
+int64_t YamlFieldSource::integer(std::string_view key, int64_t lo, int64_t hi) const {
+  return r_.integer(map_[std::string(key)], path(key), lo, hi);
+}
+bool YamlFieldSource::boolean(std::string_view key) const { return r_.boolean(map_[std::string(key)], path(key)); }
+void YamlFieldSource::fail(std::string_view key, const std::string& message) const { r_.fail(map_[std::string(key)], message); }
+
 } // namespace sreh::detail

@@ -10,6 +10,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "scenarios/pd_out_fields.hpp"
 #include "scenarios/scenario.hpp"
 
 namespace sreh::detail {
@@ -51,5 +52,23 @@ class YamlReader {
 };
 
 std::string join_path(std::string_view parent, std::string_view key); // "pd" + "move" -> "pd.move"
+
+// The keys of one mapping read through a reader (messages name `what.key`
+// and the line): the YAML side of the process-data reader (pd_out_fields.hpp).
+class YamlFieldSource final : public PdFieldSource {
+ public:
+  YamlFieldSource(const YamlReader& r, const YAML::Node& map, const std::string& what) : r_(r), map_(map), what_(what) {}
+  bool has(std::string_view key) const override;
+  double number(std::string_view key, double lo, double hi) const override;
+  int64_t integer(std::string_view key, int64_t lo, int64_t hi) const override;
+  bool boolean(std::string_view key) const override;
+  [[noreturn]] void fail(std::string_view key, const std::string& message) const override;
+
+ private:
+  std::string path(std::string_view key) const { return what_ + "." + std::string(key); }
+  const YamlReader& r_;
+  const YAML::Node& map_;
+  const std::string& what_;
+};
 
 } // namespace sreh::detail

@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include "io/html_page.hpp"
+#include "serve/front_impl.hpp"
 #include "serve/port_api.hpp"
 #include "serve/web_assets.hpp"
 
@@ -57,6 +59,17 @@ std::string content_type_for(std::string_view name) {
   return "application/octet-stream";
 }
 
+// The live page: the one page shell (io/html_page.hpp) around web/live_body.html;
+// its look (app.css) and charts (dygraphs) are served from /assets.
+std::string live_page() {
+  static const std::string page = io::html_page("sreh-twin: virtual IO-Link master",
+                                                "<link rel=\"stylesheet\" href=\"/assets/dygraph.min.css\">\n"
+                                                "<link rel=\"stylesheet\" href=\"/assets/app.css\">\n"
+                                                "<link rel=\"icon\" href=\"data:,\">\n",
+                                                find_web_asset("live_body.html"));
+  return page;
+}
+
 } // namespace
 
 std::vector<RouteInfo> http_routes() {
@@ -65,7 +78,8 @@ std::vector<RouteInfo> http_routes() {
   return out;
 }
 
-struct HttpServer::Impl {
+template <>
+struct Front<HttpOptions>::Impl {
   Hub& hub;
   HttpOptions options;
   httplib::Server server;
@@ -144,8 +158,7 @@ struct HttpServer::Impl {
     const std::string path = route.path;
     const std::string method = route.method;
     if (path == "/") {
-      const auto page = find_web_asset("index.html");
-      res.set_content(std::string(page), "text/html; charset=utf-8");
+      res.set_content(live_page(), "text/html; charset=utf-8");
       return;
     }
     if (path == "/assets/{name}") {
@@ -256,20 +269,18 @@ struct HttpServer::Impl {
       else if (m == "POST") server.Post(route.pattern, h);
     }
   }
+
+  int port() const { return bound; }
+  void start() {
+    thread = std::thread([this] { server.listen_after_bind(); });
+  }
+  void stop() {
+    stopping.store(true);
+    server.stop();
+    if (thread.joinable()) thread.join();
+  }
 };
 
-HttpServer::HttpServer(Hub& hub, const HttpOptions& options) : impl_(std::make_unique<Impl>(hub, options)) {}
-HttpServer::~HttpServer() { stop(); }
-int HttpServer::bound_port() const { return impl_->bound; }
-
-void HttpServer::start() {
-  impl_->thread = std::thread([this] { impl_->server.listen_after_bind(); });
-}
-
-void HttpServer::stop() {
-  impl_->stopping.store(true);
-  impl_->server.stop();
-  if (impl_->thread.joinable()) impl_->thread.join();
-}
+template class Front<HttpOptions>;
 
 } // namespace sreh::serve

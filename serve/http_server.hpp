@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "serve/front.hpp"
 #include "serve/hub.hpp"
 
 namespace sreh::serve {
@@ -24,19 +25,7 @@ struct RouteInfo {
 // Every route the server serves (checked against docs/api/openapi.yaml in CI).
 std::vector<RouteInfo> http_routes();
 
-class HttpServer {
- public:
-  HttpServer(Hub& hub, const HttpOptions& options); // binds; throws std::runtime_error naming the address
-  ~HttpServer();
-  HttpServer(const HttpServer&) = delete;
-  HttpServer& operator=(const HttpServer&) = delete;
-  int bound_port() const;
-  void start();
-  void stop();
-
- private:
-  struct Impl;
-  std::unique_ptr<Impl> impl_;
-};
+using HttpServer = Front<HttpOptions>;
+extern template class Front<HttpOptions>;
 
 } // namespace sreh::serve

@@ -1,5 +1,7 @@
 #include "serve/hub.hpp"
 
+#include "device_logic/parameter_ids.hpp"
+
 #include "twin/plant.hpp"
 
 #include <pthread.h>
@@ -95,7 +97,7 @@ void Hub::after_cycle(Port& port) {
   const bool sample = port.first || twin.cycles() % static_cast<uint64_t>(options_.sample_every_cycles) == 0;
   if (sample) {
     // Device events (index 37, iolink.md): entries that appear or disappear.
-    const IsduResult r = twin.isdu_read(37, 0);
+    const IsduResult r = twin.isdu_read(param::kDetailedDeviceStatus.index, param::kDetailedDeviceStatus.subindex);
     std::vector<uint8_t> now = r.ok() ? r.data : std::vector<uint8_t>{};
     if (now != port.last_detailed_status) {
       const auto entries = [](const std::vector<uint8_t>& d) {

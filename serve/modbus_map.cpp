@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "device_logic/parameter_ids.hpp"
+
 namespace sreh::serve::modbus {
 namespace {
 
@@ -45,9 +47,9 @@ void fill_port(uint16_t* block, Hub::Port& port, PortRegisters& regs) {
   block[kLed] = static_cast<uint16_t>(tel.led);
   std::copy(regs.request.begin(), regs.request.end(), block + kIsduCommand);
   std::copy(regs.response.begin(), regs.response.end(), block + kRespSequence);
-  const IsduResult status = twin.isdu_read(36, 0);
+  const IsduResult status = twin.isdu_read(param::kDeviceStatus.index, param::kDeviceStatus.subindex);
   block[kDeviceStatus] = status.ok() && !status.data.empty() ? status.data[0] : 0;
-  const IsduResult detailed = twin.isdu_read(37, 0);
+  const IsduResult detailed = twin.isdu_read(param::kDetailedDeviceStatus.index, param::kDetailedDeviceStatus.subindex);
   const std::vector<uint8_t> ev = detailed.ok() ? detailed.data : std::vector<uint8_t>{};
   if (ev != regs.last_events) {
     ++regs.event_changes;

@@ -14,6 +14,7 @@
 
 #include <fmt/format.h>
 
+#include "serve/front_impl.hpp"
 #include "serve/modbus_map.hpp"
 
 namespace sreh::serve {
@@ -31,7 +32,8 @@ int fd_port(int fd) {
 }
 } // namespace
 
-struct ModbusServer::Impl {
+template <>
+struct Front<ModbusOptions>::Impl {
   Hub& hub;
   ModbusOptions options;
   modbus_t* ctx = nullptr;
@@ -168,20 +170,18 @@ struct ModbusServer::Impl {
       }
     }
   }
+
+  int port() const { return fd_port(listen_fd); }
+  void start() {
+    if (running.exchange(true)) return;
+    thread = std::thread([this] { loop(); });
+  }
+  void stop() {
+    running.store(false);
+    if (thread.joinable()) thread.join();
+  }
 };
 
-ModbusServer::ModbusServer(Hub& hub, const ModbusOptions& options) : impl_(std::make_unique<Impl>(hub, options)) {}
-ModbusServer::~ModbusServer() { stop(); }
-int ModbusServer::bound_port() const { return fd_port(impl_->listen_fd); }
-
-void ModbusServer::start() {
-  if (impl_->running.exchange(true)) return;
-  impl_->thread = std::thread([this] { impl_->loop(); });
-}
-
-void ModbusServer::stop() {
-  impl_->running.store(false);
-  if (impl_->thread.joinable()) impl_->thread.join();
-}
+template class Front<ModbusOptions>;
 
 } // namespace sreh::serve

@@ -7,6 +7,7 @@
 #include <string>
 #include <thread>
 
+#include "serve/front.hpp"
 #include "serve/hub.hpp"
 
 namespace sreh::serve {
@@ -17,19 +18,7 @@ struct ModbusOptions {
   bool writes_allowed = true; // false with a token: Modbus carries none, so it is read-only
 };
 
-class ModbusServer {
- public:
-  ModbusServer(Hub& hub, const ModbusOptions& options); // binds; throws std::runtime_error naming the address
-  ~ModbusServer();
-  ModbusServer(const ModbusServer&) = delete;
-  ModbusServer& operator=(const ModbusServer&) = delete;
-  int bound_port() const;
-  void start();
-  void stop();
-
- private:
-  struct Impl;
-  std::unique_ptr<Impl> impl_;
-};
+using ModbusServer = Front<ModbusOptions>;
+extern template class Front<ModbusOptions>;
 
 } // namespace sreh::serve

@@ -10,11 +10,13 @@
 
 #include <fmt/format.h>
 
+#include "serve/front_impl.hpp"
 #include "serve/port_api.hpp"
 
 namespace sreh::serve {
 
-struct MqttBridge::Impl {
+template <>
+struct Front<MqttOptions>::Impl {
   Hub& hub;
   MqttOptions options;
   mosquitto* client = nullptr;
@@ -149,24 +151,22 @@ struct MqttBridge::Impl {
       std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
   }
+
+  int port() const { return 0; } // a client: it listens nowhere
+  void start() {
+    if (running.exchange(true)) return;
+    for (int p = 1; p <= hub.port_count(); ++p) event_cursor[static_cast<std::size_t>(p - 1)] = hub.latest_seq(p);
+    mosquitto_loop_start(client);
+    publisher = std::thread([this] { publish_loop(); });
+  }
+  void stop() {
+    if (!running.exchange(false)) return;
+    if (publisher.joinable()) publisher.join();
+    mosquitto_disconnect(client);
+    mosquitto_loop_stop(client, false);
+  }
 };
 
-MqttBridge::MqttBridge(Hub& hub, const MqttOptions& options) : impl_(std::make_unique<Impl>(hub, options)) {}
-MqttBridge::~MqttBridge() { stop(); }
-
-void MqttBridge::start() {
-  if (impl_->running.exchange(true)) return;
-  for (int p = 1; p <= impl_->hub.port_count(); ++p)
-    impl_->event_cursor[static_cast<std::size_t>(p - 1)] = impl_->hub.latest_seq(p);
-  mosquitto_loop_start(impl_->client);
-  impl_->publisher = std::thread([this] { impl_->publish_loop(); });
-}
-
-void MqttBridge::stop() {
-  if (!impl_->running.exchange(false)) return;
-  if (impl_->publisher.joinable()) impl_->publisher.join();
-  mosquitto_disconnect(impl_->client);
-  mosquitto_loop_stop(impl_->client, false);
-}
+template class Front<MqttOptions>;
 
 } // namespace sreh::serve

@@ -13,6 +13,7 @@
 #include <memory>
 #include <string>
 
+#include "serve/front.hpp"
 #include "serve/hub.hpp"
 
 namespace sreh::serve {
@@ -25,18 +26,7 @@ struct MqttOptions {
   std::string token;
 };
 
-class MqttBridge {
- public:
-  MqttBridge(Hub& hub, const MqttOptions& options); // connects; throws std::runtime_error naming the broker
-  ~MqttBridge();
-  MqttBridge(const MqttBridge&) = delete;
-  MqttBridge& operator=(const MqttBridge&) = delete;
-  void start();
-  void stop();
-
- private:
-  struct Impl;
-  std::unique_ptr<Impl> impl_;
-};
+using MqttBridge = Front<MqttOptions>;
+extern template class Front<MqttOptions>;
 
 } // namespace sreh::serve

@@ -8,19 +8,20 @@
 #include "device_logic/parameter_table.hpp"
 #include "device_logic/units.hpp"
 #include "scenarios/isdu_value.hpp"
+#include "scenarios/pd_out_fields.hpp"
 
 namespace sreh::serve {
 namespace {
 
 bool is_text(ParamType t) { return t == ParamType::String || t == ParamType::OctetString; }
 
-void check_keys(const Json& body, std::initializer_list<const char*> allowed, const std::string& what) {
+void check_keys(const Json& body, const std::vector<std::string_view>& allowed, const std::string& what) {
   for (const auto& [key, value] : body.items()) {
     bool ok = false;
-    for (const char* a : allowed) ok = ok || key == a;
+    for (std::string_view a : allowed) ok = ok || key == a;
     if (!ok) {
       std::string list;
-      for (const char* a : allowed) list += fmt::format("{}{}", list.empty() ? "" : ", ", a);
+      for (std::string_view a : allowed) list += fmt::format("{}{}", list.empty() ? "" : ", ", a);
       throw RequestError(400, fmt::format("{}: unknown key '{}' (allowed: {})", what, key, list));
     }
   }
@@ -49,18 +50,28 @@ int64_t get_integer(const Json& v, const std::string& what, int64_t lo, int64_t 
   return x;
 }
 
-std::pair<int64_t, int64_t> wire_range(ParamType t) {
-  switch (t) {
-    case ParamType::UInt8: return {0, 0xFF};
-    case ParamType::UInt16: return {0, 0xFFFF};
-    case ParamType::UInt32: return {0, 0xFFFFFFFFLL};
-    case ParamType::Int32: return {std::numeric_limits<int32_t>::min(), std::numeric_limits<int32_t>::max()};
-    default: return {0, 0};
+// The decoded process-data fields of a request body (scenarios/pd_out_fields.hpp:
+// the same table and ranges as a scenario's pd: step).
+class JsonPdSource final : public PdFieldSource {
+ public:
+  JsonPdSource(const Json& body, const std::string& what) : body_(body), what_(what) {}
+  bool has(std::string_view key) const override { return body_.contains(std::string(key)); }
+  double number(std::string_view key, double lo, double hi) const override {
+    return get_number(body_[std::string(key)], fmt::format("{}.{}", what_, key), lo, hi);
   }
-}
+  int64_t integer(std::string_view key, int64_t lo, int64_t hi) const override {
+    return get_integer(body_[std::string(key)], fmt::format("{}.{}", what_, key), lo, hi);
+  }
+  bool boolean(std::string_view key) const override { return get_bool(body_[std::string(key)], fmt::format("{}.{}", what_, key)); }
+  [[noreturn]] void fail(std::string_view, const std::string& message) const override { throw RequestError(400, message); }
+
+ private:
+  const Json& body_;
+  const std::string& what_;
+};
 
 std::vector<uint8_t> encode_typed(const Json& v, ParamType t, const std::string& what) {
-  const auto [lo, hi] = wire_range(t);
+  const auto [lo, hi] = detail::wire_range(t);
   return encode_number(t, get_integer(v, fmt::format("{} ({})", what, type_name(t)), lo, hi));
 }
 
@@ -178,9 +189,9 @@ Json processdata_json(Hub::Port& port) {
 void apply_pd_out(Hub::Port& port, const Json& body) {
   const std::string what = "processdata/out";
   if (!body.is_object()) throw RequestError(400, what + ": expected a JSON object");
-  check_keys(body, {"raw", "valid", "target_deg", "target_raw", "parameter_set", "motor_on", "move", "stop",
-                    "reset_error", "set_origin", "relative", "shortest_path"},
-             what);
+  std::vector<std::string_view> allowed{"raw", "valid"};
+  allowed.insert(allowed.end(), pd_out_keys().begin(), pd_out_keys().end());
+  check_keys(body, allowed, what);
   ProcessDataOut out = port.twin.pd_out();
   if (body.contains("raw")) {
     if (body.size() > (body.contains("valid") ? 2u : 1u))
@@ -192,29 +203,7 @@ void apply_pd_out(Hub::Port& port, const Json& body) {
                                           bytes.size(), kPdOutBytes));
     out = decode_out(std::span<const uint8_t>(bytes));
   }
-  if (body.contains("target_deg") && body.contains("target_raw"))
-    throw RequestError(400, what + ": give target_deg or target_raw, not both");
-  if (body.contains("target_deg")) {
-    // manual 2.5: int32 wire counts, 2^16 per revolution
-    const double deg = get_number(body["target_deg"], what + ".target_deg", -11796480.0, 11796480.0);
-    out.target_position = static_cast<int32_t>(deg_to_wire_counts(deg));
-  }
-  if (body.contains("target_raw"))
-    out.target_position = static_cast<int32_t>(get_integer(body["target_raw"], what + ".target_raw",
-                                                           std::numeric_limits<int32_t>::min(),
-                                                           std::numeric_limits<int32_t>::max()));
-  if (body.contains("parameter_set"))
-    out.parameter_set = static_cast<uint8_t>(get_integer(body["parameter_set"], what + ".parameter_set", 0, 255));
-  const auto flag = [&](const char* key, bool& field) {
-    if (body.contains(key)) field = get_bool(body[key], what + "." + key);
-  };
-  flag("motor_on", out.motor_on);
-  flag("move", out.move);
-  flag("stop", out.stop);
-  flag("reset_error", out.reset_error);
-  flag("set_origin", out.set_origin);
-  flag("relative", out.relative);
-  flag("shortest_path", out.shortest_path);
+  if (!body.contains("raw")) sreh::apply_pd_out(read_pd_out(JsonPdSource(body, what), what), out);
   bool valid = port.outputs_valid;
   if (body.contains("valid")) valid = get_bool(body["valid"], what + ".valid");
   // Everything checked: apply.
@@ -298,12 +287,7 @@ std::vector<uint8_t> parameter_bytes(uint16_t index, uint8_t subindex, const Jso
     if (s.size() > 232) throw RequestError(400, what + ".value: more than 232 octets (ISDU maximum)");
     return {s.begin(), s.end()};
   }
-  const int64_t x = get_integer(v, what + ".value", std::numeric_limits<int32_t>::min(), 0xFFFFFFFFLL);
-  ParamType t = ParamType::Int32;
-  if (x >= 0 && x <= 0xFF) t = ParamType::UInt8;
-  else if (x >= 0 && x <= 0xFFFF) t = ParamType::UInt16;
-  else if (x > std::numeric_limits<int32_t>::max()) t = ParamType::UInt32;
-  return encode_number(t, x);
+  return detail::encode_untyped(get_integer(v, what + ".value", std::numeric_limits<int32_t>::min(), 0xFFFFFFFFLL));
 }
 
 Json read_parameter(Hub::Port& port, uint16_t index, uint8_t subindex) {

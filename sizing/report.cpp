@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "io/atomic_file.hpp"
+#include "io/html_page.hpp"
 #include "sizing/output.hpp"
 
 #if SREH_SIZING_WITH_REPORT
@@ -53,9 +54,7 @@ const char* colour(std::size_t i) {
 }
 
 std::string page_head(const std::string& title) {
-  return fmt::format("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>{}</title>\n"
-                     "<style>{}</style>\n{}</head>\n<body>\n<h1>{}</h1>\n",
-                     xml_escape(title), report::kPageCss, report::interactive_head(), xml_escape(title));
+  return io::html_page_open(title, report::page_head()) + fmt::format("<h1>{}</h1>\n", xml_escape(title));
 }
 
 std::string row(const std::string& name, const std::string& value) {
@@ -196,7 +195,7 @@ std::string size_report_html(const SizingRequest& rq, const SizingResult& r) {
   }
   o += "<p class=\"note\">Travel time from the device's planner; settling and positioning simulated; torque "
        "sampled per IO-Link cycle; temperature from the twin's lumped thermal model at the cycle's mean loss "
-       "(docs/assumptions/sizing.md).</p>\n</body>\n</html>\n";
+       "(docs/assumptions/sizing.md).</p>\n" + io::html_page_close();
   return o;
 }
 
@@ -279,7 +278,7 @@ std::string sweep_report_html(const SweepRequest& rq, const SweepResult& result,
     o += "</table>\n<p class=\"note\">Cells: the heaviest grid load (g cm^2) whose positioning time meets the "
          "target; '-': none on the grid.</p>\n";
   }
-  o += "</body>\n</html>\n";
+  o += io::html_page_close();
   return o;
 }
 

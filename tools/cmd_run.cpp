@@ -24,7 +24,6 @@
 #include "twin/plant.hpp"
 #include "twin/trace.hpp"
 #ifdef SREH_WITH_RENDER
-#include "device_logic/units.hpp"
 #include "renders/ffmpeg_encoder.hpp"
 #include "renders/report.hpp"
 #include "renders/run_recording.hpp"
@@ -126,22 +125,11 @@ class VideoHook {
   void on_cycle(const Twin& twin) {
     const Plant& plant = twin.plant();
     if (!recording_) recording_ = std::make_unique<RunRecording>(plant.model());
-    const Telemetry t = twin.telemetry();
-    const ProcessDataOut& pd = twin.pd_out();
     FrameInfo info;
-    info.t_s = twin.time_s();
-    info.state = t.state;
-    info.position_deg = t.position_deg;
-    info.setpoint_deg = t.setpoint_deg;
-    info.tracking_error_deg = t.tracking_error_deg;
-    info.error_code = t.error_code;
-    info.warning_code = t.warning_code;
-    info.led = t.led;
+    info.row = twin.last_row();
     info.ghost_joint_rad = plant.ghost_angle_rad();
     info.step = step_;
-    info.target_deg = wire_counts_to_deg(pd.target_position);
-    info.parameter_set = pd.parameter_set;
-    recording_->add(plant.data(), info, t.velocity_dps, t.moving || t.settling);
+    recording_->add(plant.data(), info);
   }
   VideoSummary render(const VideoOptions& options, bool fixed_slowmo) const {
     if (!recording_) throw std::runtime_error("video: the run has no cycle to show");

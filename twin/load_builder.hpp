@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "twin/mujoco_support.hpp"
-#include "twin/twin.hpp"
+#include "twin/specs.hpp"
 
 namespace sreh {
 

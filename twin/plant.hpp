@@ -21,22 +21,14 @@
 #include "twin/mujoco_support.hpp"
 #include "twin/supply.hpp"
 #include "twin/thermal.hpp"
-#include "twin/twin.hpp"
+#include "twin/specs.hpp"
 
 namespace sreh {
 
-struct PlantConfig {
-  LoadSpec load = NoLoad{};
-  std::vector<HardStop> hard_stops;
-  SupplySpec supply;
-  ThermalSpec thermal;
-  double physics_dt_s = 1e-4;
+// The plant's configuration: the world (twin/specs.hpp, shared with
+// TwinConfig) plus the motor and the module's MJCF.
+struct PlantConfig : WorldSpec {
   MotorModel motor;
-  // Mounting (A-TWIN-24): tilt of the module's axis from vertical, degrees.
-  // 0 = axis vertical (flange up), 90 = axis horizontal with the module's +y
-  // pointing up, so a load along +x at flange angle 0 feels the largest
-  // gravity torque (m g r cos(angle)).
-  double mounting_tilt_deg = 0.0;
   std::string module_model_path = default_module_model_path();
 };
 

@@ -2,7 +2,7 @@
 // source resistance the bus sags under load, and with a bus capacitance
 // braking energy charges it (no braking chopper: manual 7.2, error 114.4.2).
 #pragma once
-#include "twin/twin.hpp"
+#include "twin/specs.hpp"
 
 namespace sreh {
 

@@ -3,7 +3,7 @@
 // copper losses and a small speed-dependent loss. Every constant is an
 // assumption (docs/assumptions/twin.md A-TWIN-THERMAL-*).
 #pragma once
-#include "twin/twin.hpp"
+#include "twin/specs.hpp"
 
 namespace sreh {
 

@@ -12,28 +12,22 @@
 
 namespace sreh {
 
-struct TraceRow {
-  double t_s = 0;
-  State state = State::MotorOff;
-  double setpoint_deg = 0;
-  double position_deg = 0;
-  double tracking_error_deg = 0;
-  double velocity_dps = 0;
-  double torque_Nm = 0;        // motor torque applied
-  double torque_limit_Nm = 0;  // motor capability in that direction at that instant
-  double external_torque_Nm = 0;
-  double supply_V = 0;
-  double temperature_C = 0;
-  uint8_t error_code = 0;
-  uint8_t warning_code = 0;
-  PdOutFrame pd_out{};
-  PdInFrame pd_in{};
-  LedColor led = LedColor::Off;
+// One row per IO-Link cycle: the device's Telemetry as it was after the
+// cycle, by value, plus what only the twin knows. Everyone downstream reads
+// this one type: the CSV (write_trace_row), the video overlay (FrameInfo
+// embeds it), the report and sizing (spans of rows), the Python API.
+// Measured at the module, not as the firmware believes it: torque_Nm is the
+// torque the plant applied (kt x winding current), supply_V and
+// temperature_C the plant's sensors, led Off while unpowered.
+struct TraceRow : Telemetry {
+  double t_s = 0;                 // run time (sum of master cycles, integer ns)
+  double external_torque_Nm = 0;  // the world's torque on the flange (physical frame)
+  PdOutFrame pd_out{};            // the 6 octets the device latched this cycle (manual 2.2)
+  PdInFrame pd_in{};              // the 7 octets the master received (manual 2.3)
   IoLinkLedMode iolink_led = IoLinkLedMode::NotConnected; // manual 1
 };
 
 // Move records: device_logic/move_record.hpp (the device emits them, issue 13).
-
 
 // Writes the CSV header and rows (interfaces.md column order first).
 void write_trace_csv(std::ostream& out, const std::vector<TraceRow>& rows);

@@ -37,12 +37,7 @@ int steps_per_cycle(double cycle_s, double physics_dt_s) {
 
 PlantConfig plant_config(const TwinConfig& c) {
   PlantConfig p;
-  p.load = c.load;
-  p.hard_stops = c.hard_stops;
-  p.supply = c.supply;
-  p.thermal = c.thermal;
-  p.mounting_tilt_deg = c.mounting_tilt_deg;
-  p.physics_dt_s = c.physics_dt_s;
+  static_cast<WorldSpec&>(p) = c; // the world is one struct (twin/specs.hpp)
   return p;
 }
 
@@ -87,27 +82,20 @@ struct Twin::Impl {
   }
 
   void record_row(const PdOutFrame& out_frame) {
-    const Telemetry tel = device.telemetry();
     TraceRow row;
+    static_cast<Telemetry&>(row) = device.telemetry();
     row.t_s = static_cast<double>(time_ns) * 1e-9;
-    row.state = tel.state;
-    row.setpoint_deg = tel.setpoint_deg;
-    row.position_deg = tel.position_deg;
-    row.tracking_error_deg = tel.tracking_error_deg;
-    row.velocity_dps = tel.velocity_dps;
     row.torque_Nm = plant.applied_torque_Nm();
-    row.torque_limit_Nm = tel.torque_limit_Nm;
     row.external_torque_Nm = plant.external_torque_Nm();
     row.supply_V = plant.sensors().supply_V;
     row.temperature_C = plant.sensors().temperature_C;
-    row.error_code = tel.error_code;
-    row.warning_code = tel.warning_code;
+    if (!device.powered()) row.led = LedColor::Off;
     row.pd_out = out_frame;
     row.pd_in = last_pd_in;
-    row.led = device.powered() ? tel.led : LedColor::Off;
     row.iolink_led = device.io_link_led();
+    last_row = row;
     if (config.trace_sink) config.trace_sink(row); // streamed: memory flat with run length (issue 12)
-    else trace.push_back(row);
+    else if (config.record_trace) trace.push_back(row);
   }
 
   void update_visuals() {
@@ -136,6 +124,7 @@ struct Twin::Impl {
   bool turning = false;
   double direction = 1.0;
   std::vector<TraceRow> trace;
+  TraceRow last_row; // the row of the last cycle, whether kept, streamed or neither
   std::vector<MoveRecord> moves;
   int64_t ticked_counts = 0; // encoder reading the device saw last
   int64_t device_epoch_ns = 0; // run time of the device's last power-on
@@ -271,7 +260,7 @@ void Twin::run_cycle() {
   s.collect_moves();
   s.max_tracking_error_deg = std::max(s.max_tracking_error_deg, s.device.take_peak_tracking_error_deg());
   s.update_visuals();
-  if (s.config.record_trace || s.config.trace_sink) s.record_row(out_frame);
+  s.record_row(out_frame); // last_row() always; kept or streamed as configured
 }
 
 uint64_t Twin::cycles() const { return impl_->cycles; }
@@ -279,6 +268,7 @@ double Twin::time_s() const { return static_cast<double>(impl_->time_ns) * 1e-9;
 IoLinkLedMode Twin::iolink_led() const { return impl_->device.io_link_led(); }
 Telemetry Twin::telemetry() const { return impl_->device.telemetry(); }
 const std::vector<TraceRow>& Twin::trace() const { return impl_->trace; }
+const TraceRow& Twin::last_row() const { return impl_->last_row; }
 const std::vector<MoveRecord>& Twin::moves() const { return impl_->moves; }
 double Twin::max_tracking_error_deg() const { return impl_->max_tracking_error_deg; }
 double Twin::load_inertia_gcm2() const { return kgm2_to_gcm2(impl_->plant.load_inertia_kgm2()); }

@@ -7,10 +7,10 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <variant>
 #include <vector>
 
 #include "device_logic/device.hpp"
+#include "twin/specs.hpp"
 #include "twin/trace.hpp"
 
 struct mjModel_;
@@ -18,40 +18,9 @@ struct mjData_;
 
 namespace sreh {
 
-// Attachable loads (issue 5). Masses in kg, lengths in m.
-struct DiskLoad { double mass_kg = 0; double radius_m = 0; double thickness_m = 0.01; };
-struct RingLoad { double mass_kg = 0; double inner_radius_m = 0; double outer_radius_m = 0; double thickness_m = 0.01; };
-struct BoxLoad { double mass_kg = 0; double x_m = 0; double y_m = 0; double z_m = 0; };
-// A light arm (its own mass spread along it) with a point mass at `radius_m`.
-struct ArmLoad { double mass_kg = 0; double radius_m = 0; double arm_mass_kg = 0; };
-struct InertiaLoad { double inertia_gcm2 = 0; }; // a given inertia about the axis
-struct MjcfLoad { std::string path; };           // any MJCF body file
-struct NoLoad {};
-using LoadSpec = std::variant<NoLoad, DiskLoad, RingLoad, BoxLoad, ArmLoad, InertiaLoad, MjcfLoad>;
-
-// Optional world objects.
-struct HardStop { double angle_deg = 0; };       // an obstacle the load hits at this flange angle
-
-struct SupplySpec {
-  double voltage_V = 24.0;            // source voltage
-  double source_resistance_ohm = 0.0; // 0: ideal source
-  double bus_capacitance_F = 0.0;     // with resistance > 0: bus voltage dynamics
-};
-
-struct ThermalSpec {
-  double ambient_C = 25.0;
-  double time_scale = 1.0; // > 1 accelerates thermal dynamics (documented, for long duty tests)
-};
-
-struct TwinConfig {
-  LoadSpec load = NoLoad{};
-  std::vector<HardStop> hard_stops;
-  SupplySpec supply;
-  ThermalSpec thermal;
-  // Mounting (A-TWIN-24): tilt of the axis from vertical in degrees; 0 =
-  // vertical axis (default), 90 = horizontal (see PlantConfig).
-  double mounting_tilt_deg = 0.0;
-  double physics_dt_s = 1e-4;
+// The twin's configuration: the world (twin/specs.hpp, shared with
+// PlantConfig) plus the IO-Link cycle, the memory and the trace handling.
+struct TwinConfig : WorldSpec {
   double cycle_s = 0.002;        // IO-Link master cycle at the start; an integer multiple of physics_dt_s,
                                  // 0.002 .. 0.1328 s (manual 1, IO-Link MasterCycleTime; A-LINK-2)
   std::optional<std::vector<uint8_t>> nvm_image; // saved memory; factory-new otherwise
@@ -128,6 +97,10 @@ class Twin {
 
   Telemetry telemetry() const;
   const std::vector<TraceRow>& trace() const;
+  // The row of the last cycle (before run_cycle(): a default row), whether
+  // the trace is kept, streamed or neither: what an observer such as the
+  // video overlay shows.
+  const TraceRow& last_row() const;
   // One record per accepted Move, from the device (issue 13); the last may
   // still be open (or its target held) while the run goes on. With
   // TwinConfig::move_sink only that open or held record.

@@ -56,18 +56,17 @@ std::pair<RgbImage, RgbImage> render_golden_scene() {
   ro.leave_overlay_room = true;
   OffscreenRenderer r(m, ro);
   FrameInfo f;
-  f.t_s = 0.123;
-  f.state = State::Busy;
+  f.row.t_s = 0.123;
+  f.row.state = State::Busy;
   f.step = "5 wait_until";
-  f.target_deg = 90;
-  f.parameter_set = 1;
-  f.position_deg = 35;
-  f.setpoint_deg = 40;
-  f.tracking_error_deg = 5;
-  f.led = LedColor::Yellow;
+  f.row.pd_out = encode(ProcessDataOut{.target_position = 16384, .parameter_set = 1}); // 90 deg (2^16 counts/rev)
+  f.row.position_deg = 35;
+  f.row.setpoint_deg = 40;
+  f.row.tracking_error_deg = 5;
+  f.row.led = LedColor::Yellow;
   f.time_scale = "slow motion 20x";
   SceneState s;
-  s.led = f.led;
+  s.led = f.row.led;
   s.ghost_joint_rad = -40.0 * M_PI / 180.0;
   s.overlay = overlay_lines(f);
   s.banner = f.time_scale;

@@ -2,6 +2,7 @@
 // expectations, the per-move times (manual 3.5.2 terms), zoomable plots with
 // readable SVG axes and the settling zoom (manual 3.5.2 Fig. 3), written
 // atomically, renders in Chromium cleanly and plays its video there.
+#include <deque>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -45,8 +46,17 @@ ReportCheck check(const std::string& description, bool passed, const std::string
   return {description, passed, step, 7, 0.25, actual};
 }
 
+// ReportInput only points at rows and records: the samples' live here.
+template <typename T>
+std::span<const T> keep(std::vector<T> v) {
+  static std::deque<std::vector<T>> store;
+  store.push_back(std::move(v));
+  return store.back();
+}
+
 ReportInput sample_run(double cycle_s = 0.002, double duration_s = 0.6) {
   ReportInput in;
+  std::vector<TraceRow> trace;
   in.scenario_name = "absolute move 90 deg <disk>";
   in.passed = true;
   in.checks = {check("state Done within 1.0 s", true), check("position_deg in [89.9, 90.1]", true),
@@ -68,8 +78,9 @@ ReportInput sample_run(double cycle_s = 0.002, double duration_s = 0.6) {
     r.supply_V = 24.0;
     r.temperature_C = 25.0 + r.t_s;
     r.state = u <= 0 ? State::Ready : (r.t_s < 0.3345 ? State::Busy : State::Done);
-    in.trace.push_back(r);
+    trace.push_back(r);
   }
+  in.trace = keep(std::move(trace));
   MoveRecord m;
   m.start_s = 0.1;
   m.travel_s = 0.2;
@@ -80,7 +91,7 @@ ReportInput sample_run(double cycle_s = 0.002, double duration_s = 0.6) {
   m.outcome = MoveOutcome::Done;
   m.tolerance_deg = 0.05; // each move's own set (issue 13)
   m.wait_ms = 20.0;
-  in.moves = {m};
+  in.moves = keep(std::vector<MoveRecord>{m});
   in.tracking_limit_deg = 2.0;
   return in;
 }
@@ -146,9 +157,11 @@ TEST(Report, FailedRunAndIncompleteMoveAreMarked) {
   ReportInput in = sample_run();
   in.passed = false;
   in.checks.push_back(check("expect warning_code 0", false, "9", "warning_code 0x02"));
-  in.moves[0].outcome = MoveOutcome::Error;
-  in.moves[0].settling_s.reset();
-  in.moves[0].positioning_s.reset();
+  std::vector<MoveRecord> moves(in.moves.begin(), in.moves.end());
+  moves[0].outcome = MoveOutcome::Error;
+  moves[0].settling_s.reset();
+  moves[0].positioning_s.reset();
+  in.moves = keep(std::move(moves));
   const std::string html = report_html(in);
   EXPECT_NE(html.find("FAILED"), std::string::npos);
   EXPECT_NE(html.find("<td class=\"badc\">FAIL</td>"), std::string::npos);

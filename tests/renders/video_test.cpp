@@ -34,9 +34,9 @@ class VideoTest : public ::testing::Test {
       md.set_flange(t_s * 3.0);
       if (!rec.wants_frame(t_s)) continue;
       FrameInfo f;
-      f.t_s = t_s;
-      f.state = State::Busy;
-      f.led = LedColor::Green;
+      f.row.t_s = t_s;
+      f.row.state = State::Busy;
+      f.row.led = LedColor::Green;
       rec.add_frame(md.m, md.d, f);
     }
   }
@@ -145,12 +145,11 @@ TEST_F(VideoTest, RejectsBadOptions) {
 
 TEST(OverlayLines, ShowStepTargetSetCodesAndTimeScale) {
   FrameInfo f;
-  f.t_s = 1.5;
-  f.state = State::ErrorOn;
-  f.error_code = 0x08;
+  f.row.t_s = 1.5;
+  f.row.state = State::ErrorOn;
+  f.row.error_code = 0x08;
   f.step = "4 wait_until";
-  f.target_deg = 90;
-  f.parameter_set = 2;
+  f.row.pd_out = encode(ProcessDataOut{.target_position = 16384, .parameter_set = 2}); // 90 deg (2^16 counts/rev)
   f.time_scale = "slow motion 20x";
   const auto lines = overlay_lines(f);
   auto value = [&](const std::string& label) {

@@ -1,0 +1,26 @@
+// The one HTML page shell (issue 13): doctype, language, charset, title,
+// whatever the page puts in its <head>, then its body. Used by the run
+// report (renders/report.cpp), the sizing reports (sizing/report.cpp) and
+// serve's live page (serve/http_server.cpp). It lives in io/, the lowest
+// layer, because serve sits on scenarios and must not depend on renders
+// (an optional folder: SREH_WITH_RENDER=OFF builds serve without it);
+// what a page looks like (CSS, scripts) stays with the page.
+#pragma once
+#include <string>
+#include <string_view>
+
+namespace sreh::io {
+
+// Text for HTML/XML content and attribute values: & < > " ' escaped.
+std::string html_escape(std::string_view text);
+
+// "<!DOCTYPE html>...<title>TITLE</title>\n" + head + "</head>\n<body>\n".
+// `title` is plain text (escaped here); `head` is markup (<style>, <link>,
+// <script>), each element ending its own line.
+std::string html_page_open(std::string_view title, std::string_view head);
+// "</body>\n</html>\n".
+std::string html_page_close();
+// The whole page: open + body + close.
+std::string html_page(std::string_view title, std::string_view head, std::string_view body);
+
+} // namespace sreh::io

@@ -1,0 +1,53 @@
+// What the world around the module is made of (issue 5): the load, hard
+// stops, supply, thermal surroundings and mounting. Plain values, shared by
+// the plant (twin/plant.hpp) and the twin (twin/twin.hpp); the lower twin
+// headers (supply, thermal, load_builder) need only this one.
+#pragma once
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace sreh {
+
+// Attachable loads (issue 5). Masses in kg, lengths in m.
+struct DiskLoad { double mass_kg = 0; double radius_m = 0; double thickness_m = 0.01; };
+struct RingLoad { double mass_kg = 0; double inner_radius_m = 0; double outer_radius_m = 0; double thickness_m = 0.01; };
+struct BoxLoad { double mass_kg = 0; double x_m = 0; double y_m = 0; double z_m = 0; };
+// A light arm (its own mass spread along it) with a point mass at `radius_m`.
+struct ArmLoad { double mass_kg = 0; double radius_m = 0; double arm_mass_kg = 0; };
+struct InertiaLoad { double inertia_gcm2 = 0; }; // a given inertia about the axis
+struct MjcfLoad { std::string path; };           // any MJCF body file
+struct NoLoad {};
+using LoadSpec = std::variant<NoLoad, DiskLoad, RingLoad, BoxLoad, ArmLoad, InertiaLoad, MjcfLoad>;
+
+// Optional world objects.
+struct HardStop { double angle_deg = 0; };       // an obstacle the load hits at this flange angle
+
+struct SupplySpec {
+  double voltage_V = 24.0;            // source voltage
+  double source_resistance_ohm = 0.0; // 0: ideal source
+  double bus_capacitance_F = 0.0;     // with resistance > 0: bus voltage dynamics
+};
+
+struct ThermalSpec {
+  double ambient_C = 25.0;
+  double time_scale = 1.0; // > 1 accelerates thermal dynamics (documented, for long duty tests)
+};
+
+// The world and the physics step: written once here, the base of both
+// PlantConfig (adds the motor and the module's MJCF) and TwinConfig (adds
+// the IO-Link cycle, memory and trace handling).
+struct WorldSpec {
+  LoadSpec load = NoLoad{};
+  std::vector<HardStop> hard_stops;
+  SupplySpec supply;
+  ThermalSpec thermal;
+  // Mounting (A-TWIN-24): tilt of the module's axis from vertical, degrees.
+  // 0 = axis vertical (flange up, default), 90 = axis horizontal with the
+  // module's +y pointing up, so a load along +x at flange angle 0 feels the
+  // largest gravity torque (m g r cos(angle)).
+  double mounting_tilt_deg = 0.0;
+  double physics_dt_s = 1e-4;
+};
+
+} // namespace sreh
