@@ -3,7 +3,9 @@
 //   tick()      once per control step: sensor readings in, motor command out;
 //   isdu_read() / isdu_write(): acyclic parameter access (manual chapter 6);
 //   power_off() / power_on(): supply interruption, non-volatile memory kept.
-// No clocks, no files, no MuJoCo: time only advances through tick(dt).
+//   snapshot() / restore(): the whole device as a value (device_snapshot.hpp).
+// No clocks, no files, no MuJoCo: time only advances through tick(dt), in
+// integer nanoseconds.
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -12,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "device_logic/device_snapshot.hpp"
 #include "device_logic/device_types.hpp"
 #include "device_logic/isdu.hpp"
 #include "device_logic/move_record.hpp"
@@ -27,6 +30,7 @@ class Device {
  public:
   Device();                                   // factory-new, powered on
   explicit Device(const std::vector<uint8_t>& nvm_image); // powered on with a saved memory image
+  explicit Device(const DeviceSnapshot& snapshot);         // exactly where the snapshot was taken
   ~Device();
   Device(const Device&);
   Device& operator=(const Device&);
@@ -51,7 +55,11 @@ class Device {
 
   // One control step of dt_s seconds. Also runs the communication watchdog:
   // no exchange() for longer than the watchdog time is a link loss (manual 5).
+  // The device keeps time in integer nanoseconds only: dt_s is converted
+  // once, rounded to the nearest ns (0.1 ms -> 100'000 ns exactly); a
+  // negative or non-finite dt_s counts as 0. tick_ns() takes the ns directly.
   MotorCommand tick(double dt_s, const SensorReadings& sensors);
+  MotorCommand tick_ns(int64_t dt_ns, const SensorReadings& sensors);
 
   IsduResult isdu_read(uint16_t index, uint8_t subindex);
   IsduResult isdu_write(uint16_t index, uint8_t subindex, std::span<const uint8_t> data);
@@ -63,6 +71,13 @@ class Device {
   bool powered() const;
 
   std::vector<uint8_t> save_nvm() const;     // memory image, for a file
+
+  // The whole device as a value: configuration, volatile state, monitors.
+  // A device restored from a snapshot (or constructed from one) continues
+  // bit for bit as the original would from that instant, move records not
+  // yet handed out included. Compare snapshots with ==.
+  DeviceSnapshot snapshot() const;
+  void restore(const DeviceSnapshot& snapshot);
 
   // Move records (issue 13): one per accepted Move (T3), built by the device
   // on its own clock (start_ns: ns since its power-on). A record is handed out

@@ -1,9 +1,10 @@
 // ISDU routing of the Device (manual chapter 6): volatile diagnostics and
 // the device-side system commands here, stored parameters in ParameterStore.
 #include <algorithm>
-#include "device_logic/byte_order.hpp"
 #include <cmath>
+#include <utility>
 
+#include "device_logic/byte_order.hpp"
 #include "device_logic/device_impl.hpp"
 #include "device_logic/parameter_table.hpp"
 #include "device_logic/position_frame.hpp"
@@ -12,6 +13,13 @@ namespace sreh {
 namespace {
 
 IsduResult number(ParamType type, int64_t value) { return isdu_data(encode_number(type, value)); }
+
+// Manual 9: what a module in boot mode still answers besides 17343: the
+// read-only identification of 6.5 (13..23, HW ID 17342), not the tags.
+bool fixed_identification(uint16_t index) {
+  const ParameterEntry* row = find_parameter(index, 0);
+  return row != nullptr && row->storage == Storage::Identification && row->access == Access::R;
+}
 
 constexpr uint8_t kErrorAppears = 0xF4;
 constexpr uint8_t kWarningAppears = 0xE4;
@@ -47,36 +55,41 @@ std::vector<uint8_t> Device::Impl::detailed_device_status() const {
 IsduResult Device::Impl::read(uint16_t index, uint8_t sub) const {
   if (!powered || comm_blocked) return isdu_error(kIsduServiceTempUnavailable);
   if (index == Device::kFirmwareDataIndex) return isdu_error(kIsduAccessDenied); // write-only (A-FW-4)
-  if (boot_mode && index != 17343 && index != 17342 && !(index >= 13 && index <= 23)) {
+  if (boot_mode && index != param::kBootModeStatus.index && !fixed_identification(index)) {
     return isdu_error(kIsduServiceTempUnavailable); // manual 9: normal functions disabled
   }
   auto plain = [&](ParamType type, int64_t value) {
     return sub == 0 ? number(type, value) : isdu_error(kIsduSubindexNotAvailable);
   };
+  auto octets = [&](std::vector<uint8_t> bytes) {
+    return sub == 0 ? isdu_data(std::move(bytes)) : isdu_error(kIsduSubindexNotAvailable);
+  };
   switch (index) {
-    case 2: return isdu_error(kIsduAccessDenied); // system command: write-only
-    case 32: return plain(ParamType::UInt16, error_counter);
-    case 36: return plain(ParamType::UInt8, device_status());
-    case 37: return sub == 0 ? isdu_data(detailed_device_status()) : isdu_error(kIsduSubindexNotAvailable);
-    case 40: return sub == 0 ? isdu_data({last_in_frame.begin(), last_in_frame.end()}) : isdu_error(kIsduSubindexNotAvailable);
-    case 41: return sub == 0 ? isdu_data({last_out_frame.begin(), last_out_frame.end()}) : isdu_error(kIsduSubindexNotAvailable);
-    case 112: return plain(ParamType::UInt8, std::clamp<int64_t>(std::llround(temperature_C * 2.0), 0, 255));
-    case 113: return plain(ParamType::UInt16, std::clamp<int64_t>(std::llround(supply_V * 1000.0), 0, 65535));
-    case 114: {
+    case kIndexSystemCommand: return isdu_error(kIsduAccessDenied); // system command: write-only
+    case param::kErrorCounter.index: return plain(ParamType::UInt16, error_counter);
+    case param::kDeviceStatus.index: return plain(ParamType::UInt8, device_status());
+    case param::kDetailedDeviceStatus.index: return octets(detailed_device_status());
+    case param::kProcessDataInImage.index: return octets({last_in_frame.begin(), last_in_frame.end()});
+    case param::kProcessDataOutImage.index: return octets({last_out_frame.begin(), last_out_frame.end()});
+    case param::kTemperature.index: // raw 0.5 degC
+      return plain(ParamType::UInt8, std::clamp<int64_t>(std::llround(temperature_C * 2.0), 0, 255));
+    case param::kMotorVoltage.index: // raw mV
+      return plain(ParamType::UInt16, std::clamp<int64_t>(std::llround(supply_V * 1000.0), 0, 65535));
+    case param::kErrorCauses: {
       if (sub > 8) return isdu_error(kIsduSubindexNotAvailable);
       std::vector<uint8_t> all;
       for (int s = 1; s <= 8; ++s) all.push_back(faults.error_cause[8 - s]); // 114.1 = bit 7
       if (sub == 0) return isdu_data(all);
       return isdu_data({all[sub - 1]});
     }
-    case 115: {
+    case param::kWarningCauses: {
       if (sub > 3) return isdu_error(kIsduSubindexNotAvailable);
       std::vector<uint8_t> all;
       for (int s = 1; s <= 3; ++s) all.push_back(faults.warning_cause[8 - s]); // 115.1 = bit 7
       if (sub == 0) return isdu_data(all);
       return isdu_data({all[sub - 1]});
     }
-    case 17343: {
+    case param::kBootModeStatus.index: {
       // During a transfer: boot mode; after a failed or interrupted one: 2 (A-FW-1).
       const BootStatus st = !boot_mode                             ? BootStatus::Normal
                             : firmware_failed && fw_image.empty() ? BootStatus::BootModeAfterFailedUpdate
@@ -90,7 +103,7 @@ IsduResult Device::Impl::read(uint16_t index, uint8_t sub) const {
 
 IsduResult Device::Impl::write(uint16_t index, uint8_t sub, std::span<const uint8_t> data) {
   if (!powered || comm_blocked) return isdu_error(kIsduServiceTempUnavailable);
-  if (index == 2) {
+  if (index == kIndexSystemCommand) {
     if (sub != 0) return isdu_error(kIsduSubindexNotAvailable);
     if (data.size() > 1) return isdu_error(kIsduLengthOverrun);
     if (data.empty()) return isdu_error(kIsduLengthUnderrun);
@@ -103,17 +116,20 @@ IsduResult Device::Impl::write(uint16_t index, uint8_t sub, std::span<const uint
   }
   if (boot_mode) return isdu_error(kIsduServiceTempUnavailable);
   switch (index) { // volatile diagnostics are read-only
-    case 32: case 36: case 37: case 40: case 41: case 112: case 113: case 114: case 115: case 17343:
+    case param::kErrorCounter.index: case param::kDeviceStatus.index: case param::kDetailedDeviceStatus.index:
+    case param::kProcessDataInImage.index: case param::kProcessDataOutImage.index: case param::kTemperature.index:
+    case param::kMotorVoltage.index: case param::kErrorCauses: case param::kWarningCauses:
+    case param::kBootModeStatus.index:
       return isdu_error(kIsduAccessDenied);
     default:
       break;
   }
-  const int64_t zero_before = store.raw(86, 0);
+  const int64_t zero_before = store.raw(param::kPositionZero);
   IsduResult r = store.write(index, sub, data);
   // Manual 4.3.2 / 4.3.3: writing index 86 stores the zero offset and applies
   // it, also when it arrives through a Data Storage download (index 3).
-  const bool zero_written = index == 86 && !store.download_open();
-  if (r.ok() && (zero_written || store.raw(86, 0) != zero_before)) init_origin();
+  const bool zero_written = index == param::kPositionZero.index && !store.download_open();
+  if (r.ok() && (zero_written || store.raw(param::kPositionZero) != zero_before)) init_origin();
   return r;
 }
 
@@ -122,9 +138,9 @@ uint16_t Device::Impl::system_command(uint8_t cmd) {
   if (boot_mode && !(cmd >= 80 && cmd <= 82)) return kIsduFunctionTempUnavailable;
   switch (cmd) {
     case 1: case 2: case 3: case 4: case 5: case 6: { // block parameterisation
-      const int64_t zero_before = store.raw(86, 0);
+      const int64_t zero_before = store.raw(param::kPositionZero);
       const uint16_t err = store.block_command(cmd);
-      if (err == 0 && store.raw(86, 0) != zero_before) init_origin(); // a downloaded 86 is applied
+      if (err == 0 && store.raw(param::kPositionZero) != zero_before) init_origin(); // a downloaded 86 is applied
       return err;
     }
     case 80: // firmware update unlock, step 1 (A-FW-2)
@@ -140,14 +156,13 @@ uint16_t Device::Impl::system_command(uint8_t cmd) {
       if (motor_on()) enter(State::MotorOff, Event::SwitchOff);
       state = State::MotorOff;
       boot_mode = true;
-      locator = false;
+      locator.stop();
       return 0;
     case 126: // Locator start
-      locator = true;
-      locator_start_ns = time_ns;
+      locator.start(time_ns);
       return 0;
     case 127: // Locator stop
-      locator = false;
+      locator.stop();
       return 0;
     case 129: // Application reset: configuration to factory settings
     case 131: { // Back-To-Box: the same, then silent until power is cycled
@@ -157,18 +172,18 @@ uint16_t Device::Impl::system_command(uint8_t cmd) {
       return 0;
     }
     case 160: // reset the resettable maximum temperature (index 99)
-      store.set_raw_internal(99, 1, 0);
-      store.set_raw_internal(99, 2, 0);
+      store.set_raw_internal(param::kMaxTemperatureResettable.operating_time, 0);
+      store.set_raw_internal(param::kMaxTemperatureResettable.temperature, 0);
       return 0;
     case 161: // reset the time above critical temperature (index 100)
-      store.set_raw_internal(100, 0, 0);
-      temp_warn_rem_ns = 0;
+      store.set_raw_internal(param::kTimeWithTemperatureWarning, 0);
+      diagnostics.temp_warn_rem_ns = 0;
       return 0;
     case 170: // apply position zero: re-initialise from index 86 (manual 4.3.3)
       init_origin();
       return 0;
     case 171: // store the zero set with Set Origin persistently (manual 4.3.2)
-      store.set_raw_internal(86, 0, origin_to_zero_offset_wire(origin));
+      store.set_raw_internal(param::kPositionZero, origin_to_zero_offset_wire(origin));
       return 0;
     default:
       return kIsduFunctionUnavailable;

@@ -1,75 +1,74 @@
-// Monitors and indicators of the Device: temperature and motor voltage
-// (manual 7.2, 7.3, index 85), locator timeout (6.6), persistent diagnostics
-// (6.3), the tracking limit (index 87) and the LED band (3.1, index 83).
+// Monitors and indicators of the Device: the link watchdog (manual 5),
+// temperature and motor voltage (7.2, 7.3, index 85), the tracking error
+// (index 87), the locator timeout (6.6), persistent diagnostics (6.3) and
+// the LED band (3.1, index 83): how the Device acts on its monitors'
+// verdicts (the monitors themselves: device_monitors.hpp).
 #include <algorithm>
 #include <cmath>
 
 #include "device_logic/device_impl.hpp"
 
 namespace sreh {
+
+// Manual 5: the link is interrupted.
+void Device::Impl::link_lost() {
+  outputs_valid = false;
+  store.abort_block(); // an open block download is discarded (iolink.md)
+  if (!boot_mode && motor_on()) raise_error(ErrorBit::InvalidCommand, cause::kConnectionInterrupted);
+}
+
 void Device::Impl::run_monitors(int64_t dt_ns) {
-  // Temperature (manual 7.2 114.3, 7.3 115.1); the warning clears itself.
-  if (temperature_C >= kTemperatureError_C && faults.error(ErrorBit::Temperature) == 0) {
+  // Temperature (manual 7.2 114.3, 7.3 115.1).
+  const auto heat = TemperatureMonitor::step(temperature_C, faults.warning(WarningBit::Temperature) != 0);
+  if (heat.over_temperature && faults.error(ErrorBit::Temperature) == 0) {
     raise_error(ErrorBit::Temperature, cause::kOverTemperature);
   }
-  if (temperature_C >= kTemperatureWarning_C) {
-    set_warning(WarningBit::Temperature, cause::kTemperatureWarning);
-  } else if (temperature_C < kTemperatureWarning_C - kTemperatureHysteresis_C) {
-    set_warning(WarningBit::Temperature, 0);
-  }
+  set_warning(WarningBit::Temperature, heat.warning ? cause::kTemperatureWarning : 0);
 
   // Motor voltage (manual 6.2 index 85, 7.2 114.4, 7.3 115.2): an error with
   // the motor on, a warning with it off.
-  const double lo = static_cast<double>(store.raw(85, 1)) * 1e-3;
-  const double hi = static_cast<double>(store.raw(85, 2)) * 1e-3;
-  uint8_t code = 0;
-  if (supply_V < lo) code = cause::kVoltageLow;
-  else if (supply_V > hi) code = cause::kVoltageHigh;
-  if (code != 0 && code == voltage_cause) voltage_out_ns += dt_ns;
-  else voltage_out_ns = 0;
-  voltage_cause = code;
-  const bool out = code != 0 && voltage_out_ns >= kVoltageDebounce_ns;
-  if (out && motor_on()) {
-    raise_error(ErrorBit::MotorVoltage, code);
-  }
-  set_warning(WarningBit::MotorVoltage, out && !motor_on() ? code : 0);
+  static const double min_scale = parameter_row(param::kMotorVoltageMin).display_scale; // mV -> V
+  static const double max_scale = parameter_row(param::kMotorVoltageMax).display_scale;
+  const double lo = static_cast<double>(store.raw(param::kMotorVoltageMin)) * min_scale;
+  const double hi = static_cast<double>(store.raw(param::kMotorVoltageMax)) * max_scale;
+  const uint8_t out = voltage.step(supply_V, lo, hi, dt_ns);
+  if (out != 0 && motor_on()) raise_error(ErrorBit::MotorVoltage, out);
+  set_warning(WarningBit::MotorVoltage, out != 0 && !motor_on() ? out : 0);
 
-  // Locator stops by itself after 10 minutes (manual 6.6, 127).
-  if (locator && time_ns - locator_start_ns >= kLocatorDuration_ns) locator = false;
+  locator.step(time_ns); // manual 6.6, 127: stops by itself after 10 minutes
 }
 
+// Manual 6.3: operating times (97, 100) and maximum temperatures (98, 99).
 void Device::Impl::run_diagnostics(int64_t dt_ns) {
-  auto count_minutes = [&](int64_t& rem, uint16_t index, uint8_t sub) {
-    rem += dt_ns;
-    while (rem >= kMinute_ns) {
-      rem -= kMinute_ns;
-      store.set_raw_internal(index, sub, store.raw(index, sub) + 1);
-    }
+  const auto minutes = diagnostics.step(dt_ns, motor_on(), state == State::Busy,
+                                        faults.warning(WarningBit::Temperature) != 0);
+  auto add = [this](ParamId id, int64_t n) {
+    if (n > 0) store.set_raw_internal(id, store.raw(id) + n);
   };
-  count_minutes(powered_rem_ns, 97, 1);
-  if (motor_on()) count_minutes(motor_on_rem_ns, 97, 2);
-  if (state == State::Busy) count_minutes(moving_rem_ns, 97, 3);
-  if (faults.warning(WarningBit::Temperature) != 0) count_minutes(temp_warn_rem_ns, 100, 0);
+  add(param::kTotalOperatingTime, minutes.powered);
+  add(param::kOperatingTimeMotorOn, minutes.motor_on);
+  add(param::kOperatingTimeMoving, minutes.moving);
+  add(param::kTimeWithTemperatureWarning, minutes.temp_warning);
   // Maximum temperatures (98 ever, 99 resettable), raw 0.5 C.
   const int64_t t_raw = std::clamp<int64_t>(std::llround(temperature_C * 2.0), 0, 255);
-  for (uint16_t index : {uint16_t{98}, uint16_t{99}}) {
-    if (t_raw > store.raw(index, 2)) {
-      store.set_raw_internal(index, 2, t_raw);
-      store.set_raw_internal(index, 1, store.raw(97, 1));
+  for (const param::MaxTemperature& max : {param::kMaxTemperatureEver, param::kMaxTemperatureResettable}) {
+    if (t_raw > store.raw(max.temperature)) {
+      store.set_raw_internal(max.temperature, t_raw);
+      store.set_raw_internal(max.operating_time, store.raw(param::kTotalOperatingTime));
     }
   }
 }
 
 double Device::Impl::tracking_limit_deg() const {
-  return static_cast<double>(store.raw(87, 1)) * kTrackingErrorRawUnit_deg; // A-PARAM: 87.1 raw unit
+  return static_cast<double>(store.raw(param::kTrackingErrorMax)) * kTrackingErrorRawUnit_deg; // A-PARAM-1
 }
 
 // Manual 3.1 (LED band), 6.2 index 83, 6.6 locator, 9 boot mode (A-LED-1 for blink timing).
 LedColor Device::Impl::led() const {
   if (!powered) return LedColor::Off;
   if (boot_mode) return LedColor::Violet;
-  if (locator) return (time_ns % kNsPerS) < kNsPerS / 2 ? LedColor::White : LedColor::Off;
-  const int64_t mode = store.raw(83, 0);
+  if (locator.active) return (time_ns % kNsPerS) < kNsPerS / 2 ? LedColor::White : LedColor::Off;
+  const int64_t mode = store.raw(param::kLedBandMode);
   const bool err = faults.any_error();
   const bool warn = faults.any_warning();
   if (mode == 0) return LedColor::Off;

@@ -12,7 +12,7 @@ constexpr uint8_t kVersion = 1;
 constexpr std::size_t kHeader = 6; // magic, version, firmware-failed flag
 } // namespace
 
-std::vector<uint8_t> save_nvm_image(const Device::Impl& d) {
+std::vector<uint8_t> save_nvm_image(const DeviceConfiguration& d) {
   std::vector<uint8_t> out(kMagic, kMagic + 4);
   out.push_back(kVersion);
   out.push_back(d.firmware_failed ? 1 : 0);
@@ -21,7 +21,7 @@ std::vector<uint8_t> save_nvm_image(const Device::Impl& d) {
   return out;
 }
 
-bool restore_nvm(Device::Impl& d, const std::vector<uint8_t>& image) {
+bool restore_nvm(DeviceConfiguration& d, const std::vector<uint8_t>& image) {
   if (image.size() < kHeader || !std::equal(kMagic, kMagic + 4, image.begin()) || image[4] != kVersion ||
       image[5] > 1) {
     return false;

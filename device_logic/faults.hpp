@@ -91,6 +91,7 @@ struct FaultSet {
   bool any_warning() const { return warning_byte() != 0; }
   uint8_t error(ErrorBit b) const { return error_cause[static_cast<int>(b)]; }
   uint8_t warning(WarningBit b) const { return warning_cause[static_cast<int>(b)]; }
+  bool operator==(const FaultSet&) const = default;
 };
 
 // The events the device reports in Detailed Device Status (37) and, for the

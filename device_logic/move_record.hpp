@@ -44,6 +44,7 @@ struct MoveRecord {
   MoveOutcome outcome = MoveOutcome::InProgress;
   uint8_t error_code = 0;     // the error byte when outcome == Error (manual 2.4)
   bool completed() const { return outcome == MoveOutcome::Done; }
+  bool operator==(const MoveRecord&) const = default;
 };
 
 const char* outcome_name(MoveOutcome o);
@@ -80,6 +81,7 @@ class MoveRecorder {
   // Records released since the last call, oldest first (the device keeps no history).
   std::vector<MoveRecord> take_finished();
   void restart_numbering() { count_ = 0; }        // power-on: numbers count from 1 again
+  bool operator==(const MoveRecorder&) const = default;
 
  private:
   MoveRecord current_{};

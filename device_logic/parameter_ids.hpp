@@ -35,8 +35,23 @@ inline constexpr ParamId kPositionZero{86, 0};            // manual 6.2, 4.3
 inline constexpr ParamId kTrackingErrorMax{87, 1};        // manual 6.2 (raw unit: A-PARAM-1)
 inline constexpr ParamId kTrackingErrorActive{87, 2};
 inline constexpr ParamId kMoveCount{96, 0};               // manual 6.3 (DE: moves)
+inline constexpr ParamId kTotalOperatingTime{97, 1};      // manual 6.3, minutes
+inline constexpr ParamId kOperatingTimeMotorOn{97, 2};
+inline constexpr ParamId kOperatingTimeMoving{97, 3};
+// Maximum temperature ever (98) and since the last reset (99, command 160), manual 6.3.
+struct MaxTemperature {
+  ParamId operating_time, temperature;
+};
+inline constexpr MaxTemperature kMaxTemperatureEver{{98, 1}, {98, 2}};
+inline constexpr MaxTemperature kMaxTemperatureResettable{{99, 1}, {99, 2}};
+inline constexpr ParamId kTimeWithTemperatureWarning{100, 0}; // manual 6.3, minutes
+inline constexpr ParamId kProcessDataInImage{40, 0};      // manual 6.4
+inline constexpr ParamId kProcessDataOutImage{41, 0};     // manual 6.4
 inline constexpr ParamId kTemperature{112, 0};            // manual 6.4
 inline constexpr ParamId kMotorVoltage{113, 0};           // manual 6.4
+inline constexpr uint16_t kErrorCauses = 114;             // manual 6.4: record, subindex 1..8
+inline constexpr uint16_t kWarningCauses = 115;           // manual 6.4: record, subindex 1..3
+inline constexpr ParamId kBootModeStatus{17343, 0};       // manual 6.4, 9
 
 // Motion parameter set n = index 64 + n (manual 6.2, 3.5).
 struct MotionSet {
@@ -51,8 +66,8 @@ struct MotionSet {
 inline constexpr int kMotionSets = 8; // sets 0..7
 
 // The causes of error bits 7..0 (114.1..8) and warning bits 7..5 (115.1..3), manual 6.4.
-constexpr ParamId error_cause(int subindex) { return {114, static_cast<uint8_t>(subindex)}; }
-constexpr ParamId warning_cause(int subindex) { return {115, static_cast<uint8_t>(subindex)}; }
+constexpr ParamId error_cause(int subindex) { return {kErrorCauses, static_cast<uint8_t>(subindex)}; }
+constexpr ParamId warning_cause(int subindex) { return {kWarningCauses, static_cast<uint8_t>(subindex)}; }
 
 } // namespace param
 

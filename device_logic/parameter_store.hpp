@@ -17,6 +17,7 @@
 
 #include "device_logic/data_storage.hpp"
 #include "device_logic/isdu.hpp"
+#include "device_logic/parameter_ids.hpp"
 
 namespace sreh {
 
@@ -79,11 +80,13 @@ class ParameterStore {
   // Raw numeric value of a config / persistent row (table default for other
   // numeric rows, 0 for unknown or non-numeric rows).
   int64_t raw(uint16_t index, uint8_t subindex) const;
+  int64_t raw(ParamId id) const { return raw(id.index, id.subindex); }
   // Device-side update, no access checks, clamped to the row's range: the
   // persistent counters 96..100, 86 via command 171. Changing a config row
   // counts as a local change: config revision advances and a DS upload is
   // requested (iolink.md). Unknown or non-numeric rows are ignored.
   void set_raw_internal(uint16_t index, uint8_t subindex, int64_t raw);
+  void set_raw_internal(ParamId id, int64_t raw) { set_raw_internal(id.index, id.subindex, raw); }
   std::string tag(uint16_t index) const; // 24, 25, 26 (empty for others)
 
   // Non-volatile memory image: config, persistent diagnostics, tags and the

@@ -14,6 +14,7 @@ struct MotionLimits {
 
   // All three finite and > 0. The planners return an empty profile otherwise.
   bool valid() const;
+  bool operator==(const MotionLimits&) const = default;
 };
 
 // Limits of a motion parameter set (manual 3.5.3-3.5.6) in display units
@@ -28,6 +29,7 @@ struct KinematicState {
   double vel = 0; // rad/s
   double acc = 0; // rad/s^2
   double jerk = 0; // rad/s^3
+  bool operator==(const KinematicState&) const = default;
 };
 
 // Up to seven constant-jerk phases. Unused phases have zero duration.
@@ -61,6 +63,8 @@ class Profile {
 
   // Sample at time t (clamped to [0, duration]); at(duration) is the end at rest.
   KinematicState at(double t_s) const;
+
+  bool operator==(const Profile&) const = default;
 
  private:
   void finish(const KinematicState& start); // fills boundaries and times from durations/jerks

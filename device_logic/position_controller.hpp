@@ -39,6 +39,7 @@ struct ControllerGains {
   int delay_steps = 0;                 // loop delay in control periods (0 .. 4)
 
   double velocity_bandwidth_for(double inertia_kgm2) const; // wv(J)
+  bool operator==(const ControllerGains&) const = default;
 };
 ControllerGains default_controller_gains();
 
@@ -63,6 +64,7 @@ class PositionController {
   double integral_torque_Nm() const { return integral_; }
   bool saturated() const { return saturated_; } // the last computed output hit a torque limit
   const ControllerGains& gains() const { return gains_; }
+  bool operator==(const PositionController&) const = default;
 
  private:
   ControllerGains gains_;

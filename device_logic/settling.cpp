@@ -24,8 +24,11 @@ void SettlingMonitor::start(const SettlingParameters& p) { // point (b)
 }
 
 SettlingResult SettlingMonitor::update(double error_rad, double dt_s) {
+  return update_ns(error_rad, seconds_to_ns(dt_s));
+}
+
+SettlingResult SettlingMonitor::update_ns(double error_rad, int64_t dt_ns) {
   if (result_ != SettlingResult::Settling) return result_;
-  const int64_t dt_ns = seconds_to_ns(dt_s);
   elapsed_ns_ += dt_ns;
   if (within(error_rad, p_.tolerance_rad)) {
     if (inside_) {

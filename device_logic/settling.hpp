@@ -16,6 +16,7 @@ struct SettlingParameters {
   double wait_s = 0;          // sub 6
   double timeout_s = 0;       // sub 7
   bool timeout_enabled = true; // sub 8
+  bool operator==(const SettlingParameters&) const = default;
 };
 
 enum class SettlingResult { Settling, Done, Timeout };
@@ -28,6 +29,7 @@ class SettlingMonitor {
   // the previous update (or after start()). dt_s = 0 evaluates a sample at
   // point (b) itself. Done and Timeout are sticky until the next start().
   SettlingResult update(double error_rad, double dt_s);
+  SettlingResult update_ns(double error_rad, int64_t dt_ns); // the same, integer time
   double settling_time_s() const { return static_cast<double>(elapsed_ns_) * 1e-9; } // since point (b)
   double in_window_time_s() const { return static_cast<double>(in_window_ns_) * 1e-9; } // since (c)/(e)
   SettlingResult result() const { return result_; }
@@ -35,6 +37,8 @@ class SettlingMonitor {
   // The tolerance window test, inclusive (manual 3.5.2 (5): "maximum
   // permissible deviation"). The device reuses it for warning 115.3.
   static bool within(double error_rad, double tolerance_rad);
+
+  bool operator==(const SettlingMonitor&) const = default;
 
  private:
   SettlingParameters p_{};

@@ -49,6 +49,9 @@ constexpr int64_t rad_to_internal_counts(double rad) {
 // Durations in integer nanoseconds, so clocks never accumulate float error
 // (style.md 8). Non-finite or negative durations count as 0.
 inline int64_t seconds_to_ns(double s) { return s > 0.0 && s < 9e9 ? static_cast<int64_t>(s * 1e9 + 0.5) : 0; }
+// Back to seconds for a step length or a sample time: one correctly rounded
+// division (100'000 ns is exactly the double 1e-4), never a running sum.
+constexpr double ns_to_seconds(int64_t ns) { return static_cast<double>(ns) / 1e9; }
 
 // alpha100% = M / (J_intern + J_load), manual 3.5.4.
 constexpr double alpha100_rad_s2(double load_gcm2) {

@@ -241,6 +241,14 @@ class ScenarioRun {
 
   void execute(const Step&, const std::string&, const SupplyStep& a) { twin_->set_supply_voltage(a.voltage_V); }
 
+  void execute(const Step& step, const std::string& id, const LoadStep& a) {
+    try {
+      twin_->set_load(a.load); // A-TWIN-33
+    } catch (const std::invalid_argument& e) { // an MJCF load above the module's limit
+      record(id, step.loc, "load", false, e.what(), e.what());
+    }
+  }
+
   void execute(const Step&, const std::string&, const LinkStep& a) {
     if (a.mode != LinkStep::Mode::Up) twin_->set_link_up(false);
     if (a.mode == LinkStep::Mode::Down) return; // stays down until `link: up`

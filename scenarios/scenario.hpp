@@ -93,6 +93,9 @@ struct IsduWriteStep {
 
 struct TorqueStep { double torque_Nm = 0; std::optional<double> for_s; }; // no for_s: stays on
 struct SupplyStep { double voltage_V = 24; };
+// `load:` another load on the flange from now on (a gripper picks or
+// releases a part, A-TWIN-33); the device's 64+n.4 is not changed.
+struct LoadStep { LoadSpec load = NoLoad{}; };
 // `link: {down_s}` = down, wait, up; `link: down` / `link: up` alone. Going
 // up takes one cycle: the master's first exchange (scenarios/README.md Timing).
 struct LinkStep {
@@ -130,7 +133,7 @@ struct RepeatStep {
 
 using StepAction = std::variant<PdStep, WaitStep, WaitUntilStep, ExpectStep, IsduReadStep, IsduWriteStep,
                                 TorqueStep, SupplyStep, LinkStep, PdValidStep, PowerCycleStep, CommentStep,
-                                FirmwareStep, RepeatStep, SetStep, SaveStep>;
+                                FirmwareStep, RepeatStep, SetStep, SaveStep, LoadStep>;
 
 struct Step {
   std::string number; // "3", or "5.2" inside a repeat

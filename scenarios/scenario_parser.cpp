@@ -17,6 +17,7 @@
 
 #include "device_logic/units.hpp"
 #include "scenarios/comparison_parser.hpp"
+#include "scenarios/load_file.hpp"
 #include "scenarios/conformance_steps.hpp"
 #include "scenarios/isdu_value.hpp"
 #include "scenarios/snapshot.hpp"
@@ -45,7 +46,7 @@ const std::vector<std::string_view> kConditionKeys = {
 
 const std::vector<std::string_view> kStepKinds = {
     "pd", "wait_s", "wait_until", "expect", "isdu_read", "isdu_write", "torque", "supply",
-    "link", "pd_valid", "power", "comment", "firmware", "repeat", "set", "save"};
+    "link", "pd_valid", "power", "comment", "firmware", "repeat", "set", "save", "load"};
 
 std::optional<State> state_from_name(const std::string& s) {
   for (State st : {State::MotorOff, State::Ready, State::Busy, State::Done, State::ErrorOn, State::ErrorOff}) {
@@ -95,6 +96,10 @@ class Parser {
     if (root["expect"]) s.expect = parse_run_expect(root["expect"]);
     return s;
   }
+
+  // For files that embed scenario loads (load_file.hpp: sizing cycles).
+  LoadSpec load(const YAML::Node& n) { return parse_load(n); }
+  double mounting(const YAML::Node& n) { return parse_mounting(n); }
 
  private:
   // ---- world and configuration ----
@@ -278,6 +283,8 @@ class Parser {
     } else if (k == "supply") {
       r_.check_map(v, kw, {"V"});
       step.action = SupplyStep{r_.number(r_.require(v, "V", kw), kw + ".V", 0.0, kMaxSupplyV)};
+    } else if (k == "load") {
+      step.action = LoadStep{parse_load(v)};
     } else if (k == "link") {
       step.action = detail::parse_link(r_, v, kw);
     } else if (k == "pd_valid") step.action = PdValidStep{r_.boolean(v, kw)};
@@ -475,6 +482,12 @@ Scenario parse_scenario_text(const std::string& yaml_text, const std::string& fi
     throw ScenarioError(loc, e.msg);
   }
 }
+
+LoadSpec parse_load_node(const YAML::Node& node, const std::string& file, const std::string& base_dir) {
+  return Parser(file, base_dir).load(node);
+}
+
+double parse_mounting_node(const YAML::Node& node, const std::string& file) { return Parser(file, "").mounting(node); }
 
 Scenario parse_scenario_file(const std::string& path, const Limits& limits) {
   const std::string text = detail::read_limited_file(path, limits, "scenario file");

@@ -16,22 +16,15 @@
 #include "device_logic/parameter_table.hpp"
 #include "device_logic/planner.hpp"
 #include "device_logic/units.hpp"
+#include "sizing/run_parts.hpp"
 #include "sizing/sizing.hpp"
 #include "sizing/thermal_estimate.hpp"
 #include "sizing/twin_factory.hpp"
 #include "twin/thermal.hpp"
 
 namespace sreh::sizing {
-namespace {
 
-// A-SIZE-3: how long a move may take beyond travel + settling timeout
-// before the run gives up on it (a stuck move always ends in an error first).
-constexpr double kMoveSlack_s = 0.5;
-constexpr int kSwitchOnCycles = 100; // T1 takes one IO-Link cycle; generous
-// A-SIZE-9: a dwell longer than this is simulated only this long; the rest
-// is accounted for with the loss and torque of the simulated hold.
-constexpr double kMaxSimulatedDwell_s = 0.2;
-
+// Shared with the cycle evaluation (run_parts.hpp).
 std::string error_text(uint8_t code) {
   static constexpr const char* kNames[8] = {
       "settling timeout (114.8)",        "invalid parameter (114.7)", "invalid command (114.6)",
@@ -70,21 +63,6 @@ double read_display(Twin& twin, ParamId id) {
   return raw_to_display(id, decode_number(parameter_row(id).type, r.data));
 }
 
-template <class Pred>
-bool run_until(Twin& twin, Pred done, int max_cycles) {
-  for (int i = 0; i < max_cycles; ++i) {
-    twin.run_cycle();
-    if (done()) return true;
-  }
-  return false;
-}
-
-// Failed checks, each with the limit it names (A-SIZE-5).
-struct Reasons {
-  std::vector<std::pair<std::string, std::string>> list; // binding limit, text
-  void add(std::string limit, std::string text) { list.emplace_back(std::move(limit), std::move(text)); }
-};
-
 // The limit an error code points at (manual 7.2).
 std::string category_of_error(uint8_t code) {
   if (code & (1u << static_cast<int>(ErrorBit::TrackingError))) return "tracking";
@@ -98,7 +76,11 @@ int cycles_for(double seconds, double cycle_s) {
   return static_cast<int>(std::ceil(seconds / cycle_s - 1e-9));
 }
 
+namespace {
+
 double read_tracking_limit_deg(Twin& twin) { return read_display(twin, param::kTrackingErrorMax); }
+
+} // namespace
 
 // A-SIZE-15: the bus power of one sample: mechanical power plus the
 // winding's copper loss (the output stage taken as lossless).
@@ -135,8 +117,6 @@ SupplyFigures supply_figures(const MotorModel& motor, const std::vector<TraceRow
   f.overvoltage_advice = bus_max_V > 0 && f.peak_bus_V > bus_max_V;
   return f;
 }
-
-} // namespace
 
 Evaluation evaluate(const SizingRequest& rq, const ParameterSetValues& set, bool keep_trace) {
   TwinConfig cfg;
@@ -296,64 +276,33 @@ Evaluation evaluate(const SizingRequest& rq, const ParameterSetValues& set, bool
   const ThermalEstimate th = estimate_thermal(ev.mean_loss_W, rq.ambient_C);
   ev.steady_temperature_C = th.steady_C;
   ev.time_to_warning_s = th.time_to_warning_s;
+  ev.time_to_trip_s = th.time_to_trip_s;
 
-  // Feasible with margin (A-SIZE-5); the same checks for a given set and
-  // for every set the search tries.
-  const double warning_limit_C = kTemperatureWarning_C - rq.thermal_margin_K;
   ev.continuous_torque_Nm = continuous_torque_Nm(rq.ambient_C, rq.thermal_margin_K);
   ev.utilisation.peak_torque_pct = 100.0 * (1.0 - ev.min_torque_headroom);
   ev.utilisation.rms_torque_pct = ev.continuous_torque_Nm > 0 ? 100.0 * ev.rms_torque_Nm / ev.continuous_torque_Nm : 0;
   ev.utilisation.thermal_margin_K = kTemperatureWarning_C - ev.steady_temperature_C;
-  if (reasons.list.empty()) {
-    if (warnings & (1u << static_cast<int>(WarningBit::Positioning))) reasons.add("settling", warning_text(warnings));
-    else if (warnings != 0) reasons.add(warnings & (1u << static_cast<int>(WarningBit::Temperature)) ? "temperature" : "voltage",
-                                        warning_text(warnings));
-    if (ev.peak_torque_Nm > kTorqueMargin * ev.torque_capability_Nm) {
-      reasons.add("torque_at_speed", fmt::format("peak torque {:.3f} N m is above {:.0f} % of the motor's {:.3f} N m",
-                                                 ev.peak_torque_Nm, 100 * kTorqueMargin, ev.torque_capability_Nm));
-    } else if (ev.min_torque_headroom < 1.0 - kTorqueMargin) {
-      reasons.add("torque_at_speed", fmt::format(
-          "torque within {:.0f} % of the motor's capability at {:.0f} deg/s and {:.1f} V (manual 3.5.3: "
-          "the reachable speed falls with the voltage)",
-          100 * (1.0 - kTorqueMargin), worst_headroom_speed_dps, rq.voltage_V));
-    }
-    if (ev.tracking_limit_deg > 0 && ev.max_tracking_error_deg > kTrackingMargin * ev.tracking_limit_deg) {
-      reasons.add("tracking", fmt::format("tracking error {:.3f} deg is above {:.0f} % of the {:.1f} deg limit (index 87.1)",
-                                          ev.max_tracking_error_deg, 100 * kTrackingMargin, ev.tracking_limit_deg));
-    }
-    if (ev.steady_temperature_C >= warning_limit_C) {
-      reasons.add("temperature",
-                  fmt::format("continuous cycling heats the module to {:.1f} degC, less than the required {:.1f} K "
-                              "below the 70 degC warning (115.1){}",
-                              ev.steady_temperature_C, rq.thermal_margin_K,
-                              ev.time_to_warning_s ? fmt::format("; warning after {:.0f} s", *ev.time_to_warning_s) : ""));
-    }
-    if (rq.max_positioning_ms && ev.positioning_s > *rq.max_positioning_ms * 1e-3) {
-      reasons.add("max_positioning", fmt::format("positioning {:.1f} ms is above the required {:.1f} ms",
-                                                 ev.positioning_s * 1e3, *rq.max_positioning_ms));
-    }
-    if (rq.max_cycle_ms && ev.cycle_s > *rq.max_cycle_ms * 1e-3) {
-      reasons.add("max_cycle", fmt::format("cycle {:.1f} ms is above the required {:.1f} ms", ev.cycle_s * 1e3,
-                                           *rq.max_cycle_ms));
-    }
-  }
-  ev.feasible = reasons.list.empty();
-  for (const auto& r : reasons.list) ev.reason += (ev.reason.empty() ? "" : "; ") + r.second;
-  if (!ev.feasible) {
-    ev.binding_limit = reasons.list.front().first;
-  } else {
-    // The limit closest to failing: the largest used fraction of what the margin allows.
-    const double rise_allowed = warning_limit_C - rq.ambient_C;
-    const std::pair<double, const char*> used[] = {
-        {(1.0 - ev.min_torque_headroom) / kTorqueMargin, "torque_at_speed"},
-        {ev.tracking_limit_deg > 0 ? ev.max_tracking_error_deg / (kTrackingMargin * ev.tracking_limit_deg) : 0.0, "tracking"},
-        {rise_allowed > 0 ? (ev.steady_temperature_C - rq.ambient_C) / rise_allowed : 1.0, "temperature"},
-        {rq.max_positioning_ms ? ev.positioning_s / (*rq.max_positioning_ms * 1e-3) : 0.0, "max_positioning"},
-        {rq.max_cycle_ms ? ev.cycle_s / (*rq.max_cycle_ms * 1e-3) : 0.0, "max_cycle"}};
-    const auto* top = &used[0];
-    for (const auto& u : used) if (u.first > top->first) top = &u;
-    ev.binding_limit = top->second;
-  }
+  // Feasible with margin (A-SIZE-5); the same checks for a given set, for
+  // every set the search tries and for cycles (judge(), limits.cpp).
+  LimitFigures lf;
+  lf.warnings = warnings;
+  lf.peak_torque_Nm = ev.peak_torque_Nm;
+  lf.torque_capability_Nm = ev.torque_capability_Nm;
+  lf.min_torque_headroom = ev.min_torque_headroom;
+  lf.worst_headroom_speed_dps = worst_headroom_speed_dps;
+  lf.voltage_V = rq.voltage_V;
+  lf.max_tracking_error_deg = ev.max_tracking_error_deg;
+  lf.tracking_limit_deg = ev.tracking_limit_deg;
+  lf.steady_temperature_C = ev.steady_temperature_C;
+  lf.ambient_C = rq.ambient_C;
+  lf.thermal_margin_K = rq.thermal_margin_K;
+  lf.time_to_warning_s = ev.time_to_warning_s;
+  if (rq.max_positioning_ms) lf.positioning_target = std::pair{ev.positioning_s, *rq.max_positioning_ms * 1e-3};
+  if (rq.max_cycle_ms) lf.cycle_target = std::pair{ev.cycle_s, *rq.max_cycle_ms * 1e-3};
+  const Judgement j = judge(lf, std::move(reasons));
+  ev.feasible = j.feasible;
+  ev.reason = j.reason;
+  ev.binding_limit = j.binding_limit;
   if (keep_trace) ev.trace = rows;
   return ev;
 }

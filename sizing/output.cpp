@@ -59,6 +59,7 @@ nlohmann::json to_json(const SizingRequest& rq, const SizingResult& r) {
   j["mean_loss_W"] = e.mean_loss_W;
   j["steady_temperature_C"] = e.steady_temperature_C;
   j["time_to_warning_s"] = optional_number(e.time_to_warning_s);
+  j["time_to_trip_s"] = optional_number(e.time_to_trip_s);
   // The answer (issue 17): for a search, whether the target (or, without
   // one, any set) is met with every margin; for a given set, its own check.
   j["feasible"] = r.feasible;
@@ -131,8 +132,10 @@ std::string summary_text(const SizingRequest& rq, const SizingResult& r) {
                    e.torque_capability_Nm > 0 ? 100 * e.peak_torque_Nm / e.torque_capability_Nm : 0.0);
   s += fmt::format("  tracking error    {:8.3f} deg (limit {:.1f} deg, index 87.1)\n", e.max_tracking_error_deg,
                    e.tracking_limit_deg);
-  s += fmt::format("  temperature       {:8.1f} degC steady under continuous cycling ({:.2f} W), 70 degC warning: {}\n",
-                   e.steady_temperature_C, e.mean_loss_W, duration_text(e.time_to_warning_s));
+  s += fmt::format("  temperature       {:8.1f} degC steady under continuous cycling ({:.2f} W), 70 degC warning: {}, "
+                   "75 degC trip: {}\n",
+                   e.steady_temperature_C, e.mean_loss_W, duration_text(e.time_to_warning_s),
+                   duration_text(e.time_to_trip_s));
   s += fmt::format("  utilisation       peak torque {:.0f} % at speed, RMS {:.0f} % of continuous {:.3f} N m, "
                    "thermal margin {:.1f} K (required {:.1f} K)\n",
                    e.utilisation.peak_torque_pct, e.utilisation.rms_torque_pct, e.continuous_torque_Nm,

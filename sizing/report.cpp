@@ -86,6 +86,8 @@ std::string numbers_table(const SizingRequest& rq, const SizingResult& r) {
   o += row("steady temperature", fmt::format("{:.1f} degC ({:.2f} W mean loss)", e.steady_temperature_C, e.mean_loss_W));
   o += row("time to 70 degC warning",
            e.time_to_warning_s ? fmt::format("{:.0f} s", *e.time_to_warning_s) : std::string("never"));
+  o += row("time to 75 degC trip (114.3)",
+           e.time_to_trip_s ? fmt::format("{:.0f} s", *e.time_to_trip_s) : std::string("never"));
   o += row("simulations", fmt::format("{}", r.simulations));
   return o + "</table>\n";
 }
@@ -115,8 +117,15 @@ std::string speed_torque_plot(const SizingRequest& rq, const Evaluation& e) {
     (brake ? braking : motoring).x.push_back(std::abs(r.velocity_dps));
     (brake ? braking : motoring).y.push_back(std::abs(r.torque_Nm));
   }
-  p.series = {cap, motoring, braking};
-  p.hlines = {{kTorqueMargin * e.torque_capability_Nm, fmt::format("{:.0f} % of peak", 100 * kTorqueMargin), "#9467bd", true}};
+  // The RMS point (issue 17): RMS torque at the RMS speed, against the continuous torque.
+  double sq_speed = 0;
+  for (const TraceRow& r : e.trace) sq_speed += r.velocity_dps * r.velocity_dps;
+  const double rms_speed = e.trace.empty() ? 0.0 : std::sqrt(sq_speed / static_cast<double>(e.trace.size()));
+  svg::Series rms{fmt::format("RMS point ({:.0f} deg/s, {:.3f} N m)", rms_speed, e.rms_torque_Nm),
+                  {rms_speed}, {e.rms_torque_Nm}, "#000000", 4.0, false, true};
+  p.series = {cap, motoring, braking, rms};
+  p.hlines = {{kTorqueMargin * e.torque_capability_Nm, fmt::format("{:.0f} % of peak", 100 * kTorqueMargin), "#9467bd", true},
+              {e.continuous_torque_Nm, "continuous torque (A-SIZE-14)", "#2ca02c", true}};
   p.vlines = {{e.set.setting.speed_dps, "set speed", "#555555"}};
   return report::figure(p, false);
 }
@@ -193,6 +202,7 @@ std::string size_report_html(const SizingRequest& rq, const SizingResult& r) {
     te.bands = {{{}, {}, -e.set.tolerance_deg, e.set.tolerance_deg, "tolerance window", "#2ca02c", 0.15}};
     o += report::figure(te);
   }
+  o += temperature_plot(e.mean_loss_W, rq.ambient_C, rq.thermal_margin_K, e.time_to_trip_s);
   o += "<p class=\"note\">Travel time from the device's planner; settling and positioning simulated; torque "
        "sampled per IO-Link cycle; temperature from the twin's lumped thermal model at the cycle's mean loss "
        "(docs/assumptions/sizing.md).</p>\n" + io::html_page_close();

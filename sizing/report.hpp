@@ -7,6 +7,9 @@
 #include <string>
 #include <vector>
 
+#include <optional>
+
+#include "sizing/cycle.hpp"
 #include "sizing/sizing.hpp"
 #include "sizing/sweep.hpp"
 
@@ -19,6 +22,17 @@ bool reports_available();
 std::string size_report_html(const SizingRequest& request, const SizingResult& result);
 std::filesystem::path write_size_report(const std::filesystem::path& dir, const SizingRequest& request,
                                         const SizingResult& result);
+
+// The cycle's report (cycle_report.cpp): numbers, sets, segments, the
+// speed-torque plane with the envelope, time per segment, temperature.
+std::string cycle_report_html(const CycleRequest& request, const CycleResult& result);
+std::filesystem::path write_cycle_report(const std::filesystem::path& dir, const CycleRequest& request,
+                                         const CycleResult& result);
+
+// Temperature vs time from ambient under the mean loss, with the 70 degC
+// warning, the 75 degC trip and the required margin (both reports).
+std::string temperature_plot(double mean_loss_W, double ambient_C, double thermal_margin_K,
+                             const std::optional<double>& time_to_trip_s);
 
 // Target times for the inverse plot when none are given: nice values
 // spanning the feasible positioning times of the grid.

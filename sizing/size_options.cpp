@@ -10,6 +10,7 @@
 #include "io/output_path.hpp"
 #include "scenarios/load_file.hpp"
 #include "scenarios/scenario_parser.hpp"
+#include "sizing/cycle_output.hpp"
 #include "sizing/output.hpp"
 #include "sizing/report.hpp"
 
@@ -18,7 +19,7 @@ namespace {
 
 using S = SizeOptions;
 const OptionSpec<S> kSizeOptions[] = {
-    {"angle-deg", "Move angle in degrees (the cycle is 0 -> A -> 0)", &S::angle_deg, true},
+    {"angle-deg", "Move angle in degrees (the cycle is 0 -> A -> 0); required unless --cycle", &S::angle_deg},
     {"load-gcm2", "Load inertia about the axis, 0 .. 15000 g cm^2 [default: 0 unless --load]", &S::load_gcm2},
     {"load", "Load file: YAML with a 'load:' key as in a scenario", &S::load},
     {"voltage-V", "Motor supply 16 .. 32 V (index 85)", &S::voltage_V, false, true},
@@ -40,6 +41,8 @@ const OptionSpec<S> kSizeOptions[] = {
     {"handshake-cycles", "IO-Link cycles per move for the PLC handshake (A-SIZE-16)", &S::handshake_cycles, false, true},
     {"mounting-tilt-deg", "Axis tilt from vertical, 0 .. 180 deg (90 horizontal: gravity acts); default: the load file's mounting:, else 0", &S::mounting_tilt_deg},
     {"report", "Write an HTML sizing report into this folder", &S::report},
+    {"cycle", "Size a multi-segment cycle from this YAML file (moves, dwells, load changes; docs/sizing.md)", &S::cycle},
+    {"emit-scenario", "Write a scenario replaying the sized cycle in the twin to this file", &S::emit_scenario},
 };
 
 } // namespace
@@ -86,7 +89,8 @@ LoadFile read_load_file(const std::string& path, std::string_view option) {
 
 SizingRequest make_request(const SizeOptions& a) {
   SizingRequest rq;
-  rq.angle_deg = a.angle_deg;
+  if (!a.angle_deg) throw SizingInputError("size: give the move with --angle-deg A, or a cycle with --cycle FILE.yaml");
+  rq.angle_deg = *a.angle_deg;
   if (a.load_gcm2 && !a.load.empty()) throw SizingInputError("--load-gcm2 and --load: give only one of them");
   if (a.load_gcm2) rq.load = InertiaLoad{*a.load_gcm2};
   else if (!a.load.empty()) {
@@ -120,14 +124,71 @@ SizingRequest make_request(const SizeOptions& a) {
   return rq;
 }
 
-SizeOutcome run_size(const SizeOptions& a) {
+namespace {
+
+// Options that describe the move, the load or the rig: with --cycle the
+// cycle file holds them (one source of truth).
+void refuse_with_cycle(const SizeOptions& a) {
+  const SizeOptions d;
+  const std::pair<bool, const char*> given[] = {
+      {a.angle_deg.has_value(), "--angle-deg"}, {a.load_gcm2.has_value(), "--load-gcm2"}, {!a.load.empty(), "--load"},
+      {a.speed_dps.has_value(), "--speed-dps"}, {a.accel_pct.has_value(), "--accel-pct"},
+      {a.jerk_pct.has_value(), "--jerk-pct"},   {a.timeout_ms.has_value(), "--timeout-ms"},
+      {a.max_positioning_ms.has_value(), "--max-positioning-ms"}, {a.max_cycle_ms.has_value(), "--max-cycle-ms"},
+      {a.mounting_tilt_deg.has_value(), "--mounting-tilt-deg"}, {a.voltage_V != d.voltage_V, "--voltage-V"},
+      {a.dwell_s != d.dwell_s, "--dwell-s"}, {a.tolerance_deg != d.tolerance_deg, "--tolerance-deg"},
+      {a.wait_ms != d.wait_ms, "--wait-ms"}, {a.ambient_C != d.ambient_C, "--ambient-C"},
+      {a.parameter_set != d.parameter_set, "--parameter-set"}, {a.cycles != d.cycles, "--cycles"},
+      {a.thermal_margin_K != d.thermal_margin_K, "--thermal-margin-K"},
+      {a.source_resistance_ohm != d.source_resistance_ohm, "--source-resistance-ohm"},
+      {a.bus_capacitance_F != d.bus_capacitance_F, "--bus-capacitance-F"},
+      {a.handshake_cycles != d.handshake_cycles, "--handshake-cycles"}};
+  for (const auto& [set, name] : given) {
+    if (set) throw SizingInputError(fmt::format("{} with --cycle: give it in the cycle file (docs/sizing.md)", name));
+  }
+}
+
+SizeOutcome run_cycle(const SizeOptions& a) {
+  refuse_with_cycle(a);
   SizeOutcome out;
+  CycleRequest rq = parse_cycle_file(a.cycle);
+  rq.keep_trace = !a.report.empty();
+  out.cycle_result = size_cycle(rq);
+  if (!a.report.empty()) {
+    try {
+      write_cycle_report(a.report, rq, out.cycle_result);
+    } catch (const std::runtime_error& e) {
+      throw SizingInputError(fmt::format("--report {}: {}", a.report, e.what()));
+    }
+  }
+  if (!a.emit_scenario.empty()) {
+    const CyclePlan plan = plan_sets(rq);
+    std::vector<int> set_of_segment;
+    for (int k : plan.move_set) set_of_segment.push_back(k < 0 ? -1 : plan.sets[static_cast<std::size_t>(k)].set);
+    write_scenario_file(a.emit_scenario,
+                        scenario_yaml(rq, out.cycle_result.evaluation.sets, set_of_segment,
+                                      "sized cycle " + std::filesystem::path(a.cycle).filename().string()));
+  }
+  out.feasible = out.cycle_result.evaluation.feasible;
+  out.json = cycle_to_json(rq, out.cycle_result);
+  out.text = cycle_summary_text(rq, out.cycle_result);
+  out.cycle = std::move(rq);
+  return out;
+}
+
+} // namespace
+
+SizeOutcome run_size(const SizeOptions& a) {
   if (!a.report.empty() && !reports_available()) throw SizingInputError("--report: this build has no renders");
   try { // the one output rule, before any work (issue 12)
-    io::check_outputs({{"--report", a.report, io::OutputKind::Folder}}, {a.load});
+    io::check_outputs({{"--report", a.report, io::OutputKind::Folder},
+                       {"--emit-scenario", a.emit_scenario, io::OutputKind::File}},
+                      {a.load, a.cycle});
   } catch (const io::PathError& e) {
     throw SizingInputError(e.what());
   }
+  if (!a.cycle.empty()) return run_cycle(a);
+  SizeOutcome out;
   out.request = make_request(a);
   out.result = size(out.request);
   if (!a.report.empty()) {
@@ -137,7 +198,15 @@ SizeOutcome run_size(const SizeOptions& a) {
       throw SizingInputError(fmt::format("--report {}: {}", a.report, e.what()));
     }
   }
+  if (!a.emit_scenario.empty()) {
+    const CycleRequest c = cycle_of_single(out.request);
+    write_scenario_file(a.emit_scenario,
+                        scenario_yaml(c, {out.result.evaluation.set}, {out.request.parameter_set, -1, out.request.parameter_set, -1},
+                                      fmt::format("sized move {} deg back and forth", out.request.angle_deg)));
+  }
+  out.feasible = out.result.feasible;
   out.json = to_json(out.request, out.result);
+  out.text = summary_text(out.request, out.result);
   return out;
 }
 

@@ -7,13 +7,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sizing/cycle.hpp"
 #include "sizing/option_table.hpp"
 #include "sizing/sizing.hpp"
 
 namespace sreh::sizing {
 
 struct SizeOptions {
-  double angle_deg = 0;
+  std::optional<double> angle_deg; // required unless --cycle
   std::optional<double> load_gcm2;
   std::string load;          // --load LOAD.yaml
   double voltage_V = 24.0;
@@ -32,6 +33,8 @@ struct SizeOptions {
   int handshake_cycles = 4;
   std::optional<double> mounting_tilt_deg;
   std::string report;        // HTML report folder ("" none)
+  std::string cycle;         // --cycle FILE.yaml: a multi-segment cycle (the file holds load, supply, ...)
+  std::string emit_scenario; // --emit-scenario FILE: a scenario replaying the sized cycle
 };
 
 // Every option of `size` except the CLI's own --json.
@@ -56,11 +59,16 @@ SizingRequest make_request(const SizeOptions& options);
 struct SizeOutcome {
   SizingRequest request;
   SizingResult result;
+  std::optional<CycleRequest> cycle; // with --cycle: the cycle, and its result below
+  CycleResult cycle_result;
+  bool feasible = false;
   nlohmann::json json; // the `size --json` object
+  std::string text;    // the summary of `size` without --json
 };
 
-// make_request + size + the report when asked; throws SizingInputError for
-// bad input (the CLI's exit 2).
+// make_request + size (or, with --cycle, parse_cycle_file + size_cycle) +
+// the report and the emitted scenario when asked; throws SizingInputError
+// for bad input (the CLI's exit 2).
 SizeOutcome run_size(const SizeOptions& options);
 
 } // namespace sreh::sizing

@@ -133,6 +133,7 @@ struct Evaluation {
   double mean_loss_W = 0;          // copper + speed loss over the last cycle
   double steady_temperature_C = 0; // lumped model, continuous cycling
   std::optional<double> time_to_warning_s; // to 70 degC (115.1) from ambient; none if never
+  std::optional<double> time_to_trip_s;    // to 75 degC (114.3, manual 7.2) from ambient; none if never
   bool feasible = false;
   std::string reason;              // why not feasible ("" when feasible)
   // The limit that failed (infeasible) or is closest to failing (feasible):

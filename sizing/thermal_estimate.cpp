@@ -13,17 +13,30 @@ ThermalEstimate estimate_thermal(double mean_loss_W, double ambient_C) {
   if (e.steady_C < kTemperatureWarning_C) return e;
   // Backward Euler (stable for any step): 0.5 s steps against time constants
   // of 125 s and 20 min; the steady state lies above the warning, so the
-  // loop ends (bounded at 10 days anyway).
+  // loop ends (bounded at 10 days anyway). It goes on to the 75 degC trip
+  // (manual 7.2 114.3) when the steady state reaches it.
   constexpr double kStep_s = 0.5;
   constexpr int kMaxSteps = 10 * 24 * 3600 * 2;
+  const double last_C = e.steady_C >= kTemperatureTrip_C ? kTemperatureTrip_C : kTemperatureWarning_C;
   for (int i = 1; i <= kMaxSteps; ++i) {
     thermal.step(kStep_s, mean_loss_W);
-    if (thermal.sensor_C() >= kTemperatureWarning_C) {
-      e.time_to_warning_s = i * kStep_s;
-      break;
-    }
+    if (!e.time_to_warning_s && thermal.sensor_C() >= kTemperatureWarning_C) e.time_to_warning_s = i * kStep_s;
+    if (!e.time_to_trip_s && thermal.sensor_C() >= kTemperatureTrip_C) e.time_to_trip_s = i * kStep_s;
+    if (thermal.sensor_C() >= last_C) break;
   }
   return e;
+}
+
+std::vector<TemperaturePoint> temperature_curve(double mean_loss_W, double ambient_C, double duration_s,
+                                                double step_s) {
+  Thermal thermal(ThermalSpec{ambient_C, 1.0});
+  std::vector<TemperaturePoint> out{{0.0, thermal.sensor_C()}};
+  const int n = static_cast<int>(duration_s / step_s);
+  for (int i = 1; i <= n; ++i) {
+    thermal.step(step_s, mean_loss_W);
+    out.push_back({i * step_s, thermal.sensor_C()});
+  }
+  return out;
 }
 
 } // namespace sreh::sizing

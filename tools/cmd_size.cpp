@@ -1,6 +1,7 @@
 // `sreh-twin size`: PerfectCycle-style sizing of one move back and forth
-// (interfaces.md, manual 3.5.1). Evaluates the set given with --speed-dps /
-// --accel-pct / --jerk-pct, or recommends the fastest feasible one.
+// (interfaces.md, manual 3.5.1), or of a multi-segment cycle (--cycle).
+// Evaluates the set given with --speed-dps / --accel-pct / --jerk-pct, or
+// recommends the fastest feasible one.
 // Exit 0 feasible, 1 infeasible, 2 bad input (a value outside the module's
 // limits, an unreadable load file).
 #include <iostream>
@@ -27,8 +28,8 @@ int size_command(const SizeArgs& a) {
     throw InputError(e.what());
   }
   if (a.json) std::cout << out.json.dump(2) << "\n";
-  else std::cout << sizing::summary_text(out.request, out.result);
-  return out.result.feasible ? 0 : 1;
+  else std::cout << out.text;
+  return out.feasible ? 0 : 1;
 }
 
 } // namespace
@@ -36,8 +37,8 @@ int size_command(const SizeArgs& a) {
 SREH_REGISTER_COMMAND(30, [](CLI::App& app, int& exit_code) {
   auto a = std::make_shared<SizeArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "size", "Size one move back and forth like Afag's PerfectCycle: times, torque, temperature, a recommended "
-              "parameter set (exit 0 feasible, 1 infeasible, 2 bad input)");
+      "size", "Size one move back and forth (or a multi-segment cycle, --cycle) like Afag's PerfectCycle: times, "
+              "torque, temperature, a recommended parameter set (exit 0 feasible, 1 infeasible, 2 bad input)");
   add_table_options(cmd, sizing::size_option_table(), a->options);
   cmd->get_option("--load-gcm2")->excludes("--load");
   cmd->get_option("--load")->excludes("--load-gcm2");

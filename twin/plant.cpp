@@ -36,16 +36,27 @@ Plant::Plant(const PlantConfig& config)
       drive_(config.motor, config.physics_dt_s),
       supply_(config.supply),
       thermal_(config.thermal),
-      dt_s_(config.physics_dt_s) {
+      dt_s_(config.physics_dt_s),
+      config_(config) {
   if (!std::isfinite(config.mounting_tilt_deg) || config.mounting_tilt_deg < -180.0 || config.mounting_tilt_deg > 180.0) {
     throw std::invalid_argument("mounting tilt_deg must be within -180 .. 180, got " + std::to_string(config.mounting_tilt_deg));
   }
-  BuiltModel built = build_model(config.load, config.hard_stops, config.physics_dt_s, config.module_model_path);
+  adopt_model(build_model(config.load, config.hard_stops, config.physics_dt_s, config.module_model_path));
+  sensors_.encoder_counts = 0;
+  sensors_.supply_V = supply_.bus_voltage_V();
+  sensors_.temperature_C = thermal_.sensor_C();
+  set_led_rgba(led_rgba(LedColor::Off));
+}
+
+// Takes over a compiled model: element ids, gravity from the mounting
+// (A-TWIN-24), fresh data at the model's reference pose, inertias. The
+// constructor's and set_load's common part (twin/plant_load.cpp).
+void Plant::adopt_model(BuiltModel built) {
   model_ = std::move(built.model);
   load_inertia_kgm2_ = built.load_inertia_kgm2;
   axis_inertia_kgm2_ = built.axis_inertia_kgm2;
   mjModel* m = model_.get();
-  const std::string& file = config.module_model_path;
+  const std::string& file = config_.module_model_path;
   const int rotor = require_id(m, mjOBJ_JOINT, "rotor", file);
   const int twist = require_id(m, mjOBJ_JOINT, "flange", file);
   rotor_qpos_ = m->jnt_qposadr[rotor];
@@ -61,7 +72,7 @@ Plant::Plant(const PlantConfig& config)
   block_eq_ = mj_name2id(m, mjOBJ_EQUALITY, "flange_block"); // optional: stand-in models may lack it
   // A-TWIN-24: the module tilted about its x axis by T: in the module's
   // frame "down" is (0, -sin T, -cos T).
-  const double tilt = deg_to_rad(config.mounting_tilt_deg);
+  const double tilt = deg_to_rad(config_.mounting_tilt_deg);
   const double g = std::sqrt(m->opt.gravity[0] * m->opt.gravity[0] + m->opt.gravity[1] * m->opt.gravity[1] +
                              m->opt.gravity[2] * m->opt.gravity[2]);
   m->opt.gravity[0] = 0.0;
@@ -71,10 +82,6 @@ Plant::Plant(const PlantConfig& config)
   mj_forward(m, data_.get());
   rotor_inertia_kgm2_ = m->dof_armature[rotor_dof_];
   flange_inertia_kgm2_ = data_->qM[m->dof_Madr[twist_dof_]];
-  sensors_.encoder_counts = 0;
-  sensors_.supply_V = supply_.bus_voltage_V();
-  sensors_.temperature_C = thermal_.sensor_C();
-  set_led_rgba(led_rgba(LedColor::Off));
 }
 
 double Plant::rotor_angle_rad() const { return data_->qpos[rotor_qpos_]; }

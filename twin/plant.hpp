@@ -62,6 +62,13 @@ class Plant {
   // and flange together, no twist; the encoder reading follows at once. The
   // only place the plant's joint state is set from outside.
   void set_flange_angle(double angle_rad, double velocity_rad_s = 0.0);
+  // A different load from now on (a gripper picks or releases a part,
+  // A-TWIN-33, twin/plant_load.cpp): the model is rebuilt with `load` and
+  // takes over the joint state (angles, speeds), the flange clamp, the LED
+  // and ghost; motor drive, supply and thermal state go on unchanged.
+  // Throws std::invalid_argument as the constructor does (nothing changes
+  // then). model() and data() point to the new model afterwards.
+  void set_load(const LoadSpec& load);
 
   // State, physical frame. The flange (output, where loads sit) and the
   // rotor (motor side, encoder) differ by the twist of the compliance.
@@ -100,6 +107,7 @@ class Plant {
 
  private:
   void check_warnings();
+  void adopt_model(BuiltModel built);
   double drive_train_torque_Nm(double rotor_angle_rad, double rotor_speed_rad_s) const;
 
   MjModelPtr model_;
@@ -109,6 +117,7 @@ class Plant {
   Supply supply_;
   Thermal thermal_;
   double dt_s_;
+  PlantConfig config_; // the load, world and mounting it was built with (set_load rebuilds from it)
   int rotor_qpos_ = 0;   // joint "rotor": absolute rotor angle
   int rotor_dof_ = 0;
   int twist_qpos_ = 0;   // joint "flange": flange relative to the rotor

@@ -167,6 +167,10 @@ IsduResult Twin::isdu_write(uint16_t index, uint8_t subindex, std::span<const ui
 void Twin::set_external_torque(double torque_Nm) { impl_->plant.set_external_torque(torque_Nm); }
 void Twin::set_supply_voltage(double volts) { impl_->plant.set_supply_voltage(volts); }
 void Twin::set_flange_blocked(bool blocked) { impl_->plant.set_flange_blocked(blocked); }
+void Twin::set_load(const LoadSpec& load) {
+  impl_->plant.set_load(load);
+  impl_->config.load = load;
+}
 bool Twin::flange_blocked() const { return impl_->plant.flange_blocked(); }
 
 void Twin::set_ambient_C(double celsius) { impl_->plant.set_ambient_C(celsius); }

@@ -60,6 +60,11 @@ class Twin {
   void set_flange_blocked(bool blocked);
   bool flange_blocked() const;
   void set_ambient_C(double celsius);   // room temperature from now on (thermal model follows)
+  // Another load on the flange from now on (a gripper picks or releases a
+  // part; Plant::set_load, A-TWIN-33). The device is not told: its
+  // configured load is whatever index 64+n.4 of the set says. Throws
+  // std::invalid_argument for a load the module cannot carry (no change).
+  void set_load(const LoadSpec& load);
   // The master's cycle time from the next cycle on (a rig reconfiguring its
   // master): 0.002 .. 0.1328 s and an integer multiple of physics_dt_s, else
   // std::invalid_argument and nothing changes. The master announces it to the

@@ -57,10 +57,12 @@ def size(**options):
     """PerfectCycle-style sizing, the dict of ``sreh-twin size --json``.
 
     Keywords are the CLI's long options with '-' as '_' (SIZE_OPTIONS):
-    angle_deg (required), load_gcm2 or load (a YAML load file), voltage_V,
-    dwell_s, tolerance_deg, wait_ms, timeout_ms, ambient_C, speed_dps,
-    accel_pct, jerk_pct (evaluate this set instead of recommending one),
-    parameter_set, cycles, report (an HTML report folder).
+    angle_deg (required unless cycle), load_gcm2 or load (a YAML load file),
+    voltage_V, dwell_s, tolerance_deg, wait_ms, timeout_ms, ambient_C,
+    speed_dps, accel_pct, jerk_pct (evaluate this set instead of
+    recommending one), parameter_set, cycles, report (an HTML report
+    folder), cycle (a multi-segment cycle file; it holds load, supply, ...),
+    emit_scenario (write a scenario replaying the sized cycle).
     Bad values raise InputError naming the keyword."""
     try:
         return _core.size(**options)

@@ -124,7 +124,7 @@ def decode_pd_out(frame: _Bytes) -> PdOut: ...
 def models_dir() -> str: ...
 
 def run_scenario(path: _Path) -> dict[str, Any]: ...
-def size(*, angle_deg: float, load_gcm2: float | None = ..., load: _Path | None = ..., voltage_V: float = ...,
+def size(*, angle_deg: float | None = ..., load_gcm2: float | None = ..., load: _Path | None = ..., voltage_V: float = ...,
          dwell_s: float = ..., tolerance_deg: float = ..., wait_ms: float = ..., timeout_ms: float | None = ...,
          ambient_C: float = ..., speed_dps: float | None = ..., accel_pct: float | None = ...,
          jerk_pct: float | None = ..., parameter_set: int = ..., cycles: int = ...,
@@ -132,7 +132,8 @@ def size(*, angle_deg: float, load_gcm2: float | None = ..., load: _Path | None 
          max_cycle_ms: float | None = ..., source_resistance_ohm: float = ...,
          bus_capacitance_F: float = ..., handshake_cycles: int = ...,
          mounting_tilt_deg: float | None = ...,
-         report: _Path | None = ...) -> dict[str, Any]: ...
+         report: _Path | None = ..., cycle: _Path | None = ...,
+         emit_scenario: _Path | None = ...) -> dict[str, Any]: ...
 _Floats = float | Sequence[float] | npt.NDArray[np.floating[Any]]
 def sweep(*, loads_gcm2: _Floats, angles_deg: _Floats, voltages_V: _Floats = ..., speeds_dps: _Floats = ...,
           accel_pct: float = ..., jerk_pct: float = ..., dwell_s: float = ..., tolerance_deg: float = ...,

@@ -46,7 +46,7 @@ struct Rig {
     return {static_cast<int64_t>(std::llround(angle_rad * kInternalCountsPerRev / (2 * kPi))), supply_V, temperature_C};
   }
 
-  void step() {
+  MotorCommand step() {
     const MotorCommand cmd = dev.tick(kDt, sensors());
     double t = external_Nm + (cmd.enabled ? motor.saturate(cmd.torque_Nm, vel_rad_s, supply_V) : 0.0);
     if (std::abs(vel_rad_s) > 1e-9) {
@@ -61,6 +61,7 @@ struct Rig {
     // Friction cannot reverse the motion within a step.
     vel_rad_s = (external_Nm == 0 && !cmd.enabled && v_next * vel_rad_s < 0) ? 0.0 : v_next;
     angle_rad += vel_rad_s * kDt;
+    return cmd;
   }
 
   void cycle() {

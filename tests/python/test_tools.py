@@ -66,6 +66,18 @@ def test_size_keywords_are_the_cli_options():
     assert {o.replace("-", "_") for o in cli_options} == set(sreh_twin.SWEEP_OPTIONS)
 
 
+def test_size_cycle(tmp_path):
+    """size(cycle=...) is `size --cycle FILE --json`; the emitted scenario passes."""
+    cycle = tmp_path / "cycle.yaml"
+    cycle.write_text("load: {inertia_gcm2: 1000}\nsegments:\n  - {move_deg: 45, speed_dps: 1500}\n"
+                     "  - {dwell_s: 0.1}\n  - {move_deg: 0, speed_dps: 1500}\n")
+    scenario = tmp_path / "replay.yaml"
+    py = sreh_twin.size(cycle=cycle, emit_scenario=scenario)
+    assert py["feasible"] and [s["kind"] for s in py["segments"]] == ["move", "dwell", "move"]
+    assert py == cli_json("size", "--cycle", cycle)
+    assert sreh_twin.run_scenario(scenario)["passed"]
+
+
 def test_size_refusals():
     with pytest.raises(sreh_twin.InputError, match=r"voltage_V 40 is outside 16 \.\. 32"):
         sreh_twin.size(angle_deg=90, load_gcm2=100, voltage_V=40)
@@ -73,7 +85,8 @@ def test_size_refusals():
         sreh_twin.size(angle_deg=90)
     with pytest.raises(TypeError, match="unexpected keyword argument 'angle'"):
         sreh_twin.size(angle=90, load_gcm2=100)
-    with pytest.raises(TypeError, match="missing required keyword argument 'angle_deg'"):
+    # angle_deg is required unless a cycle file is given (issue 17).
+    with pytest.raises(sreh_twin.InputError, match="give the move with angle_deg A, or a cycle with cycle"):
         sreh_twin.size(load_gcm2=100)
     with pytest.raises(TypeError, match="wrong type"):
         sreh_twin.size(angle_deg=90, load_gcm2=100, cycles=1.5)

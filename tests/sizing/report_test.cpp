@@ -36,6 +36,8 @@ TEST(Report, SizeReportHasPlotsNumbersAndWrites) {
   EXPECT_NE(html.find("srehPlot("), std::string::npos);
   EXPECT_NE(html.find("Speed-torque"), std::string::npos);
   EXPECT_NE(html.find("capability (motoring)"), std::string::npos);
+  EXPECT_NE(html.find("RMS point"), std::string::npos); // issue 17
+  EXPECT_NE(html.find("continuous torque (A-SIZE-14)"), std::string::npos);
   const std::regex number(R"(<text[^>]*>(-?[0-9]+(\.[0-9]+)?)</text>)");
   std::size_t svgs = 0;
   for (std::size_t a = html.find("<svg"); a != std::string::npos; a = html.find("<svg", a + 1), ++svgs) {
@@ -44,7 +46,11 @@ TEST(Report, SizeReportHasPlotsNumbersAndWrites) {
     for (auto it = std::sregex_iterator(svg.begin(), svg.end(), number); it != std::sregex_iterator(); ++it) labels.insert((*it)[1]);
     EXPECT_GE(labels.size(), 6u) << svg.substr(0, 200);
   }
-  EXPECT_EQ(svgs, 5u);
+  EXPECT_EQ(svgs, 6u);
+  // Issue 17: temperature from ambient under the cycle's mean loss, with the warning and the trip.
+  EXPECT_NE(html.find("Module temperature"), std::string::npos);
+  EXPECT_NE(html.find("75 degC error (114.3)"), std::string::npos);
+  EXPECT_NE(html.find("time to 75 degC trip (114.3)"), std::string::npos);
 
   const fs::path dir = fs::path(testing::TempDir()) / "sreh_sizing_report_test";
   fs::remove_all(dir);

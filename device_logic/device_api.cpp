@@ -1,0 +1,138 @@
+// Device: the public face (device.hpp). Each call hands the request to the
+// firmware (Device::Impl) or reads one of its parts.
+#include "device_logic/device.hpp"
+
+#include <algorithm>
+
+#include "device_logic/device_impl.hpp"
+
+namespace sreh {
+
+Device::Device() : impl_(std::make_unique<Impl>()) { impl_->power_on(SensorReadings{}); }
+
+Device::Device(const std::vector<uint8_t>& nvm_image) : impl_(std::make_unique<Impl>()) {
+  if (!restore_nvm(*impl_, nvm_image)) {
+    // A corrupt memory image: factory configuration and error 114.1 code 1 (A-NVM-1).
+    impl_->power_on(SensorReadings{});
+    impl_->raise_error(ErrorBit::DeviceError, cause::kInternalConfiguration);
+    return;
+  }
+  impl_->power_on(SensorReadings{});
+}
+
+Device::Device(const DeviceSnapshot& snapshot) : impl_(std::make_unique<Impl>(snapshot)) {}
+
+Device::~Device() = default;
+Device::Device(const Device& other) : impl_(std::make_unique<Impl>(*other.impl_)) {}
+Device& Device::operator=(const Device& other) {
+  if (this != &other) *impl_ = *other.impl_;
+  return *this;
+}
+
+DeviceSnapshot Device::snapshot() const { return impl_->snapshot(); }
+void Device::restore(const DeviceSnapshot& snapshot) { *impl_ = Impl(snapshot); }
+
+std::optional<PdInFrame> Device::exchange(const PdOutFrame& out, bool outputs_valid) {
+  Impl& d = *impl_;
+  if (!d.powered || d.comm_blocked) return std::nullopt;
+  d.link.feed();
+  d.com_phase = ComPhase::Operate;
+  if (!d.boot_mode) {
+    if (outputs_valid) {
+      d.last_out_frame = out;
+      d.outputs_valid = true;
+      d.process_outputs(decode_out(out));
+    } else if (d.outputs_valid) {
+      // Manual 5: valid -> invalid behaves like a connection interruption.
+      d.outputs_valid = false;
+      if (d.motor_on()) d.raise_error(ErrorBit::InvalidCommand, cause::kOutputsInvalid);
+    }
+  }
+  d.last_in_frame = encode(d.pd_in());
+  return d.last_in_frame;
+}
+
+// dt_s becomes integer nanoseconds once, rounded to the nearest ns
+// (units.hpp seconds_to_ns; negative or non-finite: 0).
+MotorCommand Device::tick(double dt_s, const SensorReadings& sensors) {
+  return impl_->tick(seconds_to_ns(dt_s), sensors);
+}
+MotorCommand Device::tick_ns(int64_t dt_ns, const SensorReadings& sensors) {
+  return impl_->tick(std::max<int64_t>(dt_ns, 0), sensors);
+}
+
+IsduResult Device::isdu_read(uint16_t index, uint8_t subindex) { return impl_->read(index, subindex); }
+IsduResult Device::isdu_write(uint16_t index, uint8_t subindex, std::span<const uint8_t> data) {
+  return impl_->write(index, subindex, data);
+}
+
+void Device::power_off() {
+  Impl& d = *impl_;
+  d.store.abort_block();
+  if (d.powered) { // a move in progress ends with the supply; a held one is handed out
+    d.move_recorder.finish(d.time_ns, MoveOutcome::MotorOff, internal_counts_to_deg(d.user_now()));
+    d.move_recorder.release();
+  }
+  d.powered = false;
+}
+
+double Device::take_peak_tracking_error_deg() { return impl_->tracking.take_peak(); }
+
+std::vector<MoveRecord> Device::take_finished_moves() { return impl_->move_recorder.take_finished(); }
+std::optional<MoveRecord> Device::pending_move() const { return impl_->move_recorder.pending(); }
+void Device::power_on(const SensorReadings& sensors) { impl_->power_on(sensors); }
+bool Device::powered() const { return impl_->powered; }
+bool Device::in_boot_mode() const { return impl_->boot_mode; }
+LedColor Device::led() const { return impl_->led(); }
+std::vector<uint8_t> Device::save_nvm() const { return save_nvm_image(*impl_); }
+
+// Manual 1: Startup after every power-on until the master moves on;
+// Operate also with the outputs marked invalid (DeviceOperate, manual 5:
+// the device is in OPERATE then); off when the link is lost (A-LINK-3).
+IoLinkLedMode Device::io_link_led() const {
+  const Impl& d = *impl_;
+  if (!d.powered || d.comm_blocked || !d.link.link_up) return IoLinkLedMode::NotConnected;
+  switch (d.com_phase) {
+    case ComPhase::Startup: return IoLinkLedMode::Startup;
+    case ComPhase::Preoperate: return IoLinkLedMode::Preoperate;
+    case ComPhase::Operate: return IoLinkLedMode::Operate;
+  }
+  return IoLinkLedMode::NotConnected;
+}
+
+bool Device::startup_cycle(ComPhase phase) {
+  Impl& d = *impl_;
+  if (!d.powered || d.comm_blocked) return false;
+  d.link.feed();
+  d.com_phase = phase == ComPhase::Operate ? ComPhase::Preoperate : phase; // OPERATE is exchange()
+  return true;
+}
+
+ComPhase Device::com_phase() const { return impl_->com_phase; }
+
+void Device::set_master_cycle_time(double cycle_s) { impl_->link.master_cycle_ns = seconds_to_ns(cycle_s); }
+
+Telemetry Device::telemetry() const {
+  const Impl& d = *impl_;
+  Telemetry t;
+  const int dir = d.dir();
+  t.state = d.state;
+  t.position_deg = internal_counts_to_deg(d.user_now());
+  t.setpoint_deg = d.setpoint_user_deg();
+  t.tracking_error_deg = t.setpoint_deg - t.position_deg;
+  t.velocity_dps = rad_to_deg(dir * d.velocity_rad_s);
+  t.torque_Nm = d.motor_on() ? d.torque_Nm : 0.0;
+  t.torque_limit_Nm = d.torque_limit_Nm;
+  t.supply_V = d.supply_V;
+  t.temperature_C = d.temperature_C;
+  t.error_code = d.faults.error_byte();
+  t.warning_code = d.faults.warning_byte();
+  t.led = d.led();
+  t.moving = d.state == State::Busy && d.phase == MotionPhase::Travel;
+  t.settling = d.phase == MotionPhase::Settle;
+  t.moves_started = d.moves_started;
+  t.tolerance_deg = rad_to_deg(d.settle.tolerance_rad);
+  return t;
+}
+
+} // namespace sreh

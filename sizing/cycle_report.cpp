@@ -1,0 +1,255 @@
+// The sizing report of a cycle (`size --cycle ... --report DIR`) and the
+// temperature plot both reports share (issue 17): renders' figure/SVG code
+// as the single-move report, in the one page shell (io/html_page.hpp).
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "io/atomic_file.hpp"
+#include "io/html_page.hpp"
+#include "sizing/cycle_output.hpp"
+#include "sizing/output.hpp"
+#include "sizing/report.hpp"
+#include "sizing/thermal_estimate.hpp"
+
+#if SREH_SIZING_WITH_REPORT
+#include "device_logic/motor_model.hpp"
+#include "device_logic/units.hpp"
+#include "renders/figure.hpp"
+#include "renders/svg_plot.hpp"
+#endif
+
+namespace sreh::sizing {
+
+#if SREH_SIZING_WITH_REPORT
+namespace {
+
+using svg::xml_escape;
+
+const char* colour(std::size_t i) {
+  static constexpr const char* kColours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
+                                             "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
+  return kColours[i % (sizeof kColours / sizeof kColours[0])];
+}
+
+std::string row(const std::string& name, const std::string& value) {
+  return fmt::format("<tr><td class=\"l\">{}</td><td>{}</td></tr>\n", xml_escape(name), xml_escape(value));
+}
+
+std::string when(const std::optional<double>& s) { return s ? fmt::format("{:.0f} s", *s) : std::string("never"); }
+
+// Speed-torque plane (manual 3.5.3): the motor's capability at the supply
+// voltage (and at 16 / 24 / 32 V for comparison), every trace sample of the
+// last repetition as an operating point (one colour per move), and the RMS
+// point (RMS torque at the RMS speed) against the continuous torque.
+std::string cycle_speed_torque_plot(const CycleRequest& rq, const CycleEvaluation& e) {
+  svg::Plot p;
+  p.id = "cycle-speed-torque";
+  p.title = fmt::format("Speed-torque plane: operating points of the cycle, motor envelope at {:.1f} V", rq.voltage_V);
+  p.x = {"speed |velocity|", "deg/s", 0.0, {}};
+  p.y = {"|motor torque|", "N m", 0.0, {}};
+  const MotorModel motor;
+  auto envelope = [&](double volts, const std::string& label, const char* color, double width, bool dashed) {
+    svg::Series s{label, {}, {}, color, width, dashed, false};
+    const double top_dps = 1.02 * rad_to_deg(volts / motor.torque_constant_Nm_per_A);
+    for (int k = 0; k <= 200; ++k) {
+      const double dps = top_dps * k / 200;
+      const double tq = motor.max_torque_Nm(deg_to_rad(dps), volts, 1.0);
+      if (tq < 0) break;
+      s.x.push_back(dps);
+      s.y.push_back(tq);
+    }
+    return s;
+  };
+  p.series.push_back(envelope(rq.voltage_V, fmt::format("envelope {:.1f} V", rq.voltage_V), "#d62728", 1.8, false));
+  for (double v : {16.0, 32.0}) {
+    if (std::abs(v - rq.voltage_V) > 0.5) p.series.push_back(envelope(v, fmt::format("envelope {:.0f} V", v), "#bbbbbb", 1.0, true));
+  }
+  double sq_speed = 0;
+  std::size_t n = 0;
+  std::size_t move_no = 0;
+  for (std::size_t i = 0; i < e.segments.size(); ++i) {
+    const SegmentResult& s = e.segments[i];
+    if (s.kind != "move") continue;
+    svg::Series pts{fmt::format("move {} (segment {})", ++move_no, i + 1), {}, {}, colour(move_no - 1), 1.0, false, true};
+    for (std::size_t r = s.row_from; r < s.row_to && r < e.trace.size(); ++r) {
+      pts.x.push_back(std::abs(e.trace[r].velocity_dps));
+      pts.y.push_back(std::abs(e.trace[r].torque_Nm));
+    }
+    if (!pts.x.empty()) p.series.push_back(std::move(pts));
+  }
+  for (std::size_t r = e.last_repetition_row; r < e.trace.size(); ++r) {
+    sq_speed += e.trace[r].velocity_dps * e.trace[r].velocity_dps;
+    ++n;
+  }
+  const double rms_speed = n ? std::sqrt(sq_speed / static_cast<double>(n)) : 0.0;
+  p.series.push_back({fmt::format("RMS point ({:.0f} deg/s, {:.3f} N m)", rms_speed, e.rms_torque_Nm),
+                      {rms_speed}, {e.rms_torque_Nm}, "#000000", 4.0, false, true});
+  p.hlines = {{kTorqueMargin * e.torque_capability_Nm, fmt::format("{:.0f} % of peak", 100 * kTorqueMargin), "#9467bd", true},
+              {e.continuous_torque_Nm, "continuous torque (A-SIZE-14)", "#2ca02c", true}};
+  return report::figure(p, false);
+}
+
+// Positioning time per segment: travel (planned) and settling as stacked
+// bars, dwells as their own bars.
+std::string segment_time_plot(const CycleEvaluation& e) {
+  svg::Plot p;
+  p.id = "segment-times";
+  p.title = "Time per segment (last repetition): travel, settling, handshake, dwell";
+  p.x = {"segment", "#", 0.5, static_cast<double>(e.segments.size()) + 0.5};
+  p.y = {"time", "s", 0.0, {}};
+  double top = 0;
+  bool first = true, first_dwell = true; // one legend entry per colour
+  for (std::size_t i = 0; i < e.segments.size(); ++i) {
+    const SegmentResult& s = e.segments[i];
+    const double x0 = static_cast<double>(i + 1) - 0.35, x1 = static_cast<double>(i + 1) + 0.35;
+    if (s.kind == "move") {
+      const double settle = std::max(0.0, s.settling_s);
+      p.bands.push_back({x0, x1, 0.0, s.travel_s, first ? "travel" : "", "#1f77b4", 0.8});
+      p.bands.push_back({x0, x1, s.travel_s, s.travel_s + settle, first ? "settling" : "", "#ff7f0e", 0.8});
+      p.bands.push_back({x0, x1, s.travel_s + settle, s.travel_s + settle + e.handshake_s, first ? "handshake" : "",
+                         "#7f7f7f", 0.8});
+      top = std::max(top, s.travel_s + settle + e.handshake_s);
+      first = false;
+    } else if (s.kind == "dwell") {
+      p.bands.push_back({x0, x1, 0.0, s.duration_s, first_dwell ? "dwell" : "", "#2ca02c", 0.5});
+      first_dwell = false;
+      top = std::max(top, s.duration_s);
+    }
+  }
+  // Invisible series so that the axes span the bars (legend entries for the colours come from the first move).
+  p.series.push_back({"", {0.5, static_cast<double>(e.segments.size()) + 0.5}, {0.0, top * 1.05}, "#ffffff", 0.0, false, false});
+  return report::figure(p, false);
+}
+
+} // namespace
+
+std::string temperature_plot(double mean_loss_W, double ambient_C, double thermal_margin_K,
+                             const std::optional<double>& time_to_trip_s) {
+  // Long enough to see the steady state (housing: 20 min) or the trip.
+  const double duration_s = time_to_trip_s ? std::max(60.0, 1.3 * *time_to_trip_s) : 6000.0;
+  const std::vector<TemperaturePoint> curve = temperature_curve(mean_loss_W, ambient_C, duration_s, duration_s / 600.0);
+  svg::Plot p;
+  p.id = "temperature";
+  p.title = "Module temperature under continuous cycling, from ambient (twin's thermal model, mean loss)";
+  p.x = {"time", "s", 0.0, {}};
+  p.y = {"temperature", "degC", {}, {}};
+  svg::Series s{fmt::format("sensor ({:.2f} W)", mean_loss_W), {}, {}, "#d62728", 1.6, false, false};
+  for (const TemperaturePoint& q : curve) {
+    s.x.push_back(q.t_s);
+    s.y.push_back(q.C);
+  }
+  p.series.push_back(std::move(s));
+  p.hlines = {{kTemperatureWarning_C, "70 degC warning (115.1)", "#ff7f0e", true},
+              {kTemperatureTrip_C, "75 degC error (114.3)", "#d62728", true},
+              {kTemperatureWarning_C - thermal_margin_K, fmt::format("required margin {:.0f} K", thermal_margin_K),
+               "#2ca02c", true}};
+  return report::figure(p);
+}
+
+std::string cycle_report_html(const CycleRequest& rq, const CycleResult& r) {
+  const CycleEvaluation& e = r.evaluation;
+  const std::string title = fmt::format("Sizing: cycle {}", std::filesystem::path(rq.file).filename().string());
+  std::string o = io::html_page_open(title, report::page_head()) + fmt::format("<h1>{}</h1>\n", xml_escape(title));
+  o += fmt::format("<p><span class=\"result {}\">{}</span> binding limit: {}. {}</p>\n", e.feasible ? "ok" : "bad",
+                   e.feasible ? "FEASIBLE" : "NOT FEASIBLE", xml_escape(e.binding_limit), xml_escape(e.reason));
+  o += "<h2>Numbers</h2>\n<table>\n";
+  o += row("supply / ambient / mounting", fmt::format("{:.1f} V / {:.1f} degC / tilt {} deg", rq.voltage_V, rq.ambient_C,
+                                                      rq.mounting_tilt_deg));
+  o += row("cycle", e.completed ? fmt::format("{:.4f} s, {:.1f} cycles/min (handshake {:.0f} ms per move)", e.cycle_s,
+                                              e.cycles_per_min, e.handshake_s * 1e3)
+                                : std::string("not completed"));
+  o += row("peak / RMS torque", fmt::format("{:.3f} / {:.3f} N m (capability {:.3f}, continuous {:.3f} N m)",
+                                            e.peak_torque_Nm, e.rms_torque_Nm, e.torque_capability_Nm,
+                                            e.continuous_torque_Nm));
+  o += row("utilisation", fmt::format("peak {:.0f} % at speed, RMS {:.0f} %, thermal margin {:.1f} K",
+                                      e.utilisation.peak_torque_pct, e.utilisation.rms_torque_pct,
+                                      e.utilisation.thermal_margin_K));
+  o += row("steady temperature", fmt::format("{:.1f} degC ({:.2f} W mean loss)", e.steady_temperature_C, e.mean_loss_W));
+  o += row("time to 70 degC warning / 75 degC trip", when(e.time_to_warning_s) + " / " + when(e.time_to_trip_s));
+  o += row("supply", fmt::format("peak {:.2f} A, RMS {:.2f} A, regen {:.3f} J, bus peak {:.2f} V", e.supply.peak_current_A,
+                                 e.supply.rms_current_A, e.supply.regen_energy_J, e.supply.peak_bus_V));
+  o += row("simulations", fmt::format("{} (back-offs {})", r.simulations, r.backoffs));
+  o += "</table>\n<h2>Parameter sets and ISDU writes</h2>\n<pre>";
+  for (const ParameterSetValues& s : e.sets) {
+    o += xml_escape(fmt::format("# set {}: {:.1f} deg/s, {:.1f} %, {:.1f} %, load {:.0f} g cm^2\n", s.set,
+                                s.tidy.speed_dps, s.tidy.accel_pct, s.tidy.jerk_pct, s.load_gcm2));
+  }
+  for (const IsduWrite& w : all_writes(e)) o += xml_escape(isdu_write_line(w)) + "\n";
+  o += "</pre>\n<h2>Segments (last repetition)</h2>\n<table>\n<tr><th>#</th><th>kind</th><th>from -> to deg</th>"
+       "<th>set</th><th>load g cm^2</th><th>travel s</th><th>settling s</th><th>positioning s</th><th>duration s</th>"
+       "<th>peak / RMS N m</th></tr>\n";
+  for (std::size_t i = 0; i < e.segments.size(); ++i) {
+    const SegmentResult& s = e.segments[i];
+    if (s.kind == "move") {
+      o += fmt::format("<tr><td>{}</td><td>move</td><td>{:.2f} -> {:.2f}</td><td>{}</td><td>{:.0f}</td><td>{:.4f}</td>"
+                       "<td>{:.4f}</td><td>{:.4f}</td><td>{:.4f}</td><td>{:.3f} / {:.3f}</td></tr>\n",
+                       i + 1, s.start_deg, s.target_deg, s.parameter_set, s.load_gcm2, s.travel_s, s.settling_s,
+                       s.positioning_s, s.duration_s, s.peak_torque_Nm, s.rms_torque_Nm);
+    } else {
+      o += fmt::format("<tr><td>{}</td><td>{}</td><td></td><td></td><td></td><td></td><td></td><td></td><td>{:.4f}</td>"
+                       "<td></td></tr>\n", i + 1, s.kind, s.duration_s);
+    }
+  }
+  o += "</table>\n<h2>Plots</h2>\n";
+  o += segment_time_plot(e);
+  if (!e.trace.empty()) o += cycle_speed_torque_plot(rq, e);
+  o += temperature_plot(e.mean_loss_W, rq.ambient_C, rq.thermal_margin_K, e.time_to_trip_s);
+  if (!e.trace.empty()) {
+    svg::Plot q;
+    q.id = "cycle-torque";
+    q.title = "Position and motor torque over the simulated repetitions";
+    q.x = {"time", "s", {}, {}};
+    q.y = {"torque", "N m", {}, {}};
+    svg::Series tq{"torque", {}, {}, "#ff7f0e", 1.2, false, false};
+    for (const TraceRow& t : e.trace) {
+      tq.x.push_back(t.t_s);
+      tq.y.push_back(t.torque_Nm);
+    }
+    q.series.push_back(std::move(tq));
+    o += report::figure(q);
+    svg::Plot p;
+    p.id = "cycle-position";
+    p.title = "Position";
+    p.x = q.x;
+    p.y = {"position", "deg", {}, {}};
+    svg::Series sp{"setpoint", {}, {}, "#2ca02c", 1.5, true, false}, pos{"actual", {}, {}, "#1f77b4", 1.5, false, false};
+    for (const TraceRow& t : e.trace) {
+      sp.x.push_back(t.t_s);
+      sp.y.push_back(t.setpoint_deg);
+      pos.x.push_back(t.t_s);
+      pos.y.push_back(t.position_deg);
+    }
+    p.series = {std::move(sp), std::move(pos)};
+    o += report::figure(p);
+  }
+  o += "<p class=\"note\">Every figure from the twin running the cycle (docs/sizing.md \"Cycles\"); temperature from "
+       "its lumped thermal model at the last repetition's mean loss (A-SIZE-6).</p>\n" + io::html_page_close();
+  return o;
+}
+
+std::filesystem::path write_cycle_report(const std::filesystem::path& dir, const CycleRequest& rq, const CycleResult& r) {
+  io::make_output_folder(dir.string());
+  const std::filesystem::path index = dir / "index.html";
+  const std::string html = cycle_report_html(rq, r);
+  io::write_file_atomic(index.string(), [&](std::ostream& out) { out << html; });
+  return index;
+}
+
+#else
+
+namespace {
+[[noreturn]] void no_reports() { throw std::runtime_error("this build has no reports (SREH_WITH_RENDER=OFF)"); }
+} // namespace
+std::string temperature_plot(double, double, double, const std::optional<double>&) { no_reports(); }
+std::string cycle_report_html(const CycleRequest&, const CycleResult&) { no_reports(); }
+std::filesystem::path write_cycle_report(const std::filesystem::path&, const CycleRequest&, const CycleResult&) {
+  no_reports();
+}
+
+#endif
+
+} // namespace sreh::sizing

@@ -1,0 +1,58 @@
+// The cycle's sizing report (issue 17): the speed-torque plane with the
+// voltage-dependent envelope, the operating points and the RMS point; the
+// time per segment; temperature from ambient; written atomically.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "sizing/cycle.hpp"
+#include "sizing/report.hpp"
+
+namespace sreh::sizing {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(CycleReport, HasTheSpeedTorquePlaneSegmentTimesAndTemperature) {
+  if (!reports_available()) GTEST_SKIP() << "built without renders";
+  CycleRequest rq = parse_cycle_file(std::string(SREH_SOURCE_DIR) + "/tests/sizing/data/load_change_cycle.yaml");
+  rq.keep_trace = true;
+  const CycleResult r = size_cycle(rq);
+  ASSERT_FALSE(r.evaluation.trace.empty());
+  const std::string html = cycle_report_html(rq, r);
+  EXPECT_NE(html.find("Speed-torque plane"), std::string::npos);
+  EXPECT_NE(html.find("envelope 24.0 V"), std::string::npos);  // the supply's envelope (manual 3.5.3)
+  EXPECT_NE(html.find("envelope 16 V"), std::string::npos);    // and the others for comparison
+  EXPECT_NE(html.find("RMS point"), std::string::npos);
+  EXPECT_NE(html.find("move 2 (segment 4)"), std::string::npos); // operating points per move
+  EXPECT_NE(html.find("Time per segment"), std::string::npos);
+  EXPECT_NE(html.find("Module temperature"), std::string::npos);
+  EXPECT_NE(html.find("- isdu_write: {index: 66, subindex: 4, value: 12000}"), std::string::npos);
+  EXPECT_EQ(html.find("<script src"), std::string::npos);
+  const std::regex number(R"(<text[^>]*>(-?[0-9]+(\.[0-9]+)?)</text>)");
+  std::size_t svgs = 0;
+  for (std::size_t a = html.find("<svg"); a != std::string::npos; a = html.find("<svg", a + 1), ++svgs) {
+    const std::string svg = html.substr(a, html.find("</svg>", a) - a);
+    std::set<std::string> labels;
+    for (auto it = std::sregex_iterator(svg.begin(), svg.end(), number); it != std::sregex_iterator(); ++it) labels.insert((*it)[1]);
+    EXPECT_GE(labels.size(), 6u) << svg.substr(0, 200);
+  }
+  EXPECT_EQ(svgs, 5u); // segment times, speed-torque, temperature, torque, position
+
+  const fs::path dir = fs::path(testing::TempDir()) / "sreh_cycle_report_test";
+  fs::remove_all(dir);
+  const fs::path index = write_cycle_report(dir, rq, r);
+  std::ifstream in(index);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_EQ(text.str(), html);
+  fs::remove_all(dir);
+}
+
+} // namespace
+} // namespace sreh::sizing
