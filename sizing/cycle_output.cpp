@@ -9,18 +9,36 @@
 
 namespace sreh::sizing {
 
-std::vector<IsduWrite> all_writes(const CycleEvaluation& e) {
-  std::vector<IsduWrite> out;
-  for (const ParameterSetValues& s : e.sets) {
-    for (const IsduWrite& w : s.writes) {
-      const bool seen = std::any_of(out.begin(), out.end(), [&](const IsduWrite& o) {
-        return o.index == w.index && o.subindex == w.subindex; // index 85 once, whatever the number of sets
-      });
-      if (!seen) out.push_back(w);
-    }
+namespace {
+
+// One listed segment of the last repetition; a move's times are null when
+// it did not complete.
+nlohmann::json segment_json(const SegmentResult& s) {
+  if (s.kind == "move") {
+    return {{"kind", s.kind},
+            {"duration_s", time_if(s.completed, s.duration_s)},
+            {"parameter_set", s.parameter_set},
+            {"start_deg", s.start_deg},
+            {"target_deg", s.target_deg},
+            {"load_gcm2", s.load_gcm2},
+            {"process_torque_Nm", s.process_torque_Nm},
+            {"travel_s", ns_rounded(s.travel_s)},
+            {"settling_s", time_if(s.completed, s.settling_s)},
+            {"positioning_s", time_if(s.completed, s.positioning_s)},
+            {"peak_torque_Nm", s.peak_torque_Nm},
+            {"rms_torque_Nm", s.rms_torque_Nm},
+            {"max_tracking_error_deg", s.max_tracking_error_deg},
+            {"completed", s.completed}};
   }
-  return out;
+  nlohmann::json o = {{"kind", s.kind}, {"duration_s", ns_rounded(s.duration_s)}};
+  if (s.kind == "dwell") {
+    o["process_torque_Nm"] = s.process_torque_Nm;
+    o["hold_rms_torque_Nm"] = s.hold_rms_torque_Nm;
+  }
+  return o;
 }
+
+} // namespace
 
 nlohmann::json cycle_to_json(const CycleRequest& rq, const CycleResult& r) {
   const CycleEvaluation& e = r.evaluation;
@@ -39,28 +57,7 @@ nlohmann::json cycle_to_json(const CycleRequest& rq, const CycleResult& r) {
                   {"handshake_cycles", rq.handshake_cycles},
                   {"cycles", rq.cycles}};
   nlohmann::json segs = nlohmann::json::array();
-  for (const SegmentResult& s : e.segments) {
-    nlohmann::json o = {{"kind", s.kind}, {"duration_s", ns_rounded(s.duration_s)}};
-    if (s.kind == "move") {
-      o["parameter_set"] = s.parameter_set;
-      o["start_deg"] = s.start_deg;
-      o["target_deg"] = s.target_deg;
-      o["load_gcm2"] = s.load_gcm2;
-      o["process_torque_Nm"] = s.process_torque_Nm;
-      o["travel_s"] = ns_rounded(s.travel_s);
-      o["settling_s"] = time_if(s.completed, s.settling_s);
-      o["positioning_s"] = time_if(s.completed, s.positioning_s);
-      o["peak_torque_Nm"] = s.peak_torque_Nm;
-      o["rms_torque_Nm"] = s.rms_torque_Nm;
-      o["max_tracking_error_deg"] = s.max_tracking_error_deg;
-      o["completed"] = s.completed;
-      if (!s.completed) o["duration_s"] = nullptr;
-    } else if (s.kind == "dwell") {
-      o["process_torque_Nm"] = s.process_torque_Nm;
-      o["hold_rms_torque_Nm"] = s.hold_rms_torque_Nm;
-    }
-    segs.push_back(o);
-  }
+  for (const SegmentResult& s : e.segments) segs.push_back(segment_json(s));
   j["segments"] = segs;
   j["completed"] = e.completed;
   j["cycle_s"] = time_if(e.completed, e.cycle_s);
@@ -75,6 +72,19 @@ nlohmann::json cycle_to_json(const CycleRequest& rq, const CycleResult& r) {
   for (const ParameterSetValues& s : e.sets) sets.push_back(json_parameter_set(s));
   j["sets"] = sets;
   return j;
+}
+
+std::vector<IsduWrite> all_writes(const CycleEvaluation& e) {
+  std::vector<IsduWrite> out;
+  for (const ParameterSetValues& s : e.sets) {
+    for (const IsduWrite& w : s.writes) {
+      const bool seen = std::any_of(out.begin(), out.end(), [&](const IsduWrite& o) {
+        return o.index == w.index && o.subindex == w.subindex; // index 85 once, whatever the number of sets
+      });
+      if (!seen) out.push_back(w);
+    }
+  }
+  return out;
 }
 
 std::string cycle_summary_text(const CycleRequest& rq, const CycleResult& r) {
