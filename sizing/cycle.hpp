@@ -83,28 +83,13 @@ struct SegmentResult {
   std::size_t row_from = 0, row_to = 0;
 };
 
-struct CycleEvaluation {
+struct CycleEvaluation : TraceFigures {
   std::vector<ParameterSetValues> sets; // every set used, in set order
   std::vector<SegmentResult> segments;  // one per listed segment
   bool completed = false;         // every move of every repetition reached Done
   double cycle_s = 0;             // sum of the segments' durations (handshake per move included)
   double handshake_s = 0;         // per move
   double cycles_per_min = 0;
-  double peak_torque_Nm = 0;      // over all moves of all repetitions
-  double rms_torque_Nm = 0;       // over the last repetition (unsimulated dwell time included, A-SIZE-9)
-  double torque_capability_Nm = 0;
-  double min_torque_headroom = 1;
-  double max_tracking_error_deg = 0;
-  double tracking_limit_deg = 0;
-  double mean_loss_W = 0;
-  double steady_temperature_C = 0;
-  std::optional<double> time_to_warning_s, time_to_trip_s;
-  double continuous_torque_Nm = 0;
-  Utilisation utilisation;
-  SupplyFigures supply;
-  bool feasible = false;
-  std::string reason;
-  std::string binding_limit;
   std::vector<TraceRow> trace;    // with keep_trace
   std::size_t last_repetition_row = 0; // first trace row of the last repetition
   double sim_time_s = 0;

@@ -52,14 +52,7 @@ Stats torque_stats(const std::vector<TraceRow>& rows, std::size_t from, std::siz
 
 CycleEvaluation evaluate_cycle(const CycleRequest& rq, const CyclePlan& plan, const std::vector<MotionSetting>& settings,
                                bool keep_trace) {
-  TwinConfig cfg;
-  cfg.load = rq.load;
-  cfg.supply.voltage_V = rq.voltage_V;
-  cfg.supply.source_resistance_ohm = rq.source_resistance_ohm;
-  cfg.supply.bus_capacitance_F = rq.bus_capacitance_F;
-  cfg.mounting_tilt_deg = rq.mounting_tilt_deg;
-  cfg.thermal.ambient_C = rq.ambient_C;
-  cfg.record_trace = true;
+  const TwinConfig cfg = sizing_twin_config(rq);
   const std::unique_ptr<Twin> owner = make_twin(cfg);
   Twin& twin = *owner;
   const MotorModel motor;
@@ -213,20 +206,7 @@ CycleEvaluation evaluate_cycle(const CycleRequest& rq, const CyclePlan& plan, co
 
   // Over all moves of all repetitions: peak torque, headroom, warnings (A-SIZE-8).
   const std::vector<TraceRow>& rows = twin.trace();
-  uint8_t warnings = 0;
-  double worst_headroom_speed_dps = 0;
-  for (std::size_t r = first_move_row; r < rows.size(); ++r) {
-    const double tq = std::abs(rows[r].torque_Nm);
-    ev.peak_torque_Nm = std::max(ev.peak_torque_Nm, tq);
-    if (rows[r].torque_limit_Nm > 0) {
-      const double headroom = 1.0 - tq / rows[r].torque_limit_Nm;
-      if (headroom < ev.min_torque_headroom) {
-        ev.min_torque_headroom = headroom;
-        worst_headroom_speed_dps = std::abs(rows[r].velocity_dps);
-      }
-    }
-    warnings |= rows[r].warning_code;
-  }
+  const TorqueScan scan = scan_torque(rows, first_move_row, ev);
   for (const SegmentResult& s : ev.segments) {
     ev.max_tracking_error_deg = std::max(ev.max_tracking_error_deg, s.max_tracking_error_deg);
     ev.cycle_s += s.duration_s;
@@ -246,33 +226,9 @@ CycleEvaluation evaluate_cycle(const CycleRequest& rq, const CyclePlan& plan, co
       ev.mean_loss_W = loss_s / total_s;
     }
   }
-  ev.supply = supply_figures(motor, rows, first_move_row, ev.last_repetition_row, cycle_s, ev.supply.bus_max_V);
-  const ThermalEstimate th = estimate_thermal(ev.mean_loss_W, rq.ambient_C);
-  ev.steady_temperature_C = th.steady_C;
-  ev.time_to_warning_s = th.time_to_warning_s;
-  ev.time_to_trip_s = th.time_to_trip_s;
-  ev.continuous_torque_Nm = continuous_torque_Nm(rq.ambient_C, rq.thermal_margin_K);
-  ev.utilisation.peak_torque_pct = 100.0 * (1.0 - ev.min_torque_headroom);
-  ev.utilisation.rms_torque_pct = ev.continuous_torque_Nm > 0 ? 100.0 * ev.rms_torque_Nm / ev.continuous_torque_Nm : 0;
-  ev.utilisation.thermal_margin_K = kTemperatureWarning_C - ev.steady_temperature_C;
-
-  LimitFigures lf; // the same checks and margins as a single move (A-SIZE-5)
-  lf.warnings = warnings;
-  lf.peak_torque_Nm = ev.peak_torque_Nm;
-  lf.torque_capability_Nm = ev.torque_capability_Nm;
-  lf.min_torque_headroom = ev.min_torque_headroom;
-  lf.worst_headroom_speed_dps = worst_headroom_speed_dps;
-  lf.voltage_V = rq.voltage_V;
-  lf.max_tracking_error_deg = ev.max_tracking_error_deg;
-  lf.tracking_limit_deg = ev.tracking_limit_deg;
-  lf.steady_temperature_C = ev.steady_temperature_C;
-  lf.ambient_C = rq.ambient_C;
-  lf.thermal_margin_K = rq.thermal_margin_K;
-  lf.time_to_warning_s = ev.time_to_warning_s;
-  const Judgement j = judge(lf, std::move(reasons));
-  ev.feasible = j.feasible;
-  ev.reason = j.reason;
-  ev.binding_limit = j.binding_limit;
+  derive_figures(motor, rows, first_move_row, ev.last_repetition_row, cycle_s, rq.ambient_C, rq.thermal_margin_K, ev);
+  // The same checks and margins as a single move (A-SIZE-5).
+  judge_into(limit_figures(ev, scan, rq.voltage_V, rq.ambient_C, rq.thermal_margin_K), std::move(reasons), ev);
   if (keep_trace) ev.trace = rows;
   return ev;
 }

@@ -13,6 +13,7 @@
 #include "sizing/cycle_output.hpp"
 #include "sizing/output.hpp"
 #include "sizing/report.hpp"
+#include "sizing/report_parts.hpp"
 #include "sizing/thermal_estimate.hpp"
 
 #if SREH_SIZING_WITH_REPORT
@@ -29,15 +30,8 @@ namespace {
 
 using svg::xml_escape;
 
-const char* colour(std::size_t i) {
-  static constexpr const char* kColours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
-                                             "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
-  return kColours[i % (sizeof kColours / sizeof kColours[0])];
-}
-
-std::string row(const std::string& name, const std::string& value) {
-  return fmt::format("<tr><td class=\"l\">{}</td><td>{}</td></tr>\n", xml_escape(name), xml_escape(value));
-}
+using report_parts::colour;
+using report_parts::row;
 
 std::string when(const std::optional<double>& s) { return s ? fmt::format("{:.0f} s", *s) : std::string("never"); }
 
@@ -46,23 +40,11 @@ std::string when(const std::optional<double>& s) { return s ? fmt::format("{:.0f
 // last repetition as an operating point (one colour per move), and the RMS
 // point (RMS torque at the RMS speed) against the continuous torque.
 std::string cycle_speed_torque_plot(const CycleRequest& rq, const CycleEvaluation& e) {
-  svg::Plot p;
-  p.id = "cycle-speed-torque";
-  p.title = fmt::format("Speed-torque plane: operating points of the cycle, motor envelope at {:.1f} V", rq.voltage_V);
-  p.x = {"speed |velocity|", "deg/s", 0.0, {}};
-  p.y = {"|motor torque|", "N m", 0.0, {}};
-  const MotorModel motor;
-  auto envelope = [&](double volts, const std::string& label, const char* color, double width, bool dashed) {
-    svg::Series s{label, {}, {}, color, width, dashed, false};
-    const double top_dps = 1.02 * rad_to_deg(volts / motor.torque_constant_Nm_per_A);
-    for (int k = 0; k <= 200; ++k) {
-      const double dps = top_dps * k / 200;
-      const double tq = motor.max_torque_Nm(deg_to_rad(dps), volts, 1.0);
-      if (tq < 0) break;
-      s.x.push_back(dps);
-      s.y.push_back(tq);
-    }
-    return s;
+  svg::Plot p = report_parts::speed_torque_plane(
+      "cycle-speed-torque",
+      fmt::format("Speed-torque plane: operating points of the cycle, motor envelope at {:.1f} V", rq.voltage_V));
+  auto envelope = [](double volts, const std::string& label, const char* color, double width, bool dashed) {
+    return report_parts::motor_envelope(volts, 1.02, label, color, width, dashed);
   };
   p.series.push_back(envelope(rq.voltage_V, fmt::format("envelope {:.1f} V", rq.voltage_V), "#d62728", 1.8, false));
   for (double v : {16.0, 32.0}) {
@@ -86,10 +68,7 @@ std::string cycle_speed_torque_plot(const CycleRequest& rq, const CycleEvaluatio
     ++n;
   }
   const double rms_speed = n ? std::sqrt(sq_speed / static_cast<double>(n)) : 0.0;
-  p.series.push_back({fmt::format("RMS point ({:.0f} deg/s, {:.3f} N m)", rms_speed, e.rms_torque_Nm),
-                      {rms_speed}, {e.rms_torque_Nm}, "#000000", 4.0, false, true});
-  p.hlines = {{kTorqueMargin * e.torque_capability_Nm, fmt::format("{:.0f} % of peak", 100 * kTorqueMargin), "#9467bd", true},
-              {e.continuous_torque_Nm, "continuous torque (A-SIZE-14)", "#2ca02c", true}};
+  report_parts::add_rms_point(p, rms_speed, e.rms_torque_Nm, e.torque_capability_Nm, e.continuous_torque_Nm);
   return report::figure(p, false);
 }
 
@@ -153,7 +132,7 @@ std::string temperature_plot(double mean_loss_W, double ambient_C, double therma
 std::string cycle_report_html(const CycleRequest& rq, const CycleResult& r) {
   const CycleEvaluation& e = r.evaluation;
   const std::string title = fmt::format("Sizing: cycle {}", std::filesystem::path(rq.file).filename().string());
-  std::string o = io::html_page_open(title, report::page_head()) + fmt::format("<h1>{}</h1>\n", xml_escape(title));
+  std::string o = report_parts::page_head(title);
   o += fmt::format("<p><span class=\"result {}\">{}</span> binding limit: {}. {}</p>\n", e.feasible ? "ok" : "bad",
                    e.feasible ? "FEASIBLE" : "NOT FEASIBLE", xml_escape(e.binding_limit), xml_escape(e.reason));
   o += "<h2>Numbers</h2>\n<table>\n";
@@ -211,20 +190,7 @@ std::string cycle_report_html(const CycleRequest& rq, const CycleResult& r) {
     }
     q.series.push_back(std::move(tq));
     o += report::figure(q);
-    svg::Plot p;
-    p.id = "cycle-position";
-    p.title = "Position";
-    p.x = q.x;
-    p.y = {"position", "deg", {}, {}};
-    svg::Series sp{"setpoint", {}, {}, "#2ca02c", 1.5, true, false}, pos{"actual", {}, {}, "#1f77b4", 1.5, false, false};
-    for (const TraceRow& t : e.trace) {
-      sp.x.push_back(t.t_s);
-      sp.y.push_back(t.setpoint_deg);
-      pos.x.push_back(t.t_s);
-      pos.y.push_back(t.position_deg);
-    }
-    p.series = {std::move(sp), std::move(pos)};
-    o += report::figure(p);
+    o += report::figure(report_parts::position_plot("cycle-position", e.trace));
   }
   o += "<p class=\"note\">Every figure from the twin running the cycle (docs/sizing.md \"Cycles\"); temperature from "
        "its lumped thermal model at the last repetition's mean loss (A-SIZE-6).</p>\n" + io::html_page_close();
@@ -232,11 +198,7 @@ std::string cycle_report_html(const CycleRequest& rq, const CycleResult& r) {
 }
 
 std::filesystem::path write_cycle_report(const std::filesystem::path& dir, const CycleRequest& rq, const CycleResult& r) {
-  io::make_output_folder(dir.string());
-  const std::filesystem::path index = dir / "index.html";
-  const std::string html = cycle_report_html(rq, r);
-  io::write_file_atomic(index.string(), [&](std::ostream& out) { out << html; });
-  return index;
+  return report_parts::write_index(dir, cycle_report_html(rq, r));
 }
 
 #else

@@ -119,14 +119,7 @@ SupplyFigures supply_figures(const MotorModel& motor, const std::vector<TraceRow
 }
 
 Evaluation evaluate(const SizingRequest& rq, const ParameterSetValues& set, bool keep_trace) {
-  TwinConfig cfg;
-  cfg.load = rq.load;
-  cfg.supply.voltage_V = rq.voltage_V;
-  cfg.mounting_tilt_deg = rq.mounting_tilt_deg;
-  cfg.supply.source_resistance_ohm = rq.source_resistance_ohm;
-  cfg.supply.bus_capacitance_F = rq.bus_capacitance_F;
-  cfg.thermal.ambient_C = rq.ambient_C;
-  cfg.record_trace = true;
+  const TwinConfig cfg = sizing_twin_config(rq);
   const std::unique_ptr<Twin> twin_owner = make_twin(cfg);
   Twin& twin = *twin_owner;
   const MotorModel motor;
@@ -230,21 +223,7 @@ Evaluation evaluate(const SizingRequest& rq, const ParameterSetValues& set, bool
 
   // Torque and losses from the trace (one sample per IO-Link cycle, A-SIZE-8).
   const std::vector<TraceRow>& rows = twin.trace();
-  uint8_t warnings = 0;
-  double worst_headroom_speed_dps = 0;
-  for (std::size_t r = first_move_row; r < rows.size(); ++r) {
-    const TraceRow& row = rows[r];
-    const double tq = std::abs(row.torque_Nm);
-    ev.peak_torque_Nm = std::max(ev.peak_torque_Nm, tq);
-    if (row.torque_limit_Nm > 0) {
-      const double headroom = 1.0 - tq / row.torque_limit_Nm;
-      if (headroom < ev.min_torque_headroom) {
-        ev.min_torque_headroom = headroom;
-        worst_headroom_speed_dps = std::abs(row.velocity_dps);
-      }
-    }
-    warnings |= row.warning_code;
-  }
+  const TorqueScan scan = scan_torque(rows, first_move_row, ev);
   // Means over the last cycle; the unsimulated part of the dwells (A-SIZE-9)
   // counts with the mean of the last simulated dwell.
   struct Sums { double torque_sq = 0, loss = 0; std::size_t n = 0; };
@@ -272,37 +251,13 @@ Evaluation evaluate(const SizingRequest& rq, const ParameterSetValues& set, bool
       ev.mean_loss_W = (cycle.loss * cycle_s + hold_loss * extra_s) / total_s;
     }
   }
-  ev.supply = supply_figures(motor, rows, first_move_row, last_cycle_row, cycle_s, ev.supply.bus_max_V);
-  const ThermalEstimate th = estimate_thermal(ev.mean_loss_W, rq.ambient_C);
-  ev.steady_temperature_C = th.steady_C;
-  ev.time_to_warning_s = th.time_to_warning_s;
-  ev.time_to_trip_s = th.time_to_trip_s;
-
-  ev.continuous_torque_Nm = continuous_torque_Nm(rq.ambient_C, rq.thermal_margin_K);
-  ev.utilisation.peak_torque_pct = 100.0 * (1.0 - ev.min_torque_headroom);
-  ev.utilisation.rms_torque_pct = ev.continuous_torque_Nm > 0 ? 100.0 * ev.rms_torque_Nm / ev.continuous_torque_Nm : 0;
-  ev.utilisation.thermal_margin_K = kTemperatureWarning_C - ev.steady_temperature_C;
+  derive_figures(motor, rows, first_move_row, last_cycle_row, cycle_s, rq.ambient_C, rq.thermal_margin_K, ev);
   // Feasible with margin (A-SIZE-5); the same checks for a given set, for
   // every set the search tries and for cycles (judge(), limits.cpp).
-  LimitFigures lf;
-  lf.warnings = warnings;
-  lf.peak_torque_Nm = ev.peak_torque_Nm;
-  lf.torque_capability_Nm = ev.torque_capability_Nm;
-  lf.min_torque_headroom = ev.min_torque_headroom;
-  lf.worst_headroom_speed_dps = worst_headroom_speed_dps;
-  lf.voltage_V = rq.voltage_V;
-  lf.max_tracking_error_deg = ev.max_tracking_error_deg;
-  lf.tracking_limit_deg = ev.tracking_limit_deg;
-  lf.steady_temperature_C = ev.steady_temperature_C;
-  lf.ambient_C = rq.ambient_C;
-  lf.thermal_margin_K = rq.thermal_margin_K;
-  lf.time_to_warning_s = ev.time_to_warning_s;
+  LimitFigures lf = limit_figures(ev, scan, rq.voltage_V, rq.ambient_C, rq.thermal_margin_K);
   if (rq.max_positioning_ms) lf.positioning_target = std::pair{ev.positioning_s, *rq.max_positioning_ms * 1e-3};
   if (rq.max_cycle_ms) lf.cycle_target = std::pair{ev.cycle_s, *rq.max_cycle_ms * 1e-3};
-  const Judgement j = judge(lf, std::move(reasons));
-  ev.feasible = j.feasible;
-  ev.reason = j.reason;
-  ev.binding_limit = j.binding_limit;
+  judge_into(lf, std::move(reasons), ev);
   if (keep_trace) ev.trace = rows;
   return ev;
 }

@@ -1,9 +1,13 @@
-// judge(): the limit checks with their margins (A-SIZE-5), one place for
-// the single move and the cycle.
+// The figures of a run from its trace and judge(): the limit checks with
+// their margins (A-SIZE-5), one place for the single move and the cycle.
+#include <algorithm>
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "device_logic/faults.hpp"
 #include "sizing/run_parts.hpp"
+#include "sizing/thermal_estimate.hpp"
 
 namespace sreh::sizing {
 
@@ -63,6 +67,61 @@ Judgement judge(const LimitFigures& f, Reasons reasons) {
   for (const auto& u : used) if (u.first > top->first) top = &u;
   j.binding_limit = top->second;
   return j;
+}
+
+TorqueScan scan_torque(const std::vector<TraceRow>& rows, std::size_t from, TraceFigures& f) {
+  TorqueScan scan;
+  for (std::size_t r = from; r < rows.size(); ++r) {
+    const double tq = std::abs(rows[r].torque_Nm);
+    f.peak_torque_Nm = std::max(f.peak_torque_Nm, tq);
+    if (rows[r].torque_limit_Nm > 0) {
+      const double headroom = 1.0 - tq / rows[r].torque_limit_Nm;
+      if (headroom < f.min_torque_headroom) {
+        f.min_torque_headroom = headroom;
+        scan.worst_headroom_speed_dps = std::abs(rows[r].velocity_dps);
+      }
+    }
+    scan.warnings |= rows[r].warning_code;
+  }
+  return scan;
+}
+
+void derive_figures(const MotorModel& motor, const std::vector<TraceRow>& rows, std::size_t from,
+                    std::size_t cycle_from, double dt_s, double ambient_C, double thermal_margin_K, TraceFigures& f) {
+  f.supply = supply_figures(motor, rows, from, cycle_from, dt_s, f.supply.bus_max_V);
+  const ThermalEstimate th = estimate_thermal(f.mean_loss_W, ambient_C);
+  f.steady_temperature_C = th.steady_C;
+  f.time_to_warning_s = th.time_to_warning_s;
+  f.time_to_trip_s = th.time_to_trip_s;
+  f.continuous_torque_Nm = continuous_torque_Nm(ambient_C, thermal_margin_K);
+  f.utilisation.peak_torque_pct = 100.0 * (1.0 - f.min_torque_headroom);
+  f.utilisation.rms_torque_pct = f.continuous_torque_Nm > 0 ? 100.0 * f.rms_torque_Nm / f.continuous_torque_Nm : 0;
+  f.utilisation.thermal_margin_K = kTemperatureWarning_C - f.steady_temperature_C;
+}
+
+LimitFigures limit_figures(const TraceFigures& f, const TorqueScan& scan, double voltage_V, double ambient_C,
+                           double thermal_margin_K) {
+  return LimitFigures{.warnings = scan.warnings,
+                      .peak_torque_Nm = f.peak_torque_Nm,
+                      .torque_capability_Nm = f.torque_capability_Nm,
+                      .min_torque_headroom = f.min_torque_headroom,
+                      .worst_headroom_speed_dps = scan.worst_headroom_speed_dps,
+                      .voltage_V = voltage_V,
+                      .max_tracking_error_deg = f.max_tracking_error_deg,
+                      .tracking_limit_deg = f.tracking_limit_deg,
+                      .steady_temperature_C = f.steady_temperature_C,
+                      .ambient_C = ambient_C,
+                      .thermal_margin_K = thermal_margin_K,
+                      .time_to_warning_s = f.time_to_warning_s,
+                      .positioning_target = {},
+                      .cycle_target = {}};
+}
+
+void judge_into(const LimitFigures& limits, Reasons reasons, TraceFigures& f) {
+  const Judgement j = judge(limits, std::move(reasons));
+  f.feasible = j.feasible;
+  f.reason = j.reason;
+  f.binding_limit = j.binding_limit;
 }
 
 } // namespace sreh::sizing

@@ -7,15 +7,15 @@
 namespace sreh::sizing {
 namespace {
 
-// Simulated times are whole physics steps: rounded to the nanosecond so that
-// JSON carries no float noise (0.36250000000000004 -> 0.3625; issue 16).
-double ns_rounded(double v) { return std::isfinite(v) ? std::round(v * 1e9) / 1e9 : v; }
-nlohmann::json optional_number(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(); }
-// Times of a run whose moves did not all complete are null (not meaningful).
-nlohmann::json time_if(bool completed, double v) { return completed ? nlohmann::json(ns_rounded(v)) : nlohmann::json(); }
 std::string time_text(bool completed, double v, const char* unit) {
   return completed ? fmt::format("{:8.4f} {}", v, unit) : fmt::format("{:>8} {}", "-", unit);
 }
+
+} // namespace
+
+double ns_rounded(double v) { return std::isfinite(v) ? std::round(v * 1e9) / 1e9 : v; }
+nlohmann::json optional_number(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(); }
+nlohmann::json time_if(bool completed, double v) { return completed ? nlohmann::json(ns_rounded(v)) : nlohmann::json(); }
 
 std::string duration_text(const std::optional<double>& s) {
   if (!s) return "never";
@@ -24,7 +24,66 @@ std::string duration_text(const std::optional<double>& s) {
   return fmt::format("{:.1f} h", *s / 3600);
 }
 
-} // namespace
+nlohmann::json json_utilisation(const Utilisation& u, double required_thermal_margin_K) {
+  return {{"peak_torque_pct", u.peak_torque_pct},
+          {"rms_torque_pct", u.rms_torque_pct},
+          {"thermal_margin_K", u.thermal_margin_K},
+          {"required_thermal_margin_K", required_thermal_margin_K}};
+}
+
+nlohmann::json json_supply(const SupplyFigures& s) {
+  return {{"peak_current_A", s.peak_current_A}, {"rms_current_A", s.rms_current_A},
+          {"regen_energy_J", s.regen_energy_J}, {"peak_bus_V", s.peak_bus_V},
+          {"bus_max_V", s.bus_max_V},           {"overvoltage_advice", s.overvoltage_advice}};
+}
+
+void put_figures_json(nlohmann::json& j, const TraceFigures& f, double required_thermal_margin_K) {
+  j["peak_torque_Nm"] = f.peak_torque_Nm;
+  j["rms_torque_Nm"] = f.rms_torque_Nm;
+  j["torque_capability_Nm"] = f.torque_capability_Nm;
+  j["continuous_torque_Nm"] = f.continuous_torque_Nm;
+  j["max_tracking_error_deg"] = f.max_tracking_error_deg;
+  j["tracking_limit_deg"] = f.tracking_limit_deg;
+  j["mean_loss_W"] = f.mean_loss_W;
+  j["steady_temperature_C"] = f.steady_temperature_C;
+  j["time_to_warning_s"] = optional_number(f.time_to_warning_s);
+  j["time_to_trip_s"] = optional_number(f.time_to_trip_s);
+  j["utilisation"] = json_utilisation(f.utilisation, required_thermal_margin_K);
+  j["supply"] = json_supply(f.supply);
+  j["reason"] = f.reason;
+}
+
+nlohmann::json json_parameter_set(const ParameterSetValues& s) {
+  nlohmann::json writes = nlohmann::json::array();
+  for (const IsduWrite& w : s.writes) {
+    writes.push_back({{"index", w.index}, {"subindex", w.subindex}, {"value", w.value}, {"comment", w.comment}});
+  }
+  return {{"parameter_set", s.set},      {"speed_dps", s.tidy.speed_dps}, {"accel_pct", s.tidy.accel_pct},
+          {"jerk_pct", s.tidy.jerk_pct}, {"load_gcm2", s.load_gcm2},      {"tolerance_deg", s.tolerance_deg},
+          {"wait_ms", s.wait_ms},        {"timeout_ms", s.timeout_ms},    {"isdu_writes", writes}};
+}
+
+std::string tracking_text(const TraceFigures& f) {
+  return fmt::format("  tracking error    {:8.3f} deg (limit {:.1f} deg, index 87.1)\n", f.max_tracking_error_deg,
+                     f.tracking_limit_deg);
+}
+
+std::string verdict_text(const TraceFigures& f, double required_thermal_margin_K, const std::string& binding_limit,
+                         bool feasible) {
+  std::string s;
+  s += fmt::format("  utilisation       peak torque {:.0f} % at speed, RMS {:.0f} % of continuous {:.3f} N m, "
+                   "thermal margin {:.1f} K (required {:.1f} K)\n",
+                   f.utilisation.peak_torque_pct, f.utilisation.rms_torque_pct, f.continuous_torque_Nm,
+                   f.utilisation.thermal_margin_K, required_thermal_margin_K);
+  s += fmt::format("  supply            peak {:.2f} A, RMS {:.2f} A, regenerated {:.3f} J per braking, bus peak {:.2f} V "
+                   "(window max {:.1f} V){}\n",
+                   f.supply.peak_current_A, f.supply.rms_current_A, f.supply.regen_energy_J, f.supply.peak_bus_V,
+                   f.supply.bus_max_V,
+                   f.supply.overvoltage_advice ? ": manual 7.2 114.4 applies, add capacity or a chopper" : "");
+  s += fmt::format("  binding limit     {}\n", binding_limit);
+  s += fmt::format("  feasible          {}{}\n", feasible ? "yes" : "NO", feasible ? "" : ": " + f.reason);
+  return s;
+}
 
 std::string isdu_write_line(const IsduWrite& w) {
   // A scenario step, ready to paste under `steps:` (or, without "- ", under device: isdu:).
@@ -50,51 +109,19 @@ nlohmann::json to_json(const SizingRequest& rq, const SizingResult& r) {
   j["positioning_s"] = time_if(e.completed, e.positioning_s);
   j["cycle_s"] = time_if(e.completed, e.cycle_s);
   j["cycles_per_min"] = time_if(e.completed, e.cycles_per_min);
-  j["peak_torque_Nm"] = e.peak_torque_Nm;
-  j["rms_torque_Nm"] = e.rms_torque_Nm;
-  j["torque_capability_Nm"] = e.torque_capability_Nm;
+  put_figures_json(j, e, rq.thermal_margin_K);
   j["min_torque_headroom"] = e.min_torque_headroom;
-  j["max_tracking_error_deg"] = e.max_tracking_error_deg;
-  j["tracking_limit_deg"] = e.tracking_limit_deg;
-  j["mean_loss_W"] = e.mean_loss_W;
-  j["steady_temperature_C"] = e.steady_temperature_C;
-  j["time_to_warning_s"] = optional_number(e.time_to_warning_s);
-  j["time_to_trip_s"] = optional_number(e.time_to_trip_s);
   // The answer (issue 17): for a search, whether the target (or, without
   // one, any set) is met with every margin; for a given set, its own check.
   j["feasible"] = r.feasible;
-  j["reason"] = e.reason;
   j["objective"] = r.objective.empty() ? "evaluate" : r.objective;
   j["binding_limit"] = r.binding_limit;
   j["best_positioning_s"] = time_if(r.best_positioning_s >= 0, r.best_positioning_s);
   j["best_cycle_s"] = time_if(r.best_cycle_s >= 0, r.best_cycle_s);
-  j["utilisation"] = {{"peak_torque_pct", e.utilisation.peak_torque_pct},
-                      {"rms_torque_pct", e.utilisation.rms_torque_pct},
-                      {"thermal_margin_K", e.utilisation.thermal_margin_K},
-                      {"required_thermal_margin_K", rq.thermal_margin_K}};
-  j["continuous_torque_Nm"] = e.continuous_torque_Nm;
   j["candidates"] = r.candidates;
   j["handshake_s"] = e.handshake_s;
-  j["supply"] = {{"peak_current_A", e.supply.peak_current_A},
-                 {"rms_current_A", e.supply.rms_current_A},
-                 {"regen_energy_J", e.supply.regen_energy_J},
-                 {"peak_bus_V", e.supply.peak_bus_V},
-                 {"bus_max_V", e.supply.bus_max_V},
-                 {"overvoltage_advice", e.supply.overvoltage_advice}};
   j["simulations"] = r.simulations;
-  nlohmann::json writes = nlohmann::json::array();
-  for (const IsduWrite& w : e.set.writes) {
-    writes.push_back({{"index", w.index}, {"subindex", w.subindex}, {"value", w.value}, {"comment", w.comment}});
-  }
-  j["recommended"] = {{"parameter_set", e.set.set},
-                      {"speed_dps", e.set.tidy.speed_dps},
-                      {"accel_pct", e.set.tidy.accel_pct},
-                      {"jerk_pct", e.set.tidy.jerk_pct},
-                      {"load_gcm2", e.set.load_gcm2},
-                      {"tolerance_deg", e.set.tolerance_deg},
-                      {"wait_ms", e.set.wait_ms},
-                      {"timeout_ms", e.set.timeout_ms},
-                      {"isdu_writes", writes}};
+  j["recommended"] = json_parameter_set(e.set);
   nlohmann::json moves = nlohmann::json::array();
   for (const MoveResult& m : e.moves) {
     moves.push_back({{"target_deg", m.target_deg},
@@ -130,23 +157,12 @@ std::string summary_text(const SizingRequest& rq, const SizingResult& r) {
   s += fmt::format("  torque peak / rms {:8.3f} / {:.3f} N m of {:.3f} N m ({:.0f} %)\n", e.peak_torque_Nm,
                    e.rms_torque_Nm, e.torque_capability_Nm,
                    e.torque_capability_Nm > 0 ? 100 * e.peak_torque_Nm / e.torque_capability_Nm : 0.0);
-  s += fmt::format("  tracking error    {:8.3f} deg (limit {:.1f} deg, index 87.1)\n", e.max_tracking_error_deg,
-                   e.tracking_limit_deg);
+  s += tracking_text(e);
   s += fmt::format("  temperature       {:8.1f} degC steady under continuous cycling ({:.2f} W), 70 degC warning: {}, "
                    "75 degC trip: {}\n",
                    e.steady_temperature_C, e.mean_loss_W, duration_text(e.time_to_warning_s),
                    duration_text(e.time_to_trip_s));
-  s += fmt::format("  utilisation       peak torque {:.0f} % at speed, RMS {:.0f} % of continuous {:.3f} N m, "
-                   "thermal margin {:.1f} K (required {:.1f} K)\n",
-                   e.utilisation.peak_torque_pct, e.utilisation.rms_torque_pct, e.continuous_torque_Nm,
-                   e.utilisation.thermal_margin_K, rq.thermal_margin_K);
-  s += fmt::format("  supply            peak {:.2f} A, RMS {:.2f} A, regenerated {:.3f} J per braking, bus peak {:.2f} V "
-                   "(window max {:.1f} V){}\n",
-                   e.supply.peak_current_A, e.supply.rms_current_A, e.supply.regen_energy_J, e.supply.peak_bus_V,
-                   e.supply.bus_max_V,
-                   e.supply.overvoltage_advice ? ": manual 7.2 114.4 applies, add capacity or a chopper" : "");
-  s += fmt::format("  binding limit     {}\n", r.binding_limit);
-  s += fmt::format("  feasible          {}{}\n", r.feasible ? "yes" : "NO", r.feasible ? "" : ": " + e.reason);
+  s += verdict_text(e, rq.thermal_margin_K, r.binding_limit, r.feasible);
   s += fmt::format("ISDU writes, as scenario steps ({} simulation{}):\n", r.simulations, r.simulations == 1 ? "" : "s");
   for (const IsduWrite& w : e.set.writes) s += "  " + isdu_write_line(w) + "\n";
   return s;

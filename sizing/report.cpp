@@ -10,6 +10,7 @@
 #include "io/atomic_file.hpp"
 #include "io/html_page.hpp"
 #include "sizing/output.hpp"
+#include "sizing/report_parts.hpp"
 
 #if SREH_SIZING_WITH_REPORT
 #include "device_logic/motor_model.hpp"
@@ -46,27 +47,10 @@ namespace {
 using svg::xml_escape;
 
 
-// A small fixed palette, one colour per angle / series.
-const char* colour(std::size_t i) {
-  static constexpr const char* kColours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
-                                             "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
-  return kColours[i % (sizeof kColours / sizeof kColours[0])];
-}
-
-std::string page_head(const std::string& title) {
-  return io::html_page_open(title, report::page_head()) + fmt::format("<h1>{}</h1>\n", xml_escape(title));
-}
-
-std::string row(const std::string& name, const std::string& value) {
-  return fmt::format("<tr><td class=\"l\">{}</td><td>{}</td></tr>\n", xml_escape(name), xml_escape(value));
-}
-
-std::filesystem::path write_index(const std::filesystem::path& dir, const std::string& html) {
-  io::make_output_folder(dir.string());
-  const std::filesystem::path index = dir / "index.html";
-  io::write_file_atomic(index.string(), [&](std::ostream& out) { out << html; });
-  return index;
-}
+using report_parts::colour;
+using report_parts::page_head;
+using report_parts::row;
+using report_parts::write_index;
 
 std::string numbers_table(const SizingRequest& rq, const SizingResult& r) {
   const Evaluation& e = r.evaluation;
@@ -95,21 +79,9 @@ std::string numbers_table(const SizingRequest& rq, const SizingResult& r) {
 // The motor's speed-torque capability at the sizing's supply (MotorModel,
 // manual 3.5.3) with the move's operating points: motoring and braking.
 std::string speed_torque_plot(const SizingRequest& rq, const Evaluation& e) {
-  svg::Plot p;
-  p.id = "speed-torque";
-  p.title = fmt::format("Speed-torque: operating points and motor capability at {:.1f} V", rq.voltage_V);
-  p.x = {"speed |velocity|", "deg/s", 0.0, {}};
-  p.y = {"|motor torque|", "N m", 0.0, {}};
-  const MotorModel motor;
-  svg::Series cap{"capability (motoring)", {}, {}, "#d62728", 1.6, false, false};
-  const double top_dps = 1.05 * rad_to_deg(rq.voltage_V / motor.torque_constant_Nm_per_A);
-  for (int k = 0; k <= 200; ++k) {
-    const double dps = top_dps * k / 200;
-    const double tq = motor.max_torque_Nm(deg_to_rad(dps), rq.voltage_V, 1.0);
-    if (tq < 0) break;
-    cap.x.push_back(dps);
-    cap.y.push_back(tq);
-  }
+  svg::Plot p = report_parts::speed_torque_plane(
+      "speed-torque", fmt::format("Speed-torque: operating points and motor capability at {:.1f} V", rq.voltage_V));
+  const svg::Series cap = report_parts::motor_envelope(rq.voltage_V, 1.05, "capability (motoring)", "#d62728", 1.6, false);
   svg::Series motoring{"motoring", {}, {}, "#1f77b4", 1.0, false, true};
   svg::Series braking{"braking", {}, {}, "#ff7f0e", 1.0, false, true};
   for (const TraceRow& r : e.trace) {
@@ -121,16 +93,87 @@ std::string speed_torque_plot(const SizingRequest& rq, const Evaluation& e) {
   double sq_speed = 0;
   for (const TraceRow& r : e.trace) sq_speed += r.velocity_dps * r.velocity_dps;
   const double rms_speed = e.trace.empty() ? 0.0 : std::sqrt(sq_speed / static_cast<double>(e.trace.size()));
-  svg::Series rms{fmt::format("RMS point ({:.0f} deg/s, {:.3f} N m)", rms_speed, e.rms_torque_Nm),
-                  {rms_speed}, {e.rms_torque_Nm}, "#000000", 4.0, false, true};
-  p.series = {cap, motoring, braking, rms};
-  p.hlines = {{kTorqueMargin * e.torque_capability_Nm, fmt::format("{:.0f} % of peak", 100 * kTorqueMargin), "#9467bd", true},
-              {e.continuous_torque_Nm, "continuous torque (A-SIZE-14)", "#2ca02c", true}};
+  p.series = {cap, motoring, braking};
+  report_parts::add_rms_point(p, rms_speed, e.rms_torque_Nm, e.torque_capability_Nm, e.continuous_torque_Nm);
   p.vlines = {{e.set.setting.speed_dps, "set speed", "#555555"}};
   return report::figure(p, false);
 }
 
 } // namespace
+
+namespace report_parts {
+
+const char* colour(std::size_t i) {
+  static constexpr const char* kColours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
+                                             "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
+  return kColours[i % (sizeof kColours / sizeof kColours[0])];
+}
+
+std::string page_head(const std::string& title) {
+  return io::html_page_open(title, report::page_head()) + fmt::format("<h1>{}</h1>\n", xml_escape(title));
+}
+
+std::string row(const std::string& name, const std::string& value) {
+  return fmt::format("<tr><td class=\"l\">{}</td><td>{}</td></tr>\n", xml_escape(name), xml_escape(value));
+}
+
+std::filesystem::path write_index(const std::filesystem::path& dir, const std::string& html) {
+  io::make_output_folder(dir.string());
+  const std::filesystem::path index = dir / "index.html";
+  io::write_file_atomic(index.string(), [&](std::ostream& out) { out << html; });
+  return index;
+}
+
+svg::Plot speed_torque_plane(const std::string& id, const std::string& title) {
+  svg::Plot p;
+  p.id = id;
+  p.title = title;
+  p.x = {"speed |velocity|", "deg/s", 0.0, {}};
+  p.y = {"|motor torque|", "N m", 0.0, {}};
+  return p;
+}
+
+svg::Plot position_plot(const std::string& id, const std::vector<TraceRow>& rows) {
+  svg::Plot p;
+  p.id = id;
+  p.title = "Position";
+  p.x = {"time", "s", {}, {}};
+  p.y = {"position", "deg", {}, {}};
+  svg::Series sp{"setpoint", {}, {}, "#2ca02c", 1.5, true, false}, pos{"actual", {}, {}, "#1f77b4", 1.5, false, false};
+  for (const TraceRow& r : rows) {
+    sp.x.push_back(r.t_s);
+    sp.y.push_back(r.setpoint_deg);
+    pos.x.push_back(r.t_s);
+    pos.y.push_back(r.position_deg);
+  }
+  p.series = {std::move(sp), std::move(pos)};
+  return p;
+}
+
+svg::Series motor_envelope(double voltage_V, double top_factor, const std::string& label, const char* color,
+                           double width, bool dashed) {
+  const MotorModel motor;
+  svg::Series s{label, {}, {}, color, width, dashed, false};
+  const double top_dps = top_factor * rad_to_deg(voltage_V / motor.torque_constant_Nm_per_A);
+  for (int k = 0; k <= 200; ++k) {
+    const double dps = top_dps * k / 200;
+    const double tq = motor.max_torque_Nm(deg_to_rad(dps), voltage_V, 1.0);
+    if (tq < 0) break;
+    s.x.push_back(dps);
+    s.y.push_back(tq);
+  }
+  return s;
+}
+
+void add_rms_point(svg::Plot& p, double rms_speed_dps, double rms_torque_Nm, double torque_capability_Nm,
+                   double continuous_torque_Nm) {
+  p.series.push_back({fmt::format("RMS point ({:.0f} deg/s, {:.3f} N m)", rms_speed_dps, rms_torque_Nm),
+                      {rms_speed_dps}, {rms_torque_Nm}, "#000000", 4.0, false, true});
+  p.hlines = {{kTorqueMargin * torque_capability_Nm, fmt::format("{:.0f} % of peak", 100 * kTorqueMargin), "#9467bd", true},
+              {continuous_torque_Nm, "continuous torque (A-SIZE-14)", "#2ca02c", true}};
+}
+
+} // namespace report_parts
 
 bool reports_available() { return true; }
 
@@ -156,22 +199,15 @@ std::string size_report_html(const SizingRequest& rq, const SizingResult& r) {
   o += "</table>\n";
 
   if (!e.trace.empty()) {
-    std::vector<double> t, sp, pos, vel, tq, err;
+    std::vector<double> t, vel, tq, err;
     for (const TraceRow& row_ : e.trace) {
       t.push_back(row_.t_s);
-      sp.push_back(row_.setpoint_deg);
-      pos.push_back(row_.position_deg);
       vel.push_back(row_.velocity_dps);
       tq.push_back(row_.torque_Nm);
       err.push_back(row_.tracking_error_deg);
     }
     o += "<h2>Trace (one sample per 2 ms IO-Link cycle)</h2>\n";
-    svg::Plot p;
-    p.id = "position";
-    p.title = "Position";
-    p.x = {"time", "s", {}, {}};
-    p.y = {"position", "deg", {}, {}};
-    p.series = {{"setpoint", t, sp, "#2ca02c", 1.5, true}, {"actual", t, pos, "#1f77b4", 1.5, false}};
+    const svg::Plot p = report_parts::position_plot("position", e.trace);
     o += report::figure(p);
     svg::Plot v;
     v.id = "velocity";

@@ -30,6 +30,21 @@ void write_all(Twin& twin, const std::vector<IsduWrite>& writes); // throws std:
 double read_display(Twin& twin, ParamId id);
 int cycles_for(double seconds, double cycle_s);
 
+// The twin a sizing run drives: the request's load, supply, mounting and
+// ambient, trace recorded (SizingRequest and CycleRequest alike).
+template <class Request>
+TwinConfig sizing_twin_config(const Request& rq) {
+  TwinConfig cfg;
+  cfg.load = rq.load;
+  cfg.supply.voltage_V = rq.voltage_V;
+  cfg.supply.source_resistance_ohm = rq.source_resistance_ohm;
+  cfg.supply.bus_capacitance_F = rq.bus_capacitance_F;
+  cfg.mounting_tilt_deg = rq.mounting_tilt_deg;
+  cfg.thermal.ambient_C = rq.ambient_C;
+  cfg.record_trace = true;
+  return cfg;
+}
+
 template <class Pred>
 bool run_until(Twin& twin, Pred done, int max_cycles) {
   for (int i = 0; i < max_cycles; ++i) {
@@ -78,5 +93,28 @@ struct Judgement {
 // Adds the limit checks to `reasons` (run failures first, when the run
 // already failed the limits are not judged) and names the binding limit.
 Judgement judge(const LimitFigures& f, Reasons reasons);
+
+// What the torque scan finds besides the figures it sets.
+struct TorqueScan {
+  uint8_t warnings = 0;                // OR of the warning codes
+  double worst_headroom_speed_dps = 0; // speed of the smallest headroom
+};
+
+// Peak torque and smallest headroom over rows [from, end), all moves of all
+// cycles (A-SIZE-8), into `f`.
+TorqueScan scan_torque(const std::vector<TraceRow>& rows, std::size_t from, TraceFigures& f);
+
+// After the RMS torque and the mean loss are set: the supply figures (rows
+// [from, end), RMS over [cycle_from, end)), the temperature, the continuous
+// torque and the utilisation (A-SIZE-6, 14, 15).
+void derive_figures(const MotorModel& motor, const std::vector<TraceRow>& rows, std::size_t from,
+                    std::size_t cycle_from, double dt_s, double ambient_C, double thermal_margin_K, TraceFigures& f);
+
+// The limit figures of a run (without targets).
+LimitFigures limit_figures(const TraceFigures& f, const TorqueScan& scan, double voltage_V, double ambient_C,
+                           double thermal_margin_K);
+
+// Judges (judge()) and records the verdict in `f`.
+void judge_into(const LimitFigures& limits, Reasons reasons, TraceFigures& f);
 
 } // namespace sreh::sizing

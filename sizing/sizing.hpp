@@ -114,18 +114,12 @@ struct MoveResult {
   bool completed = false;
 };
 
-struct Evaluation {
-  ParameterSetValues set;
-  double load_gcm2 = 0;            // actual load as MuJoCo computes it
-  double travel_s = 0;             // Profile::rest_to_rest duration for the set's limits
-  bool completed = false;          // every move reached Done; else the times below are not meaningful
-  double settling_s = 0;           // worst move
-  double positioning_s = 0;        // worst move
-  double cycle_s = 0;              // 2 positionings + 2 handshakes + 2 dwells
-  double handshake_s = 0;          // per move (A-SIZE-16)
-  double cycles_per_min = 0;
+// The figures a run's trace gives and their verdict, alike for one move
+// (Evaluation) and a cycle (CycleEvaluation): computed by the same code
+// (run_parts.hpp), written by the same code (output.hpp).
+struct TraceFigures {
   double peak_torque_Nm = 0;       // max |motor torque| over all moves (trace samples)
-  double rms_torque_Nm = 0;        // over the last simulated cycle
+  double rms_torque_Nm = 0;        // over the last simulated cycle / repetition (long dwells included, A-SIZE-9)
   double torque_capability_Nm = 0; // MotorModel::peak_torque_Nm
   double min_torque_headroom = 1;  // min over samples of 1 - |torque| / instantaneous capability
   double max_tracking_error_deg = 0;
@@ -143,6 +137,18 @@ struct Evaluation {
   Utilisation utilisation;
   double continuous_torque_Nm = 0; // A-SIZE-14
   SupplyFigures supply;
+};
+
+struct Evaluation : TraceFigures {
+  ParameterSetValues set;
+  double load_gcm2 = 0;            // actual load as MuJoCo computes it
+  double travel_s = 0;             // Profile::rest_to_rest duration for the set's limits
+  bool completed = false;          // every move reached Done; else the times below are not meaningful
+  double settling_s = 0;           // worst move
+  double positioning_s = 0;        // worst move
+  double cycle_s = 0;              // 2 positionings + 2 handshakes + 2 dwells
+  double handshake_s = 0;          // per move (A-SIZE-16)
+  double cycles_per_min = 0;
   std::vector<MoveResult> moves;
   std::vector<TraceRow> trace;     // with SizingRequest::keep_trace
   double sim_time_s = 0;

@@ -3,12 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <regex>
-#include <set>
-#include <sstream>
 
 #include "sizing/report.hpp"
+#include "tests/sizing/report_checks.hpp"
 
 namespace sreh::sizing {
 namespace {
@@ -38,14 +35,7 @@ TEST(Report, SizeReportHasPlotsNumbersAndWrites) {
   EXPECT_NE(html.find("capability (motoring)"), std::string::npos);
   EXPECT_NE(html.find("RMS point"), std::string::npos); // issue 17
   EXPECT_NE(html.find("continuous torque (A-SIZE-14)"), std::string::npos);
-  const std::regex number(R"(<text[^>]*>(-?[0-9]+(\.[0-9]+)?)</text>)");
-  std::size_t svgs = 0;
-  for (std::size_t a = html.find("<svg"); a != std::string::npos; a = html.find("<svg", a + 1), ++svgs) {
-    const std::string svg = html.substr(a, html.find("</svg>", a) - a);
-    std::set<std::string> labels;
-    for (auto it = std::sregex_iterator(svg.begin(), svg.end(), number); it != std::sregex_iterator(); ++it) labels.insert((*it)[1]);
-    EXPECT_GE(labels.size(), 6u) << svg.substr(0, 200);
-  }
+  const std::size_t svgs = test::count_svgs_with_ticks(html);
   EXPECT_EQ(svgs, 6u);
   // Issue 17: temperature from ambient under the cycle's mean loss, with the warning and the trip.
   EXPECT_NE(html.find("Module temperature"), std::string::npos);
@@ -57,10 +47,7 @@ TEST(Report, SizeReportHasPlotsNumbersAndWrites) {
   const fs::path index = write_size_report(dir, rq, r);
   EXPECT_TRUE(fs::exists(index));
   EXPECT_FALSE(fs::exists(dir / "index.html.tmp"));
-  std::ifstream in(index);
-  std::stringstream text;
-  text << in.rdbuf();
-  EXPECT_EQ(text.str(), html);
+  EXPECT_EQ(test::file_text(index), html);
   fs::remove_all(dir);
 }
 

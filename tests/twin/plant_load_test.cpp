@@ -7,16 +7,13 @@
 #include <stdexcept>
 
 #include "device_logic/units.hpp"
+#include "tests/twin/plant_helpers.hpp"
 #include "twin/plant.hpp"
 
 namespace sreh {
 namespace {
 
-PlantConfig config_with(LoadSpec load) {
-  PlantConfig c;
-  c.load = std::move(load);
-  return c;
-}
+using test::config_with;
 
 // Motor off (bridge disabled): an external torque turns the flange.
 void push(Plant& plant, double torque_Nm, int steps) {

@@ -6,16 +6,13 @@
 #include <cmath>
 
 #include "device_logic/units.hpp"
+#include "tests/twin/plant_helpers.hpp"
 #include "twin/plant.hpp"
 
 namespace sreh {
 namespace {
 
-PlantConfig config_with(LoadSpec load) {
-  PlantConfig c;
-  c.load = std::move(load);
-  return c;
-}
+using test::config_with;
 
 void run(Plant& plant, const MotorCommand& cmd, int steps) {
   for (int i = 0; i < steps; ++i) plant.step(cmd);

@@ -1,0 +1,38 @@
+// Pieces both HTML reports (report.cpp: one move and sweeps;
+// cycle_report.cpp: a cycle) are built from, written once (report.cpp).
+// Only in builds with reports (SREH_SIZING_WITH_REPORT).
+#pragma once
+#if SREH_SIZING_WITH_REPORT
+#include <filesystem>
+#include <string>
+
+#include "renders/svg_plot.hpp"
+#include "sizing/sizing.hpp"
+
+namespace sreh::sizing::report_parts {
+
+// A small fixed palette, one colour per angle / series / move.
+const char* colour(std::size_t i);
+// One row of a two-column numbers table, escaped.
+std::string row(const std::string& name, const std::string& value);
+// The page shell (io/html_page.hpp) opened, with `title` as <h1>.
+std::string page_head(const std::string& title);
+// Writes `html` as dir/index.html atomically (the folder made if needed).
+std::filesystem::path write_index(const std::filesystem::path& dir, const std::string& html);
+
+// An empty speed-torque plane (manual 3.5.3): |velocity| in deg/s against
+// |motor torque| in N m, both from zero.
+svg::Plot speed_torque_plane(const std::string& id, const std::string& title);
+// Setpoint and actual position of `rows` against time, s.
+svg::Plot position_plot(const std::string& id, const std::vector<TraceRow>& rows);
+// The motor's speed-torque capability at `voltage_V` (MotorModel, manual
+// 3.5.3), from standstill to `top_factor` x the no-load speed.
+svg::Series motor_envelope(double voltage_V, double top_factor, const std::string& label, const char* color,
+                           double width, bool dashed);
+// The RMS point (issue 17, RMS torque at the RMS speed) as a series, and
+// the torque margin and continuous torque lines (A-SIZE-14) on `plot`.
+void add_rms_point(svg::Plot& plot, double rms_speed_dps, double rms_torque_Nm, double torque_capability_Nm,
+                   double continuous_torque_Nm);
+
+} // namespace sreh::sizing::report_parts
+#endif
