@@ -1,8 +1,11 @@
 // A load file (`sreh-twin size --load LOAD.yaml`): YAML with a top-level
-// `load:` key, exactly as in a scenario (scenarios/README.md); a scenario
-// file works too (only its load is used). The scenario parser reads it, so
-// keys, limits, errors and MJCF paths behave the same.
+// `load:` key, exactly as in a scenario (scenarios/README.md), an optional
+// `mounting:` and `name:`/`description:`; a scenario file works too (it is
+// checked as a whole scenario, only its load and mounting are used). One
+// loader for every caller (issue 13): the scenario parser's own load and
+// mounting readers, keys, limits and "FILE:LINE:COL" errors.
 #pragma once
+#include <optional>
 #include <string>
 
 #include <yaml-cpp/yaml.h>
@@ -12,10 +15,15 @@
 
 namespace sreh {
 
+struct LoadFileContents {
+  LoadSpec load;
+  std::optional<double> mounting_tilt_deg; // given only when the file has `mounting:`
+};
+
 // Throws ScenarioError "FILE:LINE:COL: ...".
-LoadSpec parse_load_text(const std::string& yaml_text, const std::string& file, const std::string& base_dir,
-                         const Limits& limits = {});
-LoadSpec parse_load_file(const std::string& path, const Limits& limits = {});
+LoadFileContents parse_load_text(const std::string& yaml_text, const std::string& file, const std::string& base_dir,
+                                 const Limits& limits = {});
+LoadFileContents parse_load_file(const std::string& path, const Limits& limits = {});
 
 // One `load:` value and one `mounting:` value inside a file read elsewhere
 // (through detail::load_yaml_safely; sizing cycles): the scenario's keys,

@@ -1,11 +1,8 @@
 #include "sizing/size_options.hpp"
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include <fmt/format.h>
-#include <yaml-cpp/yaml.h>
 
 #include "io/output_path.hpp"
 #include "scenarios/load_file.hpp"
@@ -49,39 +46,13 @@ const OptionSpec<S> kSizeOptions[] = {
 
 std::span<const OptionSpec<SizeOptions>> size_option_table() { return kSizeOptions; }
 
-// The scenario parser reads the file, so keys, errors and MJCF paths behave
-// the same: keys a scenario needs are appended at the end, which keeps every
-// line number of the file.
+// The scenarios' load-file loader reads the file (issue 13: one loader), so
+// keys, limits, errors and MJCF paths behave as in a scenario.
 LoadSpec load_from_file(const std::string& path, std::string_view option) { return read_load_file(path, option).load; }
 
-LoadFile read_load_file(const std::string& path, std::string_view option) {
+LoadFileContents read_load_file(const std::string& path, std::string_view option) {
   try {
-    (void)parse_load_file(path); // the YAML safety layer and limits of scenarios first (issue 12)
-  } catch (const ScenarioError& e) {
-    throw SizingInputError(fmt::format("{} {}", option, e.what()));
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw SizingInputError(fmt::format("{} {}: cannot read the file", option, path));
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  std::string text = buffer.str();
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    throw SizingInputError(fmt::format("{}:{}:{}: {}", path, e.mark.line + 1, e.mark.column + 1, e.msg));
-  }
-  if (!root.IsMap() || !root["load"]) {
-    throw SizingInputError(
-        fmt::format("{}: expected a top-level 'load:' key (e.g. load: {{disk: {{mass_kg: 0.4, radius_m: 0.1}}}})", path));
-  }
-  if (!root["name"]) text += "\nname: load from " + std::filesystem::path(path).filename().string() + "\n";
-  if (!root["steps"]) text += "\nsteps:\n  - comment: sizing load\n"; // a scenario needs one step
-  try {
-    const Scenario sc = parse_scenario_text(text, path, std::filesystem::path(path).parent_path().string());
-    LoadFile f{sc.load, std::nullopt};
-    if (root["mounting"]) f.mounting_tilt_deg = sc.mounting_tilt_deg;
-    return f;
+    return parse_load_file(path);
   } catch (const ScenarioError& e) {
     throw SizingInputError(fmt::format("{} {}", option, e.what()));
   }
@@ -94,7 +65,7 @@ SizingRequest make_request(const SizeOptions& a) {
   if (a.load_gcm2 && !a.load.empty()) throw SizingInputError("--load-gcm2 and --load: give only one of them");
   if (a.load_gcm2) rq.load = InertiaLoad{*a.load_gcm2};
   else if (!a.load.empty()) {
-    LoadFile f = read_load_file(a.load);
+    LoadFileContents f = read_load_file(a.load);
     rq.load = std::move(f.load);
     rq.mounting_tilt_deg = f.mounting_tilt_deg.value_or(0.0);
   }

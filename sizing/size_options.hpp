@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "scenarios/load_file.hpp"
 #include "sizing/cycle.hpp"
 #include "sizing/option_table.hpp"
 #include "sizing/sizing.hpp"
@@ -47,11 +48,7 @@ LoadSpec load_from_file(const std::string& path, std::string_view option = "--lo
 
 // The load and, when the file has a `mounting:` key (the scenario's
 // {axis: vertical|horizontal} | {tilt_deg: T}), the axis tilt from vertical.
-struct LoadFile {
-  LoadSpec load;
-  std::optional<double> mounting_tilt_deg;
-};
-LoadFile read_load_file(const std::string& path, std::string_view option = "--load");
+LoadFileContents read_load_file(const std::string& path, std::string_view option = "--load");
 
 // Throws SizingInputError (no load given, both given, a bad load file).
 SizingRequest make_request(const SizeOptions& options);
