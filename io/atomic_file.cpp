@@ -1,5 +1,7 @@
 #include "io/atomic_file.hpp"
 
+#include "io/fd_buffer.hpp"
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -11,8 +13,6 @@
 #include <filesystem>
 #include <ostream>
 #include <stdexcept>
-#include <streambuf>
-#include <vector>
 
 namespace sreh::io {
 namespace {
@@ -39,49 +39,8 @@ unsigned next_serial() {
 
 } // namespace
 
-// A plain output buffer over a file descriptor (the fd comes from open(2)
-// with O_EXCL, which std::ofstream cannot do).
-struct AtomicFile::Buffer : std::streambuf {
-  explicit Buffer(int fd) : fd_(fd), data_(1 << 16) { setp(data_.data(), data_.data() + data_.size()); }
-  bool failed = false;
-  int error = 0;
-  int flush_all() {
-    const char* p = pbase();
-    std::size_t left = static_cast<std::size_t>(pptr() - pbase());
-    while (left > 0 && !failed) {
-      const ssize_t n = ::write(fd_, p, left);
-      if (n < 0) {
-        if (errno == EINTR) continue;
-        failed = true;
-        error = errno;
-        break;
-      }
-      p += n;
-      left -= static_cast<std::size_t>(n);
-      written_ += n;
-    }
-    setp(data_.data(), data_.data() + data_.size());
-    return failed ? -1 : 0;
-  }
-  int_type overflow(int_type c) override {
-    if (flush_all() != 0) return traits_type::eof();
-    if (!traits_type::eq_int_type(c, traits_type::eof())) {
-      *pptr() = traits_type::to_char_type(c);
-      pbump(1);
-    }
-    return traits_type::not_eof(c);
-  }
-  int sync() override { return flush_all(); }
-  // tellp(): bytes written so far (the only position this buffer knows).
-  pos_type seekoff(off_type off, std::ios_base::seekdir way, std::ios_base::openmode which) override {
-    if (off != 0 || way != std::ios_base::cur || !(which & std::ios_base::out)) return pos_type(off_type(-1));
-    return pos_type(written_ + (pptr() - pbase()));
-  }
-
- private:
-  off_type written_ = 0;
-  int fd_;
-  std::vector<char> data_;
+struct AtomicFile::Buffer : detail::FdBuffer {
+  using FdBuffer::FdBuffer;
 };
 
 AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
@@ -109,7 +68,7 @@ std::ostream& AtomicFile::stream() { return *stream_; }
 void AtomicFile::commit() {
   if (committed_) throw std::logic_error("AtomicFile: commit twice");
   stream_->flush();
-  int err = buffer_->failed ? buffer_->error : 0;
+  int err = buffer_->failed() ? buffer_->error() : 0;
   if (err == 0 && !*stream_) err = EIO;
   if (::close(fd_) != 0 && err == 0) err = errno;
   fd_ = -1;

@@ -38,6 +38,15 @@ nlohmann::json move_json(const MoveRecord& m) {
           {"completed", m.completed()}};
 }
 
+nlohmann::json check_json(const CheckRecord& c) {
+  return {{"step", c.step},
+          {"line", c.line},
+          {"description", c.description},
+          {"passed", c.passed},
+          {"t_s", time_s(c.t_s)},
+          {"actual", c.actual}};
+}
+
 nlohmann::json to_json(const RunResult& r) {
   nlohmann::json moves = nlohmann::json::array();
   for (const MoveRecord& m : r.moves) {
@@ -45,12 +54,7 @@ nlohmann::json to_json(const RunResult& r) {
   }
   nlohmann::json checks = nlohmann::json::array();
   for (const CheckRecord& c : r.checks) {
-    checks.push_back({{"step", c.step},
-                      {"line", c.line},
-                      {"description", c.description},
-                      {"passed", c.passed},
-                      {"t_s", time_s(c.t_s)},
-                      {"actual", c.actual}});
+    checks.push_back(check_json(c));
   }
   return {
       {"name", r.name},

@@ -10,5 +10,7 @@ namespace sreh {
 nlohmann::json to_json(const RunResult& result);
 // One move record as in `moves[]` (also used by the Python API and serve).
 nlohmann::json move_json(const MoveRecord& move);
+// One check record as in `checks[]`.
+nlohmann::json check_json(const CheckRecord& check);
 
 } // namespace sreh

@@ -32,6 +32,8 @@ std::string seconds(double s) { return fmt::format("{:g} s", s); }
 
 struct StopRun {}; // stop_on_failure: unwinds the step loop
 
+std::unique_ptr<Twin> make_twin(const Scenario& s, const TwinConfig& config);
+
 class ScenarioRun {
  public:
   ScenarioRun(const Scenario& s, const RunOptions& o) : s_(s), o_(o) {}
@@ -41,16 +43,8 @@ class ScenarioRun {
     TwinConfig config = make_twin_config(s_);
     config.record_trace = o_.record_trace;
     config.trace_sink = o_.trace_sink;
-    try {
-      twin_ = std::make_unique<Twin>(config);
-    } catch (const std::invalid_argument& e) {
-      // One line on stderr (interfaces.md): MuJoCo's messages span several.
-      std::string why = e.what();
-      std::replace(why.begin(), why.end(), '\n', ' ');
-      const bool has_load = !std::holds_alternative<NoLoad>(s_.load);
-      throw ScenarioError(has_load ? s_.load_loc : SourceLoc{s_.file, 0, 0},
-                          fmt::format("{}the twin rejects this setup: {}", has_load ? "load: " : "", why));
-    }
+    config.move_sink = [this](const MoveRecord& m) { finished_move(m); };
+    twin_ = make_twin(s_, config);
     r_.name = s_.name;
     const Snapshot first = take_snapshot(*twin_);
     r_.min_supply_V = r_.max_supply_V = first.telemetry.supply_V;
@@ -96,15 +90,21 @@ class ScenarioRun {
   // ---- recording ----
   void record(const std::string& step, const SourceLoc& loc, const std::string& description, bool passed,
               const std::string& actual, const std::string& why) {
-    r_.checks.push_back(CheckRecord{step, loc.line, description, passed, twin_->time_s(), actual});
+    CheckRecord check{step, loc.line, description, passed, twin_->time_s(), actual};
+    ++r_.checks_recorded;
+    r_.checks_held += passed ? 1 : 0;
+    if (o_.check_sink) o_.check_sink(check);
+    else r_.checks.push_back(std::move(check));
     if (passed) return;
     r_.passed = false;
     // The module's own view at that moment helps to see why (e.g. an error state).
     const Snapshot now = take_snapshot(*twin_);
-    r_.failures.push_back(fmt::format("step {} (line {}{}): {}: {} at t={:.3f} s [{}, {:.3f} deg, error_code {}, warning_code {}]",
+    std::string failure = fmt::format("step {} (line {}{}): {}: {} at t={:.3f} s [{}, {:.3f} deg, error_code {}, warning_code {}]",
                                       step, loc.line, pass_, description, why, twin_->time_s(),
                                       state_name(now.state), now.position_deg, now.in.error_code,
-                                      now.in.warning_code));
+                                      now.in.warning_code);
+    if (o_.failure_sink) o_.failure_sink(failure);
+    else r_.failures.push_back(std::move(failure));
     if (s_.stop_on_failure) throw StopRun{};
   }
 
@@ -330,31 +330,42 @@ class ScenarioRun {
   }
 
   // ---- whole run ----
+  // Finished move records, in order, from the twin (which keeps only the
+  // open or held one): kept or streamed, and summed up for the run metrics.
+  void finished_move(const MoveRecord& m) {
+    finished_stats_.add(m);
+    ++r_.moves_recorded;
+    if (o_.move_sink) o_.move_sink(m);
+    else r_.moves.push_back(m);
+  }
+
+  struct MoveStats {
+    uint64_t count = 0, completed = 0;
+    double max_travel_s = 0, max_settling_s = 0, max_positioning_s = 0;
+    void add(const MoveRecord& m) {
+      ++count;
+      completed += m.completed() ? 1 : 0;
+      max_travel_s = std::max(max_travel_s, m.travel_s);
+      // A move that never completed never settled.
+      max_settling_s = std::max(max_settling_s, m.settling_s.value_or(kInf));
+      max_positioning_s = std::max(max_positioning_s, m.positioning_s.value_or(kInf));
+    }
+  };
+
   void check_run_metrics() {
-    const auto& moves = twin_->moves();
-    auto max_of = [&](auto field) {
-      double m = 0;
-      for (const MoveRecord& mv : moves) m = std::max(m, field(mv));
-      return m;
-    };
+    MoveStats moves = finished_stats_; // and the record still open or held
+    for (const MoveRecord& m : twin_->moves()) moves.add(m);
     for (const RunCheck& c : s_.expect) {
       double v = 0;
       switch (c.metric) {
         case RunMetric::MaxTrackingErrorDeg:
           v = twin_->max_tracking_error_deg(); // every control step of the run (issue 16: one maximum)
           break;
-        case RunMetric::Moves: v = static_cast<double>(moves.size()); break;
-        case RunMetric::MovesCompleted:
-          v = static_cast<double>(std::count_if(moves.begin(), moves.end(), [](const MoveRecord& m) { return m.completed(); }));
-          break;
-        case RunMetric::MaxTravelS: v = max_of([](const MoveRecord& m) { return m.travel_s; }); break;
-        case RunMetric::MaxSettlingS:
-          // A move that never completed never settled.
-          v = max_of([](const MoveRecord& m) { return m.settling_s.value_or(kInf); });
-          break;
-        case RunMetric::MaxPositioningS:
-          v = max_of([](const MoveRecord& m) { return m.positioning_s.value_or(kInf); });
-          break;
+        case RunMetric::Moves: v = static_cast<double>(moves.count); break;
+        case RunMetric::MovesCompleted: v = static_cast<double>(moves.completed); break;
+        case RunMetric::MaxTravelS: v = moves.max_travel_s; break;
+        case RunMetric::MaxSettlingS: v = moves.max_settling_s; break;
+        case RunMetric::MaxPositioningS: v = moves.max_positioning_s; break;
         case RunMetric::MaxTemperatureC: v = r_.max_temperature_C; break;
         case RunMetric::MinSupplyV: v = r_.min_supply_V; break;
         case RunMetric::MaxSupplyV: v = r_.max_supply_V; break;
@@ -372,7 +383,7 @@ class ScenarioRun {
   void finish() {
     const Snapshot s = take_snapshot(*twin_);
     r_.final_state = FinalState{s.state, s.position_deg, s.in.error_code, s.in.warning_code, s.telemetry.led};
-    r_.moves = twin_->moves();
+    for (const MoveRecord& m : twin_->moves()) finished_move(m); // the last, open or held, in run order
     r_.max_tracking_error_deg = twin_->max_tracking_error_deg();
     r_.sim_time_s = twin_->time_s();
     r_.cycles = twin_->cycles();
@@ -393,9 +404,25 @@ class ScenarioRun {
   std::unique_ptr<Twin> twin_;
   ProcessDataOut pd_{}; // the PLC's outputs; kept across power cycles like a real PLC's
   RunResult r_;
+  MoveStats finished_stats_; // of the records handed over by the twin
   std::string pass_; // ", pass 2/5" inside a repeat
   Variables vars_;   // save_as / save, by name
 };
+
+// The scenario's twin; a setup the twin rejects (e.g. an invalid MJCF load)
+// is the scenario's error, at its load line.
+std::unique_ptr<Twin> make_twin(const Scenario& s, const TwinConfig& config) {
+  try {
+    return std::make_unique<Twin>(config);
+  } catch (const std::invalid_argument& e) {
+    // One line on stderr (interfaces.md): MuJoCo's messages span several.
+    std::string why = e.what();
+    std::replace(why.begin(), why.end(), '\n', ' ');
+    const bool has_load = !std::holds_alternative<NoLoad>(s.load);
+    throw ScenarioError(has_load ? s.load_loc : SourceLoc{s.file, 0, 0},
+                        fmt::format("{}the twin rejects this setup: {}", has_load ? "load: " : "", why));
+  }
+}
 
 std::vector<uint8_t> read_bytes(const std::string& path, const SourceLoc& loc) {
   std::ifstream in(path, std::ios::binary);
@@ -417,6 +444,11 @@ TwinConfig make_twin_config(const Scenario& s) {
   if (s.device.nvm_image_path) c.nvm_image = read_bytes(*s.device.nvm_image_path, s.device.nvm_image_loc);
   c.record_trace = false;
   return c;
+}
+
+void check_setup(const Scenario& scenario, const Limits& limits) {
+  check_run_bound(scenario, limits);
+  make_twin(scenario, make_twin_config(scenario));
 }
 
 RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {

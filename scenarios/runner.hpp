@@ -39,6 +39,10 @@ struct RunResult {
   std::vector<std::string> failures; // "step 4 (line 12): ..."
   std::vector<CheckRecord> checks;
   std::vector<MoveRecord> moves;
+  // Counted whether kept above or streamed (RunOptions sinks).
+  uint64_t checks_recorded = 0;
+  uint64_t checks_held = 0;
+  uint64_t moves_recorded = 0;
   FinalState final_state;
   double sim_time_s = 0;
   uint64_t cycles = 0;
@@ -58,6 +62,12 @@ struct RunOptions {
   // Stream the trace instead, row by row as the cycles run (memory flat with
   // run length, issue 12); RunResult::trace stays empty.
   std::function<void(const TraceRow&)> trace_sink;
+  // Stream the records that grow with run length instead of keeping them
+  // (issue 12): each is handed over once, in run order, as soon as it is
+  // final, and the matching RunResult vector stays empty.
+  std::function<void(const CheckRecord&)> check_sink;
+  std::function<void(const std::string&)> failure_sink;
+  std::function<void(const MoveRecord&)> move_sink;
   Limits limits;               // checked before the run starts (check_run_bound)
   // Called after every IO-Link cycle (video frames, progress).
   std::function<void(const Twin&)> on_cycle;
@@ -73,5 +83,10 @@ TwinConfig make_twin_config(const Scenario& scenario);
 // load), citing the scenario line, and for a scenario that could exceed
 // options.limits (before running).
 RunResult run_scenario(const Scenario& scenario, const RunOptions& options = {});
+
+// Everything run_scenario refuses before the first cycle (the run bound, the
+// NVM image file, a setup the twin rejects), without running: throws
+// ScenarioError as run_scenario would. For checking a batch before any runs.
+void check_setup(const Scenario& scenario, const Limits& limits);
 
 } // namespace sreh

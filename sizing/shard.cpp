@@ -1,9 +1,7 @@
-// Sharding a sweep over machines (issue 17, A-SIZE-11): which block a task
-// runs, and joining the parts back into the unsharded CSV byte for byte.
+// Sharding a sweep over machines (issue 17, A-SIZE-11): joining the parts
+// back into the unsharded CSV byte for byte (which block a task runs: io/shard).
 #include <algorithm>
-#include <charconv>
 #include <cstdio>
-#include <optional>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -12,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "io/shard.hpp"
 #include "sizing/sweep.hpp"
 
 namespace sreh::sizing {
@@ -19,45 +18,7 @@ namespace {
 
 constexpr const char* kMarker = "# sreh-twin sweep shard ";
 
-std::optional<long long> to_int(std::string_view s) {
-  long long v = 0;
-  const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (r.ec != std::errc() || r.ptr != s.data() + s.size() || s.empty()) return std::nullopt;
-  return v;
-}
-
-long long env_int(const char* (*env)(const char*), const char* name, const std::string& text) {
-  const char* v = env(name);
-  if (v == nullptr) throw SizingInputError(fmt::format("--shard {}: {} is not set", text, name));
-  const auto n = to_int(v);
-  if (!n) throw SizingInputError(fmt::format("--shard {}: {}={} is not an integer", text, name, v));
-  return *n;
-}
-
 } // namespace
-
-std::pair<std::size_t, std::size_t> parse_shard(const std::string& text, const char* (*env)(const char*)) {
-  long long i = 0, n = 0;
-  if (text == "auto") { // Slurm job array
-    i = env_int(env, "SLURM_ARRAY_TASK_ID", text) - env_int(env, "SLURM_ARRAY_TASK_MIN", text) + 1;
-    n = env_int(env, "SLURM_ARRAY_TASK_COUNT", text);
-  } else if (text.rfind("auto/", 0) == 0) { // Kubernetes indexed Job
-    const auto count = to_int(std::string_view(text).substr(5));
-    if (!count) throw SizingInputError(fmt::format("--shard {}: expected auto/N with an integer N", text));
-    n = *count;
-    i = env_int(env, "JOB_COMPLETION_INDEX", text) + 1;
-  } else {
-    const auto slash = text.find('/');
-    const auto a = slash == std::string::npos ? std::nullopt : to_int(std::string_view(text).substr(0, slash));
-    const auto b = slash == std::string::npos ? std::nullopt : to_int(std::string_view(text).substr(slash + 1));
-    if (!a || !b) throw SizingInputError(fmt::format("--shard {}: expected i/N, auto or auto/N", text));
-    i = *a;
-    n = *b;
-  }
-  if (n < 1 || n > 100000) throw SizingInputError(fmt::format("--shard {}: N = {} is outside 1 .. 100000", text, n));
-  if (i < 1 || i > n) throw SizingInputError(fmt::format("--shard {}: shard {} is outside 1 .. {}", text, i, n));
-  return {static_cast<std::size_t>(i), static_cast<std::size_t>(n)};
-}
 
 std::string shard_marker(const SweepResult& r) {
   return fmt::format("{}{}/{} rows {} of {}\n", kMarker, r.shard, r.shards, r.points.size(), r.total_points);
@@ -108,7 +69,7 @@ void merge_sweep_csv(std::ostream& out, const std::vector<std::string>& paths) {
     if (p.header != first.header || p.total != first.total) {
       throw SizingInputError(fmt::format("sweep merge: {} is from another sweep than {}", p.path, first.path));
     }
-    if (p.rows_n != shard_range(i, shards, p.total).second - shard_range(i, shards, p.total).first) {
+    if (p.rows_n != io::shard_range(i, shards, p.total).second - io::shard_range(i, shards, p.total).first) {
       throw SizingInputError(fmt::format("sweep merge: {}: wrong number of rows for shard {}/{}", p.path, i, shards));
     }
     sum += p.rows_n;

@@ -1,5 +1,7 @@
 #include "sizing/sweep.hpp"
 
+#include "io/shard.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <exception>
@@ -60,10 +62,6 @@ std::vector<SizingRequest> sweep_requests(const SweepRequest& rq) {
   return out;
 }
 
-std::pair<std::size_t, std::size_t> shard_range(std::size_t shard, std::size_t shards, std::size_t total) {
-  return {(shard - 1) * total / shards, shard * total / shards};
-}
-
 SweepResult run_sweep(const SweepRequest& rq) {
   std::vector<SizingRequest> requests = sweep_requests(rq);
   for (const SizingRequest& r : requests) validate(r); // bad input before any long run, in every shard
@@ -72,7 +70,7 @@ SweepResult run_sweep(const SweepRequest& rq) {
   result.shards = rq.shards;
   result.total_points = requests.size();
   if (rq.shards > 1) {
-    const auto [begin, end] = shard_range(rq.shard, rq.shards, requests.size());
+    const auto [begin, end] = io::shard_range(rq.shard, rq.shards, requests.size());
     result.first_point = begin;
     requests = std::vector<SizingRequest>(requests.begin() + static_cast<std::ptrdiff_t>(begin),
                                           requests.begin() + static_cast<std::ptrdiff_t>(end));

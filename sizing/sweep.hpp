@@ -46,14 +46,7 @@ struct SweepResult {
   std::size_t first_point = 0, total_points = 0; // the block of the whole grid these points are
 };
 
-// The points of shard i of N among `total` (1-based i): [begin, end).
-std::pair<std::size_t, std::size_t> shard_range(std::size_t shard, std::size_t shards, std::size_t total);
-
-// "i/N", "auto" (Slurm array: i = SLURM_ARRAY_TASK_ID - SLURM_ARRAY_TASK_MIN + 1,
-// N = SLURM_ARRAY_TASK_COUNT) or "auto/N" (Kubernetes indexed Job:
-// i = JOB_COMPLETION_INDEX + 1). `env` looks a variable up (nullptr: unset).
-// Throws SizingInputError naming --shard.
-std::pair<std::size_t, std::size_t> parse_shard(const std::string& text, const char* (*env)(const char*));
+// Which block a shard runs, and parsing --shard: io/shard.hpp (shared with `run DIR`).
 
 // First line of a shard's CSV, before the header (only when sharded).
 std::string shard_marker(const SweepResult& result);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <stdexcept>
 #include <tuple>
 #include <thread>
 
@@ -10,6 +11,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/output_path.hpp"
+#include "io/shard.hpp"
 #include "sizing/report.hpp"
 
 namespace sreh::sizing {
@@ -76,7 +78,11 @@ SweepRequest make_sweep_request(const SweepOptions& a) {
   rq.base.cycles = a.cycles;
   if (!a.shard.empty()) {
     if (!a.report.empty()) throw SizingInputError("--shard with --report: merge the parts, then report the whole sweep");
-    std::tie(rq.shard, rq.shards) = parse_shard(a.shard, [](const char* name) -> const char* { return std::getenv(name); });
+    try {
+      std::tie(rq.shard, rq.shards) = io::parse_shard(a.shard, [](const char* name) -> const char* { return std::getenv(name); });
+    } catch (const std::invalid_argument& e) {
+      throw SizingInputError(e.what());
+    }
   }
   rq.threads = a.threads > 0 ? a.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   return rq;

@@ -1,25 +1,26 @@
 // `sreh-twin run SCENARIO.yaml`: simulate a scenario and check its
 // expectations (interfaces.md). Exit 0 all held, 1 a check failed, 2 bad input.
+// `run DIR`: a folder of them (tools/run_folder.cpp).
 #include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <regex>
 #include <string>
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
 #include "io/atomic_file.hpp"
 #include "io/output_path.hpp"
-#include "io/text.hpp"
 #include "scenarios/limits.hpp"
-#include "scenarios/result_json.hpp"
 #include "scenarios/runner.hpp"
 #include "scenarios/scenario_parser.hpp"
 #include "tools/command.hpp"
+#include "tools/run_folder.hpp"
+#include "tools/run_output.hpp"
 #include "twin/plant.hpp"
 #include "twin/trace.hpp"
 #ifdef SREH_WITH_RENDER
@@ -51,6 +52,7 @@ struct RunArgs {
   Limits limits;
   uint64_t max_trace_mb = 2048;
   uint64_t max_file_mb = 4;
+  std::string shard; // with a folder
 };
 
 // Progress on stderr, only for a person watching (a TTY) and only once a run
@@ -111,18 +113,6 @@ void write_nvm(const RunArgs& a, const RunResult& r) {
   io::write_file_atomic(a.save_nvm, [&](std::ostream& out) {
     out.write(reinterpret_cast<const char*>(r.nvm_image.data()), static_cast<std::streamsize>(r.nvm_image.size()));
   });
-}
-
-void print_summary(const RunResult& r) {
-  std::cout << (r.passed ? "PASS" : "FAIL") << "  " << io::escape_control(r.name) << "\n";
-  for (const auto& f : r.failures) std::cout << "  " << io::escape_control(f) << "\n";
-  std::size_t passed = 0;
-  for (const auto& c : r.checks) passed += c.passed ? 1 : 0;
-  std::cout << fmt::format("  {} of {} checks held, {} moves, {:.3f} s simulated{}\n", passed, r.checks.size(),
-                           r.moves.size(), r.sim_time_s, r.stopped_early ? " (stopped at the first failure)" : "");
-  std::cout << fmt::format("  final: {} at {:.3f} deg, error_code {}, warning_code {}\n",
-                           state_name(r.final_state.state), r.final_state.position_deg, r.final_state.error_code,
-                           r.final_state.warning_code);
 }
 
 #ifdef SREH_WITH_RENDER
@@ -210,7 +200,36 @@ std::vector<std::string> inputs_of(const RunArgs& a, const Scenario& s) {
   return in;
 }
 
+// `run DIR` (issue 17): the options that write one file per run have no
+// meaning for a folder and are refused; the limits apply to every file.
+int run_folder_command(const RunArgs& a) {
+  for (const auto& [option, value] : {std::pair<const char*, const std::string&>{"--trace", a.trace},
+                                      {"--video", a.video},
+                                      {"--frames", a.frames},
+                                      {"--report", a.report},
+                                      {"--save-nvm", a.save_nvm}}) {
+    if (!value.empty()) {
+      throw InputError(fmt::format("{}: not with a folder of scenarios ({}); run one scenario file for it", option,
+                                   a.scenario));
+    }
+  }
+  FolderArgs f;
+  f.dir = a.scenario;
+  f.shard = a.shard;
+  f.json = a.json;
+  f.limits = a.limits;
+  f.limits.max_trace_bytes = a.max_trace_mb << 20;
+  f.limits.max_file_bytes = static_cast<std::size_t>(a.max_file_mb << 20);
+  return run_folder(f);
+}
+
 int run_command(RunArgs a) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(a.scenario, ec)) return run_folder_command(a);
+  if (!a.shard.empty()) {
+    throw InputError(fmt::format("--shard {}: only with a folder of scenarios (run DIR --shard i/N); {} is a file",
+                                 a.shard, a.scenario));
+  }
 #ifndef SREH_WITH_RENDER
   if (!a.video.empty() || !a.frames.empty()) throw InputError("--video: built without rendering (SREH_WITH_RENDER=OFF)");
   if (!a.report.empty()) throw InputError("--report: built without rendering (SREH_WITH_RENDER=OFF)");
@@ -251,13 +270,21 @@ int run_command(RunArgs a) {
     }
   }
   // The report plots the whole trace, so it keeps it in memory (and --trace
-  // is written from there after the run, the same bytes); --trace alone streams.
+  // is written from there after the run, the same bytes), and draws every
+  // check and move; without it, all that grows with run length streams.
   const bool in_memory = !a.report.empty();
+  std::optional<RunOutput> output;
+  try {
+    output.emplace(a.json, in_memory);
+  } catch (const std::runtime_error& e) {
+    throw InputError(e.what());
+  }
   try {
     Progress progress(isatty(STDERR_FILENO) != 0);
     RunOptions options;
     options.limits = a.limits;
     options.record_trace = in_memory;
+    output->attach(options);
     if (trace && !in_memory) options.trace_sink = [&](const TraceRow& row) { trace->row(row); };
 #ifdef SREH_WITH_RENDER
     std::optional<VideoHook> video;
@@ -298,12 +325,7 @@ int run_command(RunArgs a) {
 #ifdef SREH_WITH_RENDER
   if (!a.report.empty()) write_report_dir(a, result);
 #endif
-  if (a.json) {
-    // Names and texts come from the file: invalid UTF-8 is replaced, never an internal error.
-    std::cout << to_json(result).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
-  } else {
-    print_summary(result);
-  }
+  output->print(std::cout, result);
   return result.passed ? 0 : 1;
 }
 
@@ -311,13 +333,21 @@ int run_command(RunArgs a) {
 
 SREH_REGISTER_COMMAND(10, [](CLI::App& app, int& exit_code) {
   auto args = std::make_shared<RunArgs>();
-  CLI::App* cmd = app.add_subcommand("run", "Simulate a scenario and check its expectations (exit 0 held, 1 failed, 2 bad input)");
-  cmd->add_option("scenario", args->scenario, "Scenario file (YAML, see scenarios/README.md)")->required();
+  CLI::App* cmd = app.add_subcommand("run", "Simulate a scenario (or a folder of them) and check its expectations (exit 0 held, 1 failed, 2 bad input)");
+  cmd->add_option("scenario", args->scenario,
+                  "Scenario file (YAML, see scenarios/README.md), or a folder: every *.yaml in it, sorted by name, "
+                  "one line each (exit 0 all held, 1 any failed, 2 bad input in any)")
+      ->required();
   cmd->add_option("--trace", args->trace, "Write a CSV trace to this file, one row per IO-Link cycle (streamed to disk)");
   cmd->add_option("--trace-every", args->trace_every, "Keep every Nth cycle in the trace, 1 .. 1000000")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
-  cmd->add_flag("--json", args->json, "Print one JSON object with the results on stdout");
+  cmd->add_flag("--json", args->json,
+                "Print one JSON object with the results on stdout (a folder: one object per file and line, JSON Lines)");
+  cmd->add_option("--shard", args->shard,
+                  "With a folder: run only block i of N of its files: i/N, auto (Slurm array: SLURM_ARRAY_TASK_ID - "
+                  "SLURM_ARRAY_TASK_MIN + 1 of SLURM_ARRAY_TASK_COUNT) or auto/N (Kubernetes indexed Job: "
+                  "JOB_COMPLETION_INDEX + 1)");
   cmd->add_option("--video", args->video, "Render a video of the run: .mp4 (H.264), .webm (VP8) or .gif");
   cmd->add_option("--fps", args->fps, "Video frames per second, 1 .. 240")->check(CLI::Range(1, 240))->capture_default_str();
   cmd->add_option("--size", args->size, "Video size WIDTHxHEIGHT in pixels (even numbers, 16 .. 4096)")->capture_default_str();
@@ -335,7 +365,7 @@ SREH_REGISTER_COMMAND(10, [](CLI::App& app, int& exit_code) {
   cmd->add_option("--max-sim-s", l.max_sim_s, "Limit: simulated time of the run, s")
       ->capture_default_str()->check(CLI::Range(0.0, 1e9));
   cmd->add_option("--max-steps", l.max_steps, "Limit: executed steps (repeats unrolled)")->capture_default_str();
-  cmd->add_option("--max-checks", l.max_checks, "Limit: recorded checks (repeats unrolled)")->capture_default_str();
+  cmd->add_option("--max-checks", l.max_checks, "Limit: recorded checks (repeats unrolled; streamed to a temporary file, in memory only with --report)")->capture_default_str();
   cmd->add_option("--max-trace-mb", args->max_trace_mb, "Limit: size of the --trace file, MB")
       ->capture_default_str()->check(CLI::Range(uint64_t{1}, uint64_t{1} << 30));
   cmd->add_option("--max-file-mb", args->max_file_mb, "Limit: size of the scenario file, MB")

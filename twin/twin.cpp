@@ -80,11 +80,14 @@ struct Twin::Impl : TwinRunState {
     }
     auto place = [&](MoveRecord m) {
       m.start_s = static_cast<double>(m.start_ns + device_epoch_ns) / 1e9;
-      moves.push_back(m);
+      return m;
     };
-    for (const MoveRecord& m : device.take_finished_moves()) place(m);
+    for (const MoveRecord& m : device.take_finished_moves()) {
+      if (config.move_sink) config.move_sink(place(m)); // streamed (issue 12)
+      else moves.push_back(place(m));
+    }
     if (const auto m = device.pending_move()) {
-      place(*m);
+      moves.push_back(place(*m));
       pending_in_list = true;
     }
   }

@@ -29,6 +29,9 @@ struct TwinConfig : WorldSpec {
   // When set, every row goes here instead (streaming; trace() stays empty),
   // so memory stays flat however long the run (issue 12).
   std::function<void(const TraceRow&)> trace_sink;
+  // When set, every finished move record goes here instead, in order; moves()
+  // keeps only the record still open or held (memory flat with run length).
+  std::function<void(const MoveRecord&)> move_sink;
 };
 
 class Plant; // twin/plant.hpp
@@ -105,7 +108,8 @@ class Twin {
   // video overlay shows.
   const TraceRow& last_row() const;
   // One record per accepted Move, from the device (issue 13); the last may
-  // still be open (or its target held) while the run goes on.
+  // still be open (or its target held) while the run goes on. With
+  // TwinConfig::move_sink only that open or held record.
   const std::vector<MoveRecord>& moves() const;
   // The largest |setpoint - encoder| of any control step so far (motor on).
   double max_tracking_error_deg() const;

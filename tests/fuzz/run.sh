@@ -6,9 +6,11 @@
 #   tests/fuzz/run.sh                   every target for 20 s (CI)
 #   tests/fuzz/run.sh 600 scenario      one target for 600 s
 #   SREH_FUZZ_RUNS=10000000 tests/fuzz/run.sh 0 isdu   a number of executions instead of time
+#   SREH_FUZZ_TIMEOUT=60 ...            per-input timeout in s (default 10; long runs under nice on a
+#                                       loaded machine see inputs of 0.1 s descheduled for > 10 s)
 #   SREH_FUZZ_MERGE=1 ...               afterwards merge what was found into the committed corpus
 #                                       (edge coverage only, -use_counters=0, to keep it small)
-# A crash, leak, sanitizer report, timeout (10 s) or out-of-memory (2 GB)
+# A crash, leak, sanitizer report, timeout (10 s unless SREH_FUZZ_TIMEOUT) or out-of-memory (2 GB)
 # fails the script (exit 1); the reproducer is left in build-fuzz/findings/.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -36,7 +38,7 @@ for t in "${targets[@]}"; do
   budget=(-max_total_time="$seconds")
   [ -n "${SREH_FUZZ_RUNS:-}" ] && budget=(-runs="$SREH_FUZZ_RUNS")
   echo "fuzz $t: ${budget[*]}"
-  (cd "$build/findings" && ASAN_OPTIONS=detect_leaks=1 "../tests/fuzz/${t}_fuzz" "${budget[@]}" -timeout=10 \
+  (cd "$build/findings" && ASAN_OPTIONS=detect_leaks=1 "../tests/fuzz/${t}_fuzz" "${budget[@]}" -timeout="${SREH_FUZZ_TIMEOUT:-10}" \
      -rss_limit_mb=2048 -max_len=16384 -print_final_stats=1 "$scratch" "${seeds[@]/#/$root/}") \
      > "$build/findings/$t.log" 2>&1 || { tail -60 "$build/findings/$t.log"; echo "fuzz $t: FAILED"; exit 1; }
   grep -E "stat::number_of_executed_units|Done [0-9]+ runs" "$build/findings/$t.log" | tail -2

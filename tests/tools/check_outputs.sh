@@ -67,6 +67,14 @@ rc=$?
 timeout -s INT --preserve-status 2 "$twin" run "$long" --trace sig.csv > /dev/null 2> err.txt
 rc=$?
 [ "$rc" = 130 ] || fail "SIGINT: exit $rc, want 130 ($(cat err.txt))"
+# --json spools checks and moves in $TMPDIR (nameless files): nothing there after a signal, no answer.
+mkdir spooldir
+TMPDIR=$PWD/spooldir timeout -s TERM --preserve-status 2 "$twin" run "$long" --json > sig.json 2> err.txt
+rc=$?
+[ "$rc" = 143 ] || fail "SIGTERM with --json: exit $rc, want 143 ($(cat err.txt))"
+[ -s sig.json ] && fail "an interrupted --json run printed an answer"
+[ -z "$(ls -A spooldir)" ] || fail "--json left temporaries: $(ls -A spooldir)"
+rm -rf spooldir sig.json
 if [ "$render" = 1 ]; then
   timeout -s TERM --preserve-status 4 "$twin" run "$long" --video sig.mp4 --frames sigframes --size 64x48 \
     > /dev/null 2> err.txt

@@ -2,7 +2,8 @@
 # completion generator, so this script asks the program itself: it runs
 # `sreh-twin <subcommands so far> --help` and offers the subcommands and
 # --options listed there, so it never goes stale when a command changes.
-# Files are offered after options that take a path, and for run's SCENARIO.
+# Files are offered after options that take a path, and for run's SCENARIO
+# (a file, or a folder of them: `run DIR --shard i/N`).
 # Install: `cmake --install` puts it in share/bash-completion/completions;
 # or `source tools/completion/sreh-twin.bash` in a shell.
 _sreh_twin() {
@@ -27,6 +28,8 @@ _sreh_twin() {
   case $prev in
     --trace|--video|--frames|--report|--csv|--save-nvm|--load|--cycle|--iodd|--port-config|--token-file|--emit-scenario)
       COMPREPLY=($(compgen -f -- "$cur")); return ;;
+    --shard) # run DIR / sweep: i/N typed by hand, or from the job array's environment
+      COMPREPLY=($(compgen -W "auto auto/" -- "$cur")); return ;;
   esac
   if [[ $cur == -* ]]; then
     local opts

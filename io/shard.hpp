@@ -1,0 +1,21 @@
+// Splitting a batch over the tasks of a job array (issue 17, A-SIZE-11):
+// `sweep --shard` (grid points) and `run DIR --shard` (scenario files) share
+// this one parser and one split.
+#pragma once
+#include <cstddef>
+#include <string>
+#include <utility>
+
+namespace sreh::io {
+
+// "i/N", "auto" (Slurm array: i = SLURM_ARRAY_TASK_ID - SLURM_ARRAY_TASK_MIN + 1,
+// N = SLURM_ARRAY_TASK_COUNT) or "auto/N" (Kubernetes indexed Job:
+// i = JOB_COMPLETION_INDEX + 1), 1 <= i <= N <= 100000. `env` looks a
+// variable up (nullptr: unset). Throws std::invalid_argument naming --shard.
+std::pair<std::size_t, std::size_t> parse_shard(const std::string& text, const char* (*env)(const char*));
+
+// The items of shard i of N among `total` (1-based i): the contiguous block
+// [floor((i-1) total / N), floor(i total / N)); the N blocks cover every item once.
+std::pair<std::size_t, std::size_t> shard_range(std::size_t shard, std::size_t shards, std::size_t total);
+
+} // namespace sreh::io
