@@ -334,6 +334,19 @@ class PyTwin {
 
 void bind_twin(pyb::module_& m) {
   using pyb::arg;
+  // Opaque: what a Twin was at one cycle (A-TWIN-34..36). Immutable, so
+  // copies share it; kept in Python as long as it is referenced.
+  pyb::class_<TwinSnapshot>(m, "TwinSnapshot", R"(A running Twin at one cycle (Twin.snapshot()).
+
+Opaque and immutable; give it to Twin.restore() (of the same Twin, or of one
+made with the same arguments) to continue from there bit for bit.)")
+      .def_property_readonly("cycles", [](const TwinSnapshot& s) { return s.run.cycles; },
+                             "IO-Link cycles the twin had run.")
+      .def_property_readonly("time_s", [](const TwinSnapshot& s) { return static_cast<double>(s.run.time_ns) * 1e-9; },
+                             "Simulated time then, s.")
+      .def("__repr__", [](const TwinSnapshot& s) {
+        return "<sreh_twin.TwinSnapshot at cycle " + std::to_string(s.run.cycles) + ">";
+      });
   pyb::class_<PyTwin>(m, "Twin", R"(One SREH-50-IOL on a simulated IO-Link master.
 
 The device is reached as from a PLC: exchange() / run_cycles() send the
@@ -395,6 +408,20 @@ nvm: a saved memory image (save_nvm()); factory-new otherwise.)")
            "The trace as the CSV of `sreh-twin run --trace` (returned, and written to path if given).")
       .def("moves", &PyTwin::moves, "One dict per accepted Move (as `run --json` moves).")
       .def("save_nvm", &PyTwin::save_nvm, "The non-volatile memory image (for Twin(nvm=...)).")
+      .def("snapshot", [](const PyTwin& t) { return t.twin().snapshot(); },
+           "The whole running twin now (device, physics, drive, supply, thermal, clocks, link, load) as an opaque "
+           "TwinSnapshot for restore().")
+      .def("restore", [](PyTwin& t, const TwinSnapshot& s) {
+             try {
+               t.twin().restore(s);
+             } catch (const std::invalid_argument& e) {
+               throw input_error(e.what());
+             }
+           },
+           arg("snapshot"),
+           "Go back to a snapshot(): the twin then continues exactly as it did after the snapshot, bit for bit. "
+           "The kept trace is cut back to the snapshot's rows. Raises InputError (nothing changes) for a snapshot "
+           "of a twin with other hard stops.")
       .def_property_readonly("time_s", [](const PyTwin& t) { return t.twin().time_s(); }, "Simulated time, s.")
       .def_property_readonly("cycles", [](const PyTwin& t) { return t.twin().cycles(); }, "IO-Link cycles run.")
       .def_property_readonly("load_inertia_gcm2", [](const PyTwin& t) { return t.twin().load_inertia_gcm2(); },

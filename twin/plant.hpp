@@ -22,6 +22,7 @@
 #include "twin/supply.hpp"
 #include "twin/thermal.hpp"
 #include "twin/specs.hpp"
+#include "twin/twin_snapshot.hpp"
 
 namespace sreh {
 
@@ -69,6 +70,11 @@ class Plant {
   // Throws std::invalid_argument as the constructor does (nothing changes
   // then). model() and data() point to the new model afterwards.
   void set_load(const LoadSpec& load);
+  // The plant as a value (twin/twin_snapshot.hpp, twin/plant_snapshot.cpp):
+  // restore() rebuilds the model if the load differs (A-TWIN-34), throws
+  // std::invalid_argument for another world (A-TWIN-35), no change then.
+  PlantSnapshot snapshot() const;
+  void restore(const PlantSnapshot& snapshot);
 
   // State, physical frame. The flange (output, where loads sit) and the
   // rotor (motor side, encoder) differ by the twist of the compliance.

@@ -10,18 +10,22 @@
 namespace sreh {
 
 // Attachable loads (issue 5). Masses in kg, lengths in m.
-struct DiskLoad { double mass_kg = 0; double radius_m = 0; double thickness_m = 0.01; };
-struct RingLoad { double mass_kg = 0; double inner_radius_m = 0; double outer_radius_m = 0; double thickness_m = 0.01; };
-struct BoxLoad { double mass_kg = 0; double x_m = 0; double y_m = 0; double z_m = 0; };
+struct DiskLoad { double mass_kg = 0; double radius_m = 0; double thickness_m = 0.01;
+  bool operator==(const DiskLoad&) const = default; };
+struct RingLoad { double mass_kg = 0; double inner_radius_m = 0; double outer_radius_m = 0; double thickness_m = 0.01;
+  bool operator==(const RingLoad&) const = default; };
+struct BoxLoad { double mass_kg = 0; double x_m = 0; double y_m = 0; double z_m = 0;
+  bool operator==(const BoxLoad&) const = default; };
 // A light arm (its own mass spread along it) with a point mass at `radius_m`.
-struct ArmLoad { double mass_kg = 0; double radius_m = 0; double arm_mass_kg = 0; };
-struct InertiaLoad { double inertia_gcm2 = 0; }; // a given inertia about the axis
-struct MjcfLoad { std::string path; };           // any MJCF body file
-struct NoLoad {};
+struct ArmLoad { double mass_kg = 0; double radius_m = 0; double arm_mass_kg = 0;
+  bool operator==(const ArmLoad&) const = default; };
+struct InertiaLoad { double inertia_gcm2 = 0; bool operator==(const InertiaLoad&) const = default; }; // a given inertia about the axis
+struct MjcfLoad { std::string path; bool operator==(const MjcfLoad&) const = default; }; // any MJCF body file
+struct NoLoad { bool operator==(const NoLoad&) const = default; };
 using LoadSpec = std::variant<NoLoad, DiskLoad, RingLoad, BoxLoad, ArmLoad, InertiaLoad, MjcfLoad>;
 
 // Optional world objects.
-struct HardStop { double angle_deg = 0; };       // an obstacle the load hits at this flange angle
+struct HardStop { double angle_deg = 0; bool operator==(const HardStop&) const = default; }; // an obstacle the load hits at this flange angle
 
 struct SupplySpec {
   double voltage_V = 24.0;            // source voltage

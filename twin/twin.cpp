@@ -9,6 +9,7 @@
 #include "io/interrupt.hpp"
 #include "twin/firmware_transfer.hpp"
 #include "twin/plant.hpp"
+#include "twin/twin_snapshot.hpp"
 
 namespace sreh {
 namespace {
@@ -41,14 +42,24 @@ PlantConfig plant_config(const TwinConfig& c) {
   return p;
 }
 
+// Checks the cycle before the plant is built (a bad config throws cheaply).
+TwinRunState first_run_state(const TwinConfig& c) {
+  TwinRunState r;
+  r.steps = steps_per_cycle(c.cycle_s, c.physics_dt_s);
+  r.cycle_s = c.cycle_s;
+  r.cycle_ns = seconds_to_ns(c.cycle_s);
+  return r;
+}
+
 Device make_device(const TwinConfig& c) { return c.nvm_image ? Device(*c.nvm_image) : Device(); }
 
 } // namespace
 
-struct Twin::Impl {
+// The run's own state is a TwinRunState (twin/twin_snapshot.hpp): what a
+// snapshot takes, field for field.
+struct Twin::Impl : TwinRunState {
   explicit Impl(const TwinConfig& c)
-      : config(c), steps(steps_per_cycle(c.cycle_s, c.physics_dt_s)), plant(plant_config(c)), device(make_device(c)) {
-    cycle_ns = seconds_to_ns(c.cycle_s);
+      : TwinRunState(first_run_state(c)), config(c), plant(plant_config(c)), device(make_device(c)) {
     device.set_master_cycle_time(c.cycle_s); // announced before t = 0 (the run starts in OPERATE)
   }
 
@@ -107,29 +118,9 @@ struct Twin::Impl {
   }
 
   TwinConfig config;
-  int steps;
   Plant plant;
   Device device;
-  ProcessDataOut pd_out{};
-  bool outputs_valid = true;
-  bool link_up = true;
-  PdInFrame last_pd_in{};
-  uint64_t cycles = 0;
-  int64_t time_ns = 0;     // sum of the master cycles run
-  int64_t cycle_ns = 0;    // the master cycle now
-  int startup_left = 0;    // master cycles of STARTUP / PREOPERATE still to run after a power-on
-  // A hand turning the flange (turn_flange): from start_rad by total_rad over n cycles.
-  double turn_start_rad = 0, turn_total_rad = 0;
-  uint64_t turn_cycles = 0, turn_done = 0;
-  bool turning = false;
-  double direction = 1.0;
   std::vector<TraceRow> trace;
-  TraceRow last_row; // the row of the last cycle, whether kept, streamed or neither
-  std::vector<MoveRecord> moves;
-  int64_t ticked_counts = 0; // encoder reading the device saw last
-  int64_t device_epoch_ns = 0; // run time of the device's last power-on
-  double max_tracking_error_deg = 0; // over the run, every control step
-  bool pending_in_list = false; // moves.back() is the device's open or held record
 };
 
 Twin::Twin(const TwinConfig& config) : impl_(std::make_unique<Impl>(config)) {
@@ -178,12 +169,13 @@ void Twin::set_ambient_C(double celsius) { impl_->plant.set_ambient_C(celsius); 
 void Twin::set_master_cycle_s(double cycle_s) {
   Impl& s = *impl_;
   s.steps = steps_per_cycle(cycle_s, s.config.physics_dt_s); // throws before anything changes
+  s.cycle_s = cycle_s;
   s.config.cycle_s = cycle_s;
   s.cycle_ns = seconds_to_ns(cycle_s);
   s.device.set_master_cycle_time(cycle_s); // the master announces it (MasterCycleTime)
 }
 
-double Twin::master_cycle_s() const { return impl_->config.cycle_s; }
+double Twin::master_cycle_s() const { return impl_->cycle_s; }
 
 void Twin::power_off() {
   impl_->device.power_off();
@@ -208,7 +200,7 @@ void Twin::power_cycle() {
 
 void Twin::turn_flange(double turn_deg, double over_s) {
   Impl& s = *impl_;
-  const uint64_t n = over_s > 0 ? static_cast<uint64_t>(std::ceil(over_s / s.config.cycle_s - 1e-9)) : 0;
+  const uint64_t n = over_s > 0 ? static_cast<uint64_t>(std::ceil(over_s / s.cycle_s - 1e-9)) : 0;
   const double start = s.plant.angle_rad();
   if (n == 0) {
     s.plant.set_flange_angle(start + deg_to_rad(turn_deg));
@@ -224,7 +216,7 @@ void Twin::turn_flange(double turn_deg, double over_s) {
 void Twin::power_off_for(double off_s, double turn_deg) {
   power_off();
   turn_flange(turn_deg, off_s);
-  const uint64_t n = off_s > 0 ? static_cast<uint64_t>(std::ceil(off_s / impl_->config.cycle_s - 1e-9)) : 0;
+  const uint64_t n = off_s > 0 ? static_cast<uint64_t>(std::ceil(off_s / impl_->cycle_s - 1e-9)) : 0;
   for (uint64_t i = 0; i < n; ++i) run_cycle();
   power_on();
 }
@@ -236,14 +228,14 @@ void Twin::run_cycle() {
   if (s.turning) { // a hand turns the flange evenly (manual 4.1)
     const double per_cycle = s.turn_total_rad / static_cast<double>(s.turn_cycles);
     const double at = s.turn_start_rad + per_cycle * static_cast<double>(s.turn_done);
-    s.plant.set_flange_angle(at, per_cycle / s.config.cycle_s);
+    s.plant.set_flange_angle(at, per_cycle / s.cycle_s);
   }
   if (s.link_up && s.device.powered()) {
     // After a power-on the master wakes the device up and runs STARTUP and
     // PREOPERATE (no process data) before OPERATE (A-LINK-3).
     if (s.startup_left > 0) {
       const bool first = s.startup_left == kStartupCycles;
-      if (first) s.device.set_master_cycle_time(s.config.cycle_s); // MasterCycleTime, written in STARTUP
+      if (first) s.device.set_master_cycle_time(s.cycle_s); // MasterCycleTime, written in STARTUP
       if (s.device.startup_cycle(first ? ComPhase::Startup : ComPhase::Preoperate)) --s.startup_left;
     } else if (const auto in = s.device.exchange(out_frame, s.outputs_valid)) {
       s.last_pd_in = *in;
@@ -279,6 +271,23 @@ double Twin::load_inertia_gcm2() const { return kgm2_to_gcm2(impl_->plant.load_i
 const Device& Twin::device() const { return impl_->device; }
 const Plant& Twin::plant() const { return impl_->plant; }
 std::vector<uint8_t> Twin::save_nvm() const { return impl_->device.save_nvm(); }
+TwinSnapshot Twin::snapshot() const {
+  const Impl& s = *impl_;
+  return TwinSnapshot{s.device.snapshot(), s.plant.snapshot(), static_cast<const TwinRunState&>(s), s.trace.size()};
+}
+
+// A-TWIN-34..36: the plant first (it throws on a different world, and then
+// nothing has changed), then the device and the run.
+void Twin::restore(const TwinSnapshot& snapshot) {
+  Impl& s = *impl_;
+  s.plant.restore(snapshot.plant);
+  s.device.restore(snapshot.device);
+  static_cast<TwinRunState&>(s) = snapshot.run;
+  s.config.cycle_s = snapshot.run.cycle_s;
+  s.config.load = snapshot.plant.world.load;
+  if (s.trace.size() > snapshot.trace_rows) s.trace.resize(snapshot.trace_rows);
+}
+
 uint16_t Twin::firmware_update(std::span<const uint8_t> image) {
   for (const IsduWriteRequest& w : firmware_requests(image)) {
     for (uint64_t i = isdu_write_cycles(w.data.size()); i > 0; --i) run_cycle();

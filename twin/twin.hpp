@@ -12,6 +12,7 @@
 #include "device_logic/device.hpp"
 #include "twin/specs.hpp"
 #include "twin/trace.hpp"
+#include "twin/twin_snapshot.hpp"
 
 struct mjModel_;
 struct mjData_;
@@ -116,6 +117,17 @@ class Twin {
   const Device& device() const;
   const Plant& plant() const;
   std::vector<uint8_t> save_nvm() const;
+
+  // The whole running twin as a value (twin/twin_snapshot.hpp): device,
+  // MuJoCo state, drive, supply, thermal, clocks, link, load. restore()
+  // puts this twin (or another made with the same config) back exactly
+  // there; it then continues bit for bit as after the snapshot. A load
+  // changed since (set_load) is changed back (A-TWIN-34); a snapshot of a
+  // different world (physics step, hard stops, mounting, module model)
+  // throws std::invalid_argument and nothing changes (A-TWIN-35); the kept
+  // trace is cut back to the snapshot's rows (A-TWIN-36).
+  TwinSnapshot snapshot() const;
+  void restore(const TwinSnapshot& snapshot);
 
  private:
   struct Impl;

@@ -23,6 +23,7 @@ from ._core import (  # noqa: E402
     IsduError,
     InputError,
     Twin,
+    TwinSnapshot,
     pd_out,
     decode_pd_in,
     decode_pd_out,
@@ -34,7 +35,7 @@ from ._core import (  # noqa: E402
 )
 
 __all__ = [
-    "Twin", "IsduError", "InputError", "run_scenario", "size", "sweep", "pd_out", "decode_pd_in",
+    "Twin", "TwinSnapshot", "IsduError", "InputError", "run_scenario", "size", "sweep", "pd_out", "decode_pd_in",
     "decode_pd_out", "STATES", "LEDS", "SIZE_OPTIONS", "SWEEP_OPTIONS", "models_dir", "env",
 ]
 
