@@ -63,14 +63,14 @@ class Serve:
 
     # ---- HTTP through curl (a real client, as in the issue) ----
     def curl(self, method, path, body=None, headers=()):
-        cmd = ["curl", "-s", "-m", "5", "-X", method, "-w", "\n%{http_code}", self.http + path]
+        cmd = ["curl", "-s", "-m", "15", "-X", method, "-w", "\n%{http_code}", self.http + path]
         for h in headers:
             cmd += ["-H", h]
         data = None
         if body is not None:
             cmd += ["-H", "Content-Type: application/json", "--data-binary", "@-"]
             data = body if isinstance(body, str) else json.dumps(body)
-        out = subprocess.run(cmd, input=data, capture_output=True, text=True, timeout=10).stdout
+        out = subprocess.run(cmd, input=data, capture_output=True, text=True, timeout=20).stdout
         text, _, code = out.rpartition("\n")
         try:
             payload = json.loads(text) if text else None
@@ -86,8 +86,8 @@ class Serve:
     # ---- Modbus through mbpoll (0-based registers, any unit id) ----
     def mbpoll_read(self, reg, count, unit=1):
         out = subprocess.run(["mbpoll", "-m", "tcp", "-p", str(self.modbus_port), "-a", str(unit), "-0", "-1",
-                              "-t", "4", "-r", str(reg), "-c", str(count), "-o", "2", "127.0.0.1"],
-                             capture_output=True, text=True, timeout=10)
+                              "-t", "4", "-r", str(reg), "-c", str(count), "-o", "10", "127.0.0.1"],
+                             capture_output=True, text=True, timeout=15)
         check(out.returncode == 0, "mbpoll read %d: %s %s" % (reg, out.stdout, out.stderr))
         values = []
         for line in out.stdout.splitlines():
@@ -98,14 +98,14 @@ class Serve:
 
     def mbpoll_write(self, reg, values, unit=1, expect_ok=True):
         out = subprocess.run(["mbpoll", "-m", "tcp", "-p", str(self.modbus_port), "-a", str(unit), "-0", "-1",
-                              "-t", "4", "-r", str(reg), "-o", "2", "127.0.0.1", "--", *[str(v) for v in values]],
-                             capture_output=True, text=True, timeout=10)
+                              "-t", "4", "-r", str(reg), "-o", "10", "127.0.0.1", "--", *[str(v) for v in values]],
+                             capture_output=True, text=True, timeout=15)
         if expect_ok:
             check(out.returncode == 0, "mbpoll write %d %s: %s %s" % (reg, values, out.stdout, out.stderr))
         return out.returncode
 
     def pymodbus(self):
-        c = ModbusTcpClient("127.0.0.1", port=self.modbus_port, timeout=3)
+        c = ModbusTcpClient("127.0.0.1", port=self.modbus_port, timeout=10)
         check(c.connect(), "pymodbus: cannot connect")
         return c
 

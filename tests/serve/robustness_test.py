@@ -18,7 +18,7 @@ HTTP = ("127.0.0.1", int(s.ready["http"].rsplit(":", 1)[1]))
 deadline = time.monotonic() + 40  # hard bound on the whole test
 
 
-def exchange(addr, payload, read=True, timeout=1.0):
+def exchange(addr, payload, read=True, timeout=5.0):
     """Sends raw bytes, returns whatever comes back before close/timeout."""
     with socket.create_connection(addr, timeout=timeout) as c:
         try:
