@@ -57,11 +57,15 @@ std::ostream& Spool::stream() { return *stream_; }
 
 unsigned long long Spool::bytes() const { return static_cast<unsigned long long>(buffer_->written()); }
 
-void Spool::copy_to(std::ostream& out) {
+void Spool::flush_or_throw() {
   stream_->flush();
   if (buffer_->failed() || !*stream_) {
     throw failure("cannot write a temporary file", buffer_->failed() ? buffer_->error() : EIO);
   }
+}
+
+void Spool::copy_to(std::ostream& out) {
+  flush_or_throw();
   std::vector<char> chunk(1 << 16);
   off_t at = 0;
   for (;;) {
@@ -71,6 +75,19 @@ void Spool::copy_to(std::ostream& out) {
     if (n == 0) break;
     out.write(chunk.data(), n);
     at += n;
+  }
+}
+
+void Spool::read_at(unsigned long long offset, void* out, std::size_t n) {
+  flush_or_throw();
+  auto* to = static_cast<char*>(out);
+  std::size_t done = 0;
+  while (done < n) {
+    const ssize_t got = ::pread(fd_, to + done, n - done, static_cast<off_t>(offset + done));
+    if (got < 0 && errno == EINTR) continue;
+    if (got < 0) throw failure("cannot read a temporary file", errno);
+    if (got == 0) throw std::runtime_error("read past the end of a temporary file");
+    done += static_cast<std::size_t>(got);
   }
 }
 

@@ -8,6 +8,7 @@
 //  - where the file system has no O_TMPFILE: a unique O_EXCL | O_NOFOLLOW
 //    name, mode 0600, unlinked at once (the same guarantees once unlinked).
 #pragma once
+#include <cstddef>
 #include <iosfwd>
 #include <memory>
 #include <string>
@@ -31,10 +32,15 @@ class Spool {
   // Copies everything written so far to `out` (the spool stays writable).
   // Throws std::runtime_error if the spool could not be written or read.
   void copy_to(std::ostream& out);
+  // Reads `n` bytes at `offset` of what was written so far (a spooled
+  // record read back, e.g. the report's trace rows). Throws
+  // std::runtime_error if fewer than `n` bytes are there or reading fails.
+  void read_at(unsigned long long offset, void* out, std::size_t n);
 
   static std::string folder(); // $TMPDIR if set and not empty, else /tmp
 
  private:
+  void flush_or_throw();
   int fd_ = -1;
   std::unique_ptr<detail::FdBuffer> buffer_;
   std::unique_ptr<std::ostream> stream_;

@@ -1,10 +1,12 @@
 #include "renders/report.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <fstream>
 #include <ostream>
+#include <sstream>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -26,30 +28,109 @@ constexpr const char* kSetpointColor = "#2ca02c";
 constexpr const char* kActualColor = "#111111";
 constexpr const char* kLimitColor = "#d62728";
 
-
-std::string ms(double s) { return s < 0 ? std::string("&mdash;") : fmt::format("{:.1f}", s * 1e3); }
-
 struct Columns {
   std::vector<double> t, setpoint, position, error, velocity, torque, limit_pos, limit_neg, external, supply, temperature;
   bool any_external = false;
 };
 
-Columns columns(std::span<const TraceRow> rows) {
-  Columns c;
-  for (const TraceRow& r : rows) {
-    c.t.push_back(r.t_s);
-    c.setpoint.push_back(r.setpoint_deg);
-    c.position.push_back(r.position_deg);
-    c.error.push_back(r.tracking_error_deg);
-    c.velocity.push_back(r.velocity_dps);
-    c.torque.push_back(r.torque_Nm);
-    c.limit_pos.push_back(std::abs(r.torque_limit_Nm));
-    c.limit_neg.push_back(-std::abs(r.torque_limit_Nm));
-    c.external.push_back(r.external_torque_Nm);
-    c.supply.push_back(r.supply_V);
-    c.temperature.push_back(r.temperature_C);
-    c.any_external = c.any_external || r.external_torque_Nm != 0;
+void append(Columns& c, const TraceRow& r) {
+  c.t.push_back(r.t_s);
+  c.setpoint.push_back(r.setpoint_deg);
+  c.position.push_back(r.position_deg);
+  c.error.push_back(r.tracking_error_deg);
+  c.velocity.push_back(r.velocity_dps);
+  c.torque.push_back(r.torque_Nm);
+  c.limit_pos.push_back(std::abs(r.torque_limit_Nm));
+  c.limit_neg.push_back(-std::abs(r.torque_limit_Nm));
+  c.external.push_back(r.external_torque_Nm);
+  c.supply.push_back(r.supply_V);
+  c.temperature.push_back(r.temperature_C);
+  c.any_external = c.any_external || r.external_torque_Nm != 0;
+}
+
+// Calls f(row) for rows [begin, end), read back in pieces.
+template <typename F>
+void for_rows(ReportRecorder& run, std::size_t begin, std::size_t end, F&& f) {
+  std::vector<TraceRow> chunk(std::min<std::size_t>(end - begin, 4096));
+  for (std::size_t at = begin; at < end; at += chunk.size()) {
+    const std::size_t n = std::min(chunk.size(), end - at);
+    run.read_rows(at, {chunk.data(), n});
+    for (std::size_t k = 0; k < n; ++k) f(chunk[k]);
   }
+}
+
+// The values a plot draws from a row (the -limit is the +limit mirrored).
+constexpr std::size_t kPlotted = 9;
+std::array<double, kPlotted> plotted(const TraceRow& r) {
+  return {r.setpoint_deg, r.position_deg,   r.tracking_error_deg, r.velocity_dps, r.torque_Nm, std::abs(r.torque_limit_Nm),
+          r.external_torque_Nm, r.supply_V, r.temperature_C};
+}
+
+// Min/max decimation of a long stretch, one pass over rows in time order:
+// in each of `columns` equal slices of [lo, hi] the first and last row and
+// the rows where a plotted value is smallest and largest, in time order.
+// What a min/max plot draws of the slice; the plots' own decimation (1500
+// columns or the plot's width) then works on these rows as on all of them.
+class MinMaxRows {
+ public:
+  MinMaxRows(double lo, double hi, int columns) : lo_(lo), scale_(columns / std::max(hi - lo, 1e-12)) {}
+  void add(const TraceRow& r) {
+    const long col = static_cast<long>(std::floor((r.t_s - lo_) * scale_));
+    const auto v = plotted(r);
+    if (col != col_ || picks_.empty()) {
+      flush();
+      col_ = col;
+      picks_.assign(2 + 2 * kPlotted, {index_, r});
+      min_ = max_ = v;
+    }
+    picks_[1] = {index_, r}; // last
+    for (std::size_t s = 0; s < kPlotted; ++s) {
+      if (v[s] < min_[s]) min_[s] = v[s], picks_[2 + 2 * s] = {index_, r};
+      if (v[s] > max_[s]) max_[s] = v[s], picks_[3 + 2 * s] = {index_, r};
+    }
+    ++index_;
+  }
+  Columns take() {
+    flush();
+    return std::move(out_);
+  }
+
+ private:
+  void flush() {
+    std::sort(picks_.begin(), picks_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (std::size_t k = 0; k < picks_.size(); ++k) {
+      if (k == 0 || picks_[k].first != picks_[k - 1].first) append(out_, picks_[k].second);
+    }
+    picks_.clear();
+  }
+  double lo_, scale_;
+  long col_ = 0;
+  std::size_t index_ = 0;
+  std::vector<std::pair<std::size_t, TraceRow>> picks_;
+  std::array<double, kPlotted> min_{}, max_{};
+  Columns out_;
+};
+
+// Twice the 1500 columns the zoomable figures keep.
+constexpr int kDecimationColumns = 3000;
+
+// Rows [begin, end) as plot columns: every row up to kReportFullRateRows,
+// else their min/max decimation over [t(begin), t(end - 1)].
+Columns columns(ReportRecorder& run, std::size_t begin, std::size_t end) {
+  Columns c;
+  if (end <= begin) return c;
+  if (end - begin <= kReportFullRateRows) {
+    for_rows(run, begin, end, [&](const TraceRow& r) { append(c, r); });
+    return c;
+  }
+  MinMaxRows keep(run.row(begin).t_s, run.row(end - 1).t_s, kDecimationColumns);
+  bool any_external = false;
+  for_rows(run, begin, end, [&](const TraceRow& r) {
+    keep.add(r);
+    any_external = any_external || r.external_torque_Nm != 0;
+  });
+  c = keep.take();
+  c.any_external = any_external;
   return c;
 }
 
@@ -62,7 +143,7 @@ svg::Plot time_plot(const std::string& id, const std::string& title, const std::
   return p;
 }
 
-std::string overview_plots(const ReportInput& in, const Columns& c) {
+std::string overview_plots(const ReportSummary& in, const Columns& c) {
   std::string out;
   {
     svg::Plot p = time_plot("p-position", "Setpoint and actual position", "position", "deg");
@@ -108,10 +189,10 @@ std::string overview_plots(const ReportInput& in, const Columns& c) {
 // Manual 3.5.2 Fig. 3 for one move: actual - target around the end of the
 // trajectory (b), the tolerance window (5), the waiting time (3) ending at
 // completion (f).
-std::string settling_plot(const ReportInput& in, const Columns& c, std::size_t i) {
-  const MoveRecord& mv = in.moves[i];
+// Only the rows of the plotted stretch are read back, with one row either
+// side so that the curves run to the edges.
+std::string settling_plot(ReportRecorder& run, const MoveRecord& mv, std::size_t i, double t_end) {
   const double b = mv.start_s + mv.travel_s;
-  const double t_end = c.t.empty() ? b : c.t.back();
   const double wait_s = mv.wait_ms * 1e-3;  // the move's own set (issue 13)
   const double tol = mv.tolerance_deg;
   double x_lo = 0, x_hi = 0;
@@ -125,6 +206,8 @@ std::string settling_plot(const ReportInput& in, const Columns& c, std::size_t i
     x_hi = std::max(b + std::max(0.2, mv.travel_s), b + 0.01);
   }
   x_hi = std::min(x_hi, std::max(t_end, x_lo + 1e-3));
+  const std::size_t first = run.lower_bound(x_lo), last = run.upper_bound(x_hi);
+  const Columns c = columns(run, first > 0 ? first - 1 : 0, std::min(last + 1, run.rows()));
 
   std::vector<double> dev_actual(c.t.size()), dev_setpoint(c.t.size());
   double max_dev = 0;
@@ -161,98 +244,101 @@ std::string settling_plot(const ReportInput& in, const Columns& c, std::size_t i
   return svg::to_svg(p);
 }
 
-std::string summary(const ReportInput& in) {
-  std::size_t held = 0, completed = 0;
-  for (const ReportCheck& ch : in.checks) held += ch.passed ? 1 : 0;
-  for (const MoveRecord& m : in.moves) completed += m.completed() ? 1 : 0;
-  std::string o = fmt::format("<p><span class=\"result {}\">{}</span> {} of {} checks held; {} moves ({} completed); {:.3f} s simulated; "
-                              "max tracking error {:.4f} deg</p>\n",
-                              in.passed ? "pass" : "fail", in.passed ? "PASSED" : "FAILED", held, in.checks.size(), in.moves.size(),
-                              completed, in.sim_time_s, in.max_tracking_error_deg);
-  if (held < in.checks.size()) {
-    o += "<ul class=\"failed\" id=\"failed\">\n";
-    for (const ReportCheck& ch : in.checks) {
-      if (ch.passed) continue;
-      o += fmt::format("<li>step {}{}: {} &mdash; got {} at t = {:.3f} s</li>\n", xml_escape(ch.step),
-                       ch.line > 0 ? fmt::format(" (line {})", ch.line) : std::string(), xml_escape(ch.description),
-                       xml_escape(ch.actual.empty() ? std::string("-") : ch.actual), ch.t_s);
-    }
-    o += "</ul>\n";
+void write_summary(std::ostream& out, const ReportSummary& in, ReportRecorder& run) {
+  out << fmt::format("<p><span class=\"result {}\">{}</span> {} of {} checks held; {} moves ({} completed); {:.3f} s simulated; "
+                     "max tracking error {:.4f} deg</p>\n",
+                     in.passed ? "pass" : "fail", in.passed ? "PASSED" : "FAILED", run.checks_held(), run.checks(), run.moves(),
+                     run.moves_completed(), in.sim_time_s, in.max_tracking_error_deg);
+  if (run.checks_held() < run.checks()) {
+    out << "<ul class=\"failed\" id=\"failed\">\n";
+    run.copy_failed_items(out);
+    out << "</ul>\n";
   }
   if (!in.command_line.empty() || !in.version.empty()) {
-    o += fmt::format("<p class=\"note\">sreh-twin {}</p><code class=\"cmd\" id=\"command\">{}</code>\n", xml_escape(in.version),
-                     xml_escape(in.command_line));
+    out << fmt::format("<p class=\"note\">sreh-twin {}</p><code class=\"cmd\" id=\"command\">{}</code>\n", xml_escape(in.version),
+                       xml_escape(in.command_line));
   }
-  return o;
+}
+
+} // namespace
+
+void write_report_html(std::ostream& out, const ReportSummary& in, ReportRecorder& run, const std::string& video_name) {
+  out << io::html_page_open("sreh-twin: " + in.scenario_name, report::page_head());
+  out << fmt::format("<h1>{}</h1>\n", xml_escape(in.scenario_name));
+  write_summary(out, in, run);
+
+  out << "<h2>Expectations</h2>\n";
+  if (run.checks() == 0) {
+    out << "<p class=\"note\">No expectations in this scenario.</p>\n";
+  } else {
+    out << "<table id=\"checks\">\n<tr><th>step</th><th class=\"l\">expectation</th><th class=\"l\">observed</th><th>result</th></tr>\n";
+    run.copy_check_rows(out);
+    out << "</table>\n";
+  }
+
+  out << "<h2>Moves (manual 3.5.2)</h2>\n";
+  if (run.moves() == 0) {
+    out << "<p class=\"note\">No move command was executed.</p>\n";
+  } else {
+    out << "<table id=\"moves\">\n<tr><th>#</th><th>start [s]</th><th>target [deg]</th><th>travel time (1) [ms]</th>"
+           "<th>settling time (2) [ms]</th><th>positioning time (4) [ms]</th><th>max tracking error [deg]</th><th>completed</th></tr>\n";
+    run.copy_move_rows(out);
+    out << "</table>\n";
+  }
+
+  if (!video_name.empty()) {
+    out << "<h2>Video</h2>\n";
+    if (video_name.ends_with(".gif")) {
+      out << fmt::format("<img class=\"video\" src=\"{}\" alt=\"video of the run\" width=\"960\">\n", xml_escape(video_name));
+    } else {
+      out << fmt::format("<video id=\"video\" src=\"{}\" controls muted preload=\"metadata\" width=\"960\"></video>\n",
+                         xml_escape(video_name));
+    }
+    out << "<p class=\"note\">Moves are slowed down to at least 2 s on screen and long idle stretches sped up; the "
+           "overlay and the banner give the time scale (docs/assumptions/renders.md A-RENDERS-12).</p>\n";
+  }
+
+  out << "<h2 id=\"over-time\">Over time</h2>\n";
+  if (run.rows() == 0) {
+    out << "<p class=\"note\">No trace was recorded.</p>\n";
+  } else {
+    out << overview_plots(in, columns(run, 0, run.rows()));
+  }
+
+  if (run.moves() > 0 && run.rows() > 0) {
+    out << "<h2 id=\"settling\">Settling per move (manual 3.5.2 Fig. 3)</h2>\n";
+    out << "<p class=\"note\">(b) target trajectory completed; (5) tolerance window; (3) waiting time; (f) positioning complete.</p>\n";
+    const double t_end = run.row(run.rows() - 1).t_s;
+    const std::vector<MoveRecord>& zoomed = run.zoomed_moves();
+    for (std::size_t i = 0; i < zoomed.size(); ++i) out << settling_plot(run, zoomed[i], i, t_end);
+    if (run.moves() > zoomed.size()) {
+      out << fmt::format("<p class=\"note\">Settling plots of moves {} to {} left out; the table lists them all.</p>\n",
+                         zoomed.size() + 1, run.moves());
+    }
+  }
+  out << io::html_page_close();
+}
+
+namespace {
+
+// The in-memory run, recorded like a running one.
+void record(const ReportInput& in, ReportRecorder& run) {
+  for (const TraceRow& r : in.trace) run.add_row(r);
+  for (const ReportCheck& ch : in.checks) run.add_check(ch);
+  for (const MoveRecord& m : in.moves) run.add_move(m);
 }
 
 } // namespace
 
 std::string report_html(const ReportInput& in, const std::string& video_name) {
-  const Columns c = columns(in.trace);
-  std::string o;
-  o.reserve(64 * 1024);
-  o += fmt::format("<h1>{}</h1>\n", xml_escape(in.scenario_name));
-  o += summary(in);
-
-  o += "<h2>Expectations</h2>\n";
-  if (in.checks.empty()) {
-    o += "<p class=\"note\">No expectations in this scenario.</p>\n";
-  } else {
-    o += "<table id=\"checks\">\n<tr><th>step</th><th class=\"l\">expectation</th><th class=\"l\">observed</th><th>result</th></tr>\n";
-    for (const ReportCheck& ch : in.checks) {
-      o += fmt::format("<tr><td>{}</td><td class=\"l\">{}</td><td class=\"l\">{}</td><td class=\"{}\">{}</td></tr>\n", xml_escape(ch.step),
-                       xml_escape(ch.description), xml_escape(ch.actual), ch.passed ? "okc" : "badc", ch.passed ? "pass" : "FAIL");
-    }
-    o += "</table>\n";
-  }
-
-  o += "<h2>Moves (manual 3.5.2)</h2>\n";
-  if (in.moves.empty()) {
-    o += "<p class=\"note\">No move command was executed.</p>\n";
-  } else {
-    o += "<table id=\"moves\">\n<tr><th>#</th><th>start [s]</th><th>target [deg]</th><th>travel time (1) [ms]</th>"
-         "<th>settling time (2) [ms]</th><th>positioning time (4) [ms]</th><th>max tracking error [deg]</th><th>completed</th></tr>\n";
-    for (std::size_t i = 0; i < in.moves.size(); ++i) {
-      const MoveRecord& m = in.moves[i];
-      o += fmt::format("<tr><td>{}</td><td>{:.3f}</td><td>{:.3f}</td><td>{}</td><td>{}</td><td>{}</td><td>{:.4f}</td><td class=\"{}\">{}</td></tr>\n", i + 1,
-                       m.start_s, m.target_deg, ms(m.travel_s), ms(m.settling_s.value_or(-1)), ms(m.positioning_s.value_or(-1)),
-                       m.max_tracking_error_deg, m.completed() ? "okc" : "badc", m.completed() ? "yes" : "no");
-    }
-    o += "</table>\n";
-  }
-
-  if (!video_name.empty()) {
-    o += "<h2>Video</h2>\n";
-    if (video_name.ends_with(".gif")) {
-      o += fmt::format("<img class=\"video\" src=\"{}\" alt=\"video of the run\" width=\"960\">\n", xml_escape(video_name));
-    } else {
-      o += fmt::format("<video id=\"video\" src=\"{}\" controls muted preload=\"metadata\" width=\"960\"></video>\n", xml_escape(video_name));
-    }
-    o += "<p class=\"note\">Moves are slowed down to at least 2 s on screen and long idle stretches sped up; the "
-         "overlay and the banner give the time scale (docs/assumptions/renders.md A-RENDERS-12).</p>\n";
-  }
-
-  o += "<h2 id=\"over-time\">Over time</h2>\n";
-  if (in.trace.empty()) {
-    o += "<p class=\"note\">No trace was recorded.</p>\n";
-  } else {
-    o += overview_plots(in, c);
-  }
-
-  if (!in.moves.empty() && !in.trace.empty()) {
-    o += "<h2 id=\"settling\">Settling per move (manual 3.5.2 Fig. 3)</h2>\n";
-    o += "<p class=\"note\">(b) target trajectory completed; (5) tolerance window; (3) waiting time; (f) positioning complete.</p>\n";
-    const std::size_t n = std::min(in.moves.size(), kMaxSettlingPlots);
-    for (std::size_t i = 0; i < n; ++i) o += settling_plot(in, c, i);
-    if (in.moves.size() > n) {
-      o += fmt::format("<p class=\"note\">Settling plots of moves {} to {} left out; the table lists them all.</p>\n", n + 1, in.moves.size());
-    }
-  }
-  return io::html_page("sreh-twin: " + in.scenario_name, report::page_head(), o);
+  ReportRecorder run;
+  record(in, run);
+  std::ostringstream out;
+  write_report_html(out, in, run, video_name);
+  return out.str();
 }
 
-fs::path write_report(const fs::path& dir, const ReportInput& in) {
+fs::path write_report(const fs::path& dir, const ReportSummary& in, ReportRecorder& run) {
   io::make_output_folder(dir.string());
   std::string video_name;
   if (!in.video_source.empty()) { // copied in whole, so the folder can move (issue 16)
@@ -264,9 +350,14 @@ fs::path write_report(const fs::path& dir, const ReportInput& in) {
     io::write_file_atomic((dir / video_name).string(), [&](std::ostream& out) { out << src.rdbuf(); });
   }
   const fs::path index = dir / "index.html";
-  const std::string html = report_html(in, video_name);
-  io::write_file_atomic(index.string(), [&](std::ostream& out) { out << html; });
+  io::write_file_atomic(index.string(), [&](std::ostream& out) { write_report_html(out, in, run, video_name); });
   return index;
+}
+
+fs::path write_report(const fs::path& dir, const ReportInput& in) {
+  ReportRecorder run;
+  record(in, run);
+  return write_report(dir, in, run);
 }
 
 } // namespace sreh

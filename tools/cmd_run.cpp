@@ -154,24 +154,35 @@ VideoOptions video_options(const RunArgs& a) {
   return v;
 }
 
-void write_report_dir(const RunArgs& a, const RunResult& r) {
-  ReportInput in;
-  in.scenario_name = r.name;
-  in.passed = r.passed;
-  for (const auto& c : r.checks) in.checks.push_back({c.description, c.passed, c.step, c.line, c.t_s, c.actual});
-  in.trace = r.trace;
-  in.moves = r.moves;
-  in.tracking_limit_deg = r.tracking_limit_deg;
-  in.command_line = command_line();
-  in.version = SREH_VERSION;
-  in.sim_time_s = r.sim_time_s;
-  in.max_tracking_error_deg = r.max_tracking_error_deg;
-  if (!a.video.empty()) in.video_source = a.video; // copied in: the folder stays movable
+// --report: the recorder took the rows, checks and moves as the run made
+// them (memory flat with run length, issue 12); here the rest of the page.
+void write_report_dir(const RunArgs& a, const RunResult& r, ReportRecorder& recorded) {
+  ReportSummary summary;
+  summary.scenario_name = r.name;
+  summary.passed = r.passed;
+  summary.tracking_limit_deg = r.tracking_limit_deg;
+  summary.command_line = command_line();
+  summary.version = SREH_VERSION;
+  summary.sim_time_s = r.sim_time_s;
+  summary.max_tracking_error_deg = r.max_tracking_error_deg;
+  if (!a.video.empty()) summary.video_source = a.video; // copied in: the folder stays movable
   try {
-    write_report(a.report, in);
+    write_report(a.report, summary, recorded);
   } catch (const std::exception& e) {
     throw InputError(fmt::format("--report {}: {}", a.report, e.what()));
   }
+}
+
+// Hands the run's checks and moves to the report as well as to the output.
+void record_for_report(RunOptions& options, ReportRecorder& report) {
+  options.check_sink = [prev = std::move(options.check_sink), &report](const CheckRecord& c) {
+    if (prev) prev(c);
+    report.add_check({c.description, c.passed, c.step, c.line, c.t_s, c.actual});
+  };
+  options.move_sink = [prev = std::move(options.move_sink), &report](const MoveRecord& m) {
+    if (prev) prev(m);
+    report.add_move(m);
+  };
 }
 #endif
 
@@ -269,13 +280,19 @@ int run_command(RunArgs a) {
       throw InputError(fmt::format("--trace {}: {}", a.trace, e.what()));
     }
   }
-  // The report plots the whole trace, so it keeps it in memory (and --trace
-  // is written from there after the run, the same bytes), and draws every
-  // check and move; without it, all that grows with run length streams.
-  const bool in_memory = !a.report.empty();
+  // Nothing that grows with run length stays in memory (issue 12): the
+  // trace goes to --trace as it is made; checks, failures and moves to the
+  // output's temporaries; with --report rows, checks and moves to the
+  // report's as well.
   std::optional<RunOutput> output;
+#ifdef SREH_WITH_RENDER
+  std::optional<ReportRecorder> report;
+#endif
   try {
-    output.emplace(a.json, in_memory);
+    output.emplace(a.json);
+#ifdef SREH_WITH_RENDER
+    if (!a.report.empty()) report.emplace();
+#endif
   } catch (const std::runtime_error& e) {
     throw InputError(e.what());
   }
@@ -283,10 +300,15 @@ int run_command(RunArgs a) {
     Progress progress(isatty(STDERR_FILENO) != 0);
     RunOptions options;
     options.limits = a.limits;
-    options.record_trace = in_memory;
     output->attach(options);
-    if (trace && !in_memory) options.trace_sink = [&](const TraceRow& row) { trace->row(row); };
 #ifdef SREH_WITH_RENDER
+    if (trace || report) {
+      options.trace_sink = [&](const TraceRow& row) {
+        if (trace) trace->row(row);
+        if (report) report->add_row(row);
+      };
+    }
+    if (report) record_for_report(options, *report);
     std::optional<VideoHook> video;
     if (!a.video.empty() || !a.frames.empty()) video.emplace();
     options.on_cycle = [&](const Twin& twin) {
@@ -303,6 +325,7 @@ int run_command(RunArgs a) {
       }
     }
 #else
+    if (trace) options.trace_sink = [&](const TraceRow& row) { trace->row(row); };
     options.on_cycle = [&](const Twin& twin) { progress.update(twin.time_s()); };
     result = run_scenario(scenario, options);
 #endif
@@ -310,12 +333,7 @@ int run_command(RunArgs a) {
     throw InputError(e.what());
   }
   try {
-    if (trace) {
-      if (in_memory) {
-        for (const TraceRow& row : result.trace) trace->row(row);
-      }
-      trace->commit();
-    }
+    if (trace) trace->commit();
     write_nvm(a, result);
   } catch (const InputError&) {
     throw;
@@ -323,7 +341,7 @@ int run_command(RunArgs a) {
     throw InputError(e.what());
   }
 #ifdef SREH_WITH_RENDER
-  if (!a.report.empty()) write_report_dir(a, result);
+  if (report) write_report_dir(a, result, *report);
 #endif
   output->print(std::cout, result);
   return result.passed ? 0 : 1;
@@ -365,7 +383,7 @@ SREH_REGISTER_COMMAND(10, [](CLI::App& app, int& exit_code) {
   cmd->add_option("--max-sim-s", l.max_sim_s, "Limit: simulated time of the run, s")
       ->capture_default_str()->check(CLI::Range(0.0, 1e9));
   cmd->add_option("--max-steps", l.max_steps, "Limit: executed steps (repeats unrolled)")->capture_default_str();
-  cmd->add_option("--max-checks", l.max_checks, "Limit: recorded checks (repeats unrolled; streamed to a temporary file, in memory only with --report)")->capture_default_str();
+  cmd->add_option("--max-checks", l.max_checks, "Limit: recorded checks (repeats unrolled; streamed to temporary files)")->capture_default_str();
   cmd->add_option("--max-trace-mb", args->max_trace_mb, "Limit: size of the --trace file, MB")
       ->capture_default_str()->check(CLI::Range(uint64_t{1}, uint64_t{1} << 30));
   cmd->add_option("--max-file-mb", args->max_file_mb, "Limit: size of the scenario file, MB")

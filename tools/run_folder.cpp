@@ -86,7 +86,7 @@ int run_folder(const FolderArgs& a) {
     const auto start = std::chrono::steady_clock::now();
     std::optional<RunOutput> output;
     try {
-      output.emplace(a.json, false, true);
+      output.emplace(a.json, true);
     } catch (const std::runtime_error& e) {
       throw InputError(e.what());
     }

@@ -2,8 +2,7 @@
 // --json one object (interfaces.md). Streamed (issue 12): the checks,
 // failures and moves of a long run are not held in memory but handed to
 // io::Spool temporaries by the runner and copied out at the end; the bytes
-// are those of the in-memory path. `in_memory` keeps them in the RunResult
-// instead (--report draws them).
+// are those of the in-memory path (scenarios/result_json_stream.hpp).
 #pragma once
 #include <iosfwd>
 #include <memory>
@@ -19,7 +18,7 @@ class RunOutput {
  public:
   // Throws std::runtime_error if a temporary file cannot be created.
   // `json_line`: --json as one compact line (`run DIR --json`, JSON Lines).
-  RunOutput(bool json, bool in_memory, bool json_line = false);
+  explicit RunOutput(bool json, bool json_line = false);
   void attach(RunOptions& options); // before the run; must outlive it
   // `run FILE`: the summary, or the --json object.
   void print(std::ostream& out, const RunResult& result);
@@ -29,9 +28,8 @@ class RunOutput {
   void print_file_line(std::ostream& out, const RunResult& result, const std::string& file, double wall_s);
 
  private:
-  void print_failures(std::ostream& out, const RunResult& result);
+  void print_failures(std::ostream& out);
   bool json_;
-  bool in_memory_;
   bool json_line_;
   std::optional<ResultJsonStream> json_stream_;
   std::optional<io::Spool> failure_lines_; // text: "  <failure>\n" each

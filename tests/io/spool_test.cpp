@@ -30,6 +30,22 @@ TEST(Spool, CopiesWhatWasWrittenAndStaysWritable) {
   EXPECT_EQ(again.str(), "head\n" + big + "tail");
 }
 
+TEST(Spool, ReadsBackWhatWasWrittenAtAnyOffsetEvenStillBuffered) {
+  Spool spool;
+  std::string big(100000, 'a');
+  for (std::size_t i = 0; i < big.size(); ++i) big[i] = static_cast<char>('a' + i % 26);
+  spool.stream() << big; // partly still in the write buffer
+  char got[6] = {};
+  spool.read_at(99995, got, 5);
+  EXPECT_EQ(std::string(got, 5), big.substr(99995, 5));
+  spool.read_at(0, got, 3);
+  EXPECT_EQ(std::string(got, 3), "abc");
+  spool.stream() << "tail"; // still writable after reading
+  spool.read_at(big.size(), got, 4);
+  EXPECT_EQ(std::string(got, 4), "tail");
+  EXPECT_THROW(spool.read_at(big.size() + 2, got, 3), std::runtime_error); // past the end
+}
+
 TEST(Spool, LeavesNoNameInTheTemporaryFolder) {
   const fs::path dir = fs::temp_directory_path() / ("sreh_spool_test_" + std::to_string(::getpid()));
   fs::create_directories(dir);

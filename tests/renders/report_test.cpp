@@ -192,6 +192,68 @@ TEST(Report, LongTracesAreDecimatedSoTheHtmlStaysSmall) {
   // 5 minutes at 1 ms: 300k rows.
   const std::string html = report_html(sample_run(0.001, 300.0));
   EXPECT_LT(html.size(), 800u * 1024u);
+  EXPECT_NE(html.find("(f) complete"), std::string::npos); // the settling zoom read back from the spooled rows
+}
+
+// Issue 12: a trace longer than kReportFullRateRows is read back in pieces
+// and only min/max rows are kept, yet every single-row extreme of every
+// plotted series still reaches the plots.
+TEST(Report, LongTraceKeepsEverySeriesExtremes) {
+  ReportInput in = sample_run(0.001, 300.0);
+  ASSERT_GT(in.trace.size(), kReportFullRateRows);
+  std::vector<TraceRow> rows(in.trace.begin(), in.trace.end());
+  rows[123457].velocity_dps = 4321.5;
+  rows[200001].temperature_C = 98.25;
+  rows[55555].torque_Nm = -0.4375;
+  rows[277777].supply_V = 17.125;
+  rows[99999].external_torque_Nm = 0.0625;
+  rows[250000].tracking_error_deg = -1.75;
+  in.trace = keep(std::move(rows));
+  const std::string html = report_html(in);
+  for (const char* extreme : {",4321.5", ",98.25", ",-0.4375", ",17.125", ",0.0625", ",-1.75"}) {
+    EXPECT_NE(html.find(extreme), std::string::npos) << extreme;
+  }
+  EXPECT_NE(html.find("external torque"), std::string::npos); // seen in a row the decimation need not keep
+}
+
+TEST(ReportRecorder, ReadsRowsBackAndFindsTimes) {
+  ReportRecorder run;
+  for (int k = 0; k < 10000; ++k) {
+    TraceRow r;
+    r.t_s = 0.002 * k;
+    r.position_deg = k;
+    run.add_row(r);
+  }
+  ASSERT_EQ(run.rows(), 10000u);
+  std::vector<TraceRow> got(3);
+  run.read_rows(4097, got);
+  EXPECT_EQ(got[0].position_deg, 4097);
+  EXPECT_EQ(got[2].position_deg, 4099);
+  EXPECT_EQ(run.lower_bound(1.0), 500u);  // t = 1.0 s is row 500
+  EXPECT_EQ(run.upper_bound(1.0), 501u);
+  EXPECT_EQ(run.lower_bound(-1), 0u);
+  EXPECT_EQ(run.upper_bound(1e9), 10000u);
+}
+
+TEST(ReportRecorder, CountsChecksAndMovesAndKeepsOnlyTheZoomedMoves) {
+  ReportRecorder run;
+  for (int i = 0; i < 30; ++i) {
+    MoveRecord m;
+    m.outcome = i % 3 ? MoveOutcome::Done : MoveOutcome::Error;
+    run.add_move(m);
+  }
+  run.add_check(check("a <b>", true));
+  run.add_check(check("c", false, "9", "x"));
+  EXPECT_EQ(run.moves(), 30u);
+  EXPECT_EQ(run.moves_completed(), 20u);
+  EXPECT_EQ(run.zoomed_moves().size(), kMaxSettlingPlots);
+  EXPECT_EQ(run.checks(), 2u);
+  EXPECT_EQ(run.checks_held(), 1u);
+  std::ostringstream rows, failed;
+  run.copy_check_rows(rows);
+  run.copy_failed_items(failed);
+  EXPECT_NE(rows.str().find("a &lt;b&gt;"), std::string::npos);
+  EXPECT_EQ(failed.str(), "<li>step 9 (line 7): c &mdash; got x at t = 0.250 s</li>\n");
 }
 
 TEST(Report, WrittenAtomicallyIntoTheDirectory) {
