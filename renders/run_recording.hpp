@@ -2,8 +2,10 @@
 // overlay shows, once per IO-Link cycle, so that the video can be rendered
 // after the run with a time map built from where the motion actually was
 // (slow motion per move, idle compressed: renders/time_map.hpp).
-// About 230 bytes per cycle (FrameInfo 208 + qpos; ~115 kB per simulated
-// second at 2 ms).
+// The samples go to a private temporary file (io::Spool), about 200 bytes
+// per cycle, and are read back in order while rendering: memory does not
+// grow with run length (issue 12). Held in memory: the stretches of motion
+// and the distinct step labels.
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -37,10 +39,10 @@ class RunRecording {
   // One sample per cycle, in time order. `d` is only read (qpos, mocap).
   // The row's moving / settling / velocity mark where the motion is.
   void add(const mjData_* d, const FrameInfo& info);
-  std::size_t samples() const { return info_.size(); }
-  double duration_s() const { return info_.empty() ? 0.0 : info_.back().row.t_s; }
+  std::size_t samples() const;
+  double duration_s() const; // the last sample's time
   // Stretches where a trajectory runs or settles or the flange turns.
-  std::vector<std::pair<double, double>> motion() const;
+  const std::vector<std::pair<double, double>>& motion() const;
 
   // Renders the video: `options.time_map` if set; otherwise constant
   // `options.slowmo` when `fixed_slowmo`, else the automatic time map.
@@ -50,8 +52,8 @@ class RunRecording {
 
  private:
   struct Impl;
+  class Reader;
   std::unique_ptr<Impl> impl_;
-  std::vector<FrameInfo> info_;
 };
 
 } // namespace sreh
