@@ -61,10 +61,10 @@ uint16_t Device::Impl::firmware_write(uint8_t sub, std::span<const uint8_t> data
     case kFirmwareCommandEnd: {
       const bool good = image_valid(fw_image);
       fw_image.clear();
-      if (!good) {
-        firmware_failed = true; // manual 9: from now on only boot mode
-        return kIsduInconsistentParameterSet;
-      }
+      // A bad image is refused and changes nothing more: if a chunk came,
+      // the first one already marked the application erased (boot mode from
+      // now on, manual 9); without any chunk the application is untouched.
+      if (!good) return kIsduInconsistentParameterSet;
       firmware_failed = false;
       // Restart in normal mode; the configuration is kept (manual 9).
       SensorReadings s;

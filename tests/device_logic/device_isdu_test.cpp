@@ -260,6 +260,27 @@ TEST(FirmwareUpdate, FailedUpdateStaysInBootModeAcrossPowerCycles_9) {
   EXPECT_FALSE(r.dev.in_boot_mode());
 }
 
+// Found by the isdu fuzz target (issue 12): an End command (17344.2 = 1)
+// with no chunk transferred was refused with 0x8041 yet marked the update
+// failed in the non-volatile memory, so a refused write changed the device
+// and the next power-on stayed in boot mode. Refused now, nothing changed
+// (A-FW-4; manual 9: only an overwritten application forces boot mode).
+TEST(FirmwareUpdate, EndWithoutAnyChunkIsRefusedAndChangesNothing_9) {
+  Rig r;
+  r.command(80);
+  r.command(81);
+  r.command(82);
+  ASSERT_TRUE(r.dev.in_boot_mode());
+  const std::vector<uint8_t> before = r.dev.save_nvm();
+  const uint8_t start = 0, end = 1;
+  ASSERT_TRUE(r.dev.isdu_write(Device::kFirmwareDataIndex, 2, {&start, 1}).ok());
+  EXPECT_EQ(r.dev.isdu_write(Device::kFirmwareDataIndex, 2, {&end, 1}).error, kIsduInconsistentParameterSet);
+  EXPECT_EQ(r.dev.isdu_write(Device::kFirmwareDataIndex, 2, {&end, 1}).error, kIsduInconsistentParameterSet);
+  EXPECT_EQ(r.dev.save_nvm(), before);
+  r.power_cycle();
+  EXPECT_FALSE(r.dev.in_boot_mode()); // the application was never overwritten
+}
+
 TEST(Persistence, ConfigurationSurvivesPowerCycleAndMemoryImage_6_2) {
   Rig r;
   ASSERT_TRUE(r.write_u(67, 4, 5000).ok());
