@@ -20,6 +20,7 @@ packages=(
   libmodbus-dev libcpp-httplib-dev libmosquitto-dev       # serve: Modbus TCP, HTTP/JSON, MQTT
   mosquitto mbpoll curl python3-pymodbus                  # serve's tests: broker and real PLC-style clients
   python3-serial-asyncio                                  # pymodbus' client package imports it even for TCP (only Recommended)
+  python3-yaml                                            # serve's OpenAPI test reads docs/api/openapi.yaml
   pybind11-dev python3-pybind11 python3-dev python3-numpy python3-pytest  # Python API (headers: python3-dev) and its tests, Debian's /usr/bin/python3
   parallel                                                # sharded sweeps and scenario runs
 )
