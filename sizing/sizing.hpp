@@ -62,6 +62,8 @@ struct SizingRequest {
   // along the axis, no torque), 90 = horizontal (an eccentric load's weight
   // loads the motor).
   double mounting_tilt_deg = 0.0;
+  // The module's constants (model card, `--model FILE`): issue 25.
+  ModuleModel module = default_module_model();
 };
 
 // What the motor supply sees (issue 17, A-SIZE-15), from the trace.
@@ -209,6 +211,6 @@ SizingResult search_gentlest(const SizingRequest& request, double load_gcm2);
 
 // Torque the module holds continuously at this ambient without reaching the
 // 70 degC warning minus the margin (A-SIZE-14), N m.
-double continuous_torque_Nm(double ambient_C, double thermal_margin_K);
+double continuous_torque_Nm(double ambient_C, double thermal_margin_K, const ModuleModel& module);
 
 } // namespace sreh::sizing
