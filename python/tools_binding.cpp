@@ -7,6 +7,7 @@
 #include <type_traits>
 
 #include "python/bindings.hpp"
+#include "scenarios/model_card_json.hpp"
 #include "scenarios/result_json.hpp"
 #include "scenarios/runner.hpp"
 #include "scenarios/scenario_parser.hpp"
@@ -122,6 +123,19 @@ pyb::dict sweep_arrays(const sizing::SweepResult& result) {
 
 void bind_tools(pyb::module_& m) {
   using pyb::arg;
+  m.def(
+      "model_card",
+      [](const std::optional<std::string>& model) {
+        try {
+          const ModelCard card = model ? apply_model_file(default_model_card(), *model) : default_model_card();
+          return to_python(nlohmann::json(model_card_json(card)));
+        } catch (const ModelCardError& e) {
+          throw input_error(std::string("model: ") + e.what());
+        }
+      },
+      pyb::arg("model") = pyb::none(),
+      "The module's model card (issue 25): {'constants': {NAME: {'value', 'unit', 'source', 'range'}}}, with a "
+      "model file's overrides applied when given.");
   m.def(
       "run_scenario",
       [](const std::string& path) {

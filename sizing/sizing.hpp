@@ -185,6 +185,10 @@ inline constexpr double kMaxThermalMargin_K = 45.0;
 inline constexpr double kTorqueMargin = 0.90;   // peak <= 90 % of capability
 inline constexpr double kTrackingMargin = 0.80; // max tracking error <= 80 % of index 87.1
 
+// `--model FILE` (issue 25): the model card with the file's overrides; ""
+// the card as it is. Throws SizingInputError naming the option, file and line.
+ModuleModel module_from_option(const std::string& model_path);
+
 // Checks the request against the module's limits; throws SizingInputError
 // with a message naming the option. Builds the load once to learn its
 // inertia (MJCF loads); returns it in g cm^2.

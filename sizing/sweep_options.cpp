@@ -34,6 +34,7 @@ const OptionSpec<W> kSweepOptions[] = {
     {"threads", "Worker threads 1 .. 64 [default: one per core]", &W::threads},
     {"csv", "Write the results to this CSV file (one row per grid point)", &W::csv},
     {"report", "Write an HTML report with plots into this folder", &W::report},
+    {"model", "Model card overrides (YAML as `sreh-twin model show` prints): the module's physical constants", &W::model},
     {"shard", "Run only shard i of N: i/N, auto (Slurm array), auto/N (Kubernetes indexed Job)", &W::shard},
     {"targets-s", "Target positioning times in s for the heaviest-load plot, comma separated [default: 8 spanning the feasible times]", &W::targets_s},
 };
@@ -76,6 +77,7 @@ SweepRequest make_sweep_request(const SweepOptions& a) {
   rq.base.timeout_ms = a.timeout_ms;
   rq.base.ambient_C = a.ambient_C;
   rq.base.cycles = a.cycles;
+  rq.base.module = module_from_option(a.model);
   if (!a.shard.empty()) {
     if (!a.report.empty()) throw SizingInputError("--shard with --report: merge the parts, then report the whole sweep");
     try {

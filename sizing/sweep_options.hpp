@@ -23,6 +23,7 @@ struct SweepOptions {
   int threads = 0; // 0: one per core
   std::string csv, report;
   std::string shard; // "i/N", "auto", "auto/N"; "" runs the whole grid
+  std::string model; // --model FILE: model card overrides (issue 25)
 };
 
 // Every option of `sweep`; list options take comma-separated values on the CLI.

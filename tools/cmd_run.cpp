@@ -53,6 +53,7 @@ struct RunArgs {
   uint64_t max_trace_mb = 2048;
   uint64_t max_file_mb = 4;
   std::string shard; // with a folder
+  std::string model; // --model FILE (issue 25)
 };
 
 // Progress on stderr, only for a person watching (a TTY) and only once a run
@@ -207,6 +208,8 @@ void check_size(const std::string& size) {
 std::vector<std::string> inputs_of(const RunArgs& a, const Scenario& s) {
   std::vector<std::string> in{a.scenario};
   if (s.device.nvm_image_path) in.push_back(*s.device.nvm_image_path);
+  if (!s.model_file.empty()) in.push_back(s.model_file);
+  if (!a.model.empty()) in.push_back(a.model);
   if (const auto* m = std::get_if<MjcfLoad>(&s.load)) in.push_back(m->path);
   return in;
 }
@@ -229,6 +232,7 @@ int run_folder_command(const RunArgs& a) {
   f.shard = a.shard;
   f.json = a.json;
   f.limits = a.limits;
+  f.model = a.model;
   f.limits.max_trace_bytes = a.max_trace_mb << 20;
   f.limits.max_file_bytes = static_cast<std::size_t>(a.max_file_mb << 20);
   return run_folder(f);
@@ -255,6 +259,7 @@ int run_command(RunArgs a) {
   Scenario scenario;
   try {
     scenario = parse_scenario_file(a.scenario, a.limits);
+    apply_command_line_model(scenario, a.model);
     check_run_bound(scenario, a.limits);
   } catch (const ScenarioError& e) {
     throw InputError(e.what());
@@ -377,6 +382,9 @@ SREH_REGISTER_COMMAND(10, [](CLI::App& app, int& exit_code) {
   cmd->add_option("--camera", args->camera, "Camera: default (fits module and load, 135 deg azimuth, 30 deg down) or top")
       ->capture_default_str();
   cmd->add_option("--report", args->report, "Write an HTML report folder (index.html, the video copied in) here");
+  cmd->add_option("--model", args->model,
+                  "Model card overrides (YAML, `sreh-twin model show` prints the format): the module's physical "
+                  "constants, applied over the scenario's own `model:`");
   cmd->add_option("--save-nvm", args->save_nvm, "Save the device's non-volatile memory at the end to this file");
   // Limits (issue 12, scenarios/README.md "Limits"): exceeding one is exit 2.
   Limits& l = args->limits;

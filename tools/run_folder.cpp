@@ -73,6 +73,7 @@ int run_folder(const FolderArgs& a) {
   for (const std::string& f : files) {
     try {
       scenarios.push_back(parse_scenario_file(f, a.limits));
+      apply_command_line_model(scenarios.back(), a.model);
       check_setup(scenarios.back(), a.limits);
     } catch (const ScenarioError& e) {
       if (last_error) std::cerr << "sreh-twin: " << io::escape_control(*last_error) << "\n";
@@ -115,7 +116,7 @@ int run_folder(const FolderArgs& a) {
     (result.passed ? held : failed) += 1;
     output->print_file_line(std::cout, result, files[i], wall_s);
     std::cout.flush(); // a line per file as it finishes (a batch log shows progress)
-    scenarios[i] = Scenario{}; // done: its memory goes
+    std::vector<Step>().swap(scenarios[i].steps); // done: its steps' memory goes
   }
   if (!a.json) {
     std::cout << fmt::format("{} of {} scenarios held, {} failed{}{}\n", held, files.size(), failed,
