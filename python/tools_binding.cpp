@@ -3,7 +3,9 @@
 // CSV's columns as numpy arrays. Keywords are the long options with '-' as '_'.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
+#include <chrono>
 #include <type_traits>
 
 #include "python/bindings.hpp"
@@ -125,9 +127,9 @@ void bind_tools(pyb::module_& m) {
   using pyb::arg;
   m.def(
       "model_card",
-      [](const std::optional<std::string>& model) {
+      [](const std::optional<std::filesystem::path>& model) {
         try {
-          const ModelCard card = model ? apply_model_file(default_model_card(), *model) : default_model_card();
+          const ModelCard card = model ? apply_model_file(default_model_card(), model->string()) : default_model_card();
           return to_python(nlohmann::json(model_card_json(card)));
         } catch (const ModelCardError& e) {
           throw input_error(std::string("model: ") + e.what());
@@ -140,13 +142,19 @@ void bind_tools(pyb::module_& m) {
       "run_scenario",
       [](const std::string& path) {
         RunResult result;
+        double wall_s = 0;
         try {
           const Scenario scenario = parse_scenario_file(path);
+          const auto start = std::chrono::steady_clock::now();
           result = run_scenario(scenario);
+          wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         } catch (const ScenarioError& e) {
           throw input_error(e.what());
         }
-        return to_python(to_json(result));
+        nlohmann::json j = to_json(result); // as `run --json`, with its measured wall time (issue 25)
+        j["wall_s"] = wall_s;
+        j["real_time_factor"] = wall_s > 0 ? result.sim_time_s / wall_s : 0.0;
+        return to_python(j);
       },
       arg("path"),
       "Run a scenario file; the result dict of `sreh-twin run --json` (passed, failures, moves, final, checks, ...). "

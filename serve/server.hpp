@@ -32,6 +32,7 @@ struct ServeOptions {
   std::string token_file;
   std::string save_nvm_dir;               // on shutdown: DIR/port<p>.nvm
   double duration_s = 0;                  // > 0: stop by itself after this wall time
+  std::string model;                      // --model FILE: model card overrides for every port (issue 25)
 };
 
 // Throws std::invalid_argument (bad option values, unreadable files: exit 2);

@@ -205,6 +205,15 @@ void check_size(const std::string& size) {
 }
 
 // The files a run reads: outputs may not be any of them.
+// run_scenario with its wall time (issue 25: `run --json` reports it and
+// the real-time factor; the simulation itself never reads a clock).
+RunResult timed_run(const Scenario& scenario, const RunOptions& options, double& wall_s) {
+  const auto start = std::chrono::steady_clock::now();
+  RunResult result = run_scenario(scenario, options);
+  wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
 std::vector<std::string> inputs_of(const RunArgs& a, const Scenario& s) {
   std::vector<std::string> in{a.scenario};
   if (s.device.nvm_image_path) in.push_back(*s.device.nvm_image_path);
@@ -301,6 +310,7 @@ int run_command(RunArgs a) {
   } catch (const std::runtime_error& e) {
     throw InputError(e.what());
   }
+  double wall_s = 0; // the simulation's own wall time: what real_time_factor compares with
   try {
     Progress progress(isatty(STDERR_FILENO) != 0);
     RunOptions options;
@@ -321,7 +331,7 @@ int run_command(RunArgs a) {
       progress.update(twin.time_s());
     };
     if (video) options.on_step = [&](const Step& step) { video->on_step(step); };
-    result = run_scenario(scenario, options);
+    result = timed_run(scenario, options, wall_s);
     if (video) {
       try {
         video->render(video_options(a), a.slowmo > 0);
@@ -332,7 +342,7 @@ int run_command(RunArgs a) {
 #else
     if (trace) options.trace_sink = [&](const TraceRow& row) { trace->row(row); };
     options.on_cycle = [&](const Twin& twin) { progress.update(twin.time_s()); };
-    result = run_scenario(scenario, options);
+    result = timed_run(scenario, options, wall_s);
 #endif
   } catch (const ScenarioError& e) {
     throw InputError(e.what());
@@ -348,7 +358,7 @@ int run_command(RunArgs a) {
 #ifdef SREH_WITH_RENDER
   if (report) write_report_dir(a, result, *report);
 #endif
-  output->print(std::cout, result);
+  output->print(std::cout, result, wall_s);
   return result.passed ? 0 : 1;
 }
 

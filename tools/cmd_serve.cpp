@@ -88,6 +88,8 @@ SREH_REGISTER_COMMAND(70, [](CLI::App& app, int& exit_code) {
                   "Modbus TCP becomes read-only");
   cmd->add_option("--save-nvm-dir", a->options.save_nvm_dir,
                   "On shutdown, save each port's non-volatile memory as DIR/port<P>.nvm");
+  cmd->add_option("--model", a->options.model,
+                  "Model card overrides for every port (YAML as `sreh-twin model show` prints): the module's constants");
   cmd->add_option("--duration-s", a->options.duration_s, "Stop by itself after this many wall-clock seconds")
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--print-modbus-map", a->print_map, "Print the Modbus register map and exit (binds nothing)");

@@ -75,9 +75,33 @@ const SchemaRow* schema_row(const std::string& name) {
   return nullptr;
 }
 
-std::string known_names() {
-  std::string out;
-  for (const SchemaRow& row : kSchema) out += (out.empty() ? "" : ", ") + std::string(row.name);
+// Edit distance, for "did you mean" on a mistyped name.
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+// "unknown constant 'x' (did you mean 'y'? ...)" or the whole list.
+std::string unknown_constant(const std::string& name) {
+  const SchemaRow* best = nullptr;
+  std::size_t best_distance = 4; // more edits than this: no guess
+  for (const SchemaRow& row : kSchema) {
+    const std::size_t d = edit_distance(name, row.name);
+    if (d < best_distance) best_distance = d, best = &row;
+  }
+  std::string out = "unknown constant '" + name + "' (";
+  if (best != nullptr) return out + "did you mean '" + best->name + "'? `sreh-twin model show` lists them all)";
+  for (const SchemaRow& row : kSchema) out += std::string(row.name) + (&row == std::end(kSchema) - 1 ? ")" : ", ");
   return out;
 }
 
@@ -214,7 +238,7 @@ ModelCard read_model_card(const std::string& path) {
   for (const auto& kv : f.constants()) {
     const std::string name = kv.first.Scalar();
     const SchemaRow* row = schema_row(name);
-    if (row == nullptr) f.fail(kv.first, "unknown constant '" + name + "' (the twin knows: " + known_names() + ")");
+    if (row == nullptr) f.fail(kv.first, unknown_constant(name));
     if (card.find(name) != nullptr) f.fail(kv.first, "constant '" + name + "' given twice");
     ModelConstant c{name, 0, "", "", 0, 0};
     read_entry(f, kv.first, kv.second, c, true);
@@ -236,7 +260,7 @@ ModelCard apply_model_file(const ModelCard& base, const std::string& path) {
     auto it = std::find_if(card.constants.begin(), card.constants.end(),
                            [&](const ModelConstant& c) { return c.name == name; });
     if (it == card.constants.end()) {
-      f.fail(kv.first, "unknown constant '" + name + "' (`sreh-twin model show` lists them: " + known_names() + ")");
+      f.fail(kv.first, unknown_constant(name));
     }
     if (std::find(seen.begin(), seen.end(), name) != seen.end()) f.fail(kv.first, "constant '" + name + "' given twice");
     seen.push_back(name);
