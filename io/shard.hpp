@@ -8,10 +8,13 @@
 
 namespace sreh::io {
 
-// "i/N", "auto" (Slurm array: i = SLURM_ARRAY_TASK_ID - SLURM_ARRAY_TASK_MIN + 1,
-// N = SLURM_ARRAY_TASK_COUNT) or "auto/N" (Kubernetes indexed Job:
-// i = JOB_COMPLETION_INDEX + 1), 1 <= i <= N <= 100000. `env` looks a
-// variable up (nullptr: unset). Throws std::invalid_argument naming --shard.
+// "i/N", "auto" (Slurm array: i = (SLURM_ARRAY_TASK_ID - SLURM_ARRAY_TASK_MIN)
+// / SLURM_ARRAY_TASK_STEP + 1, N = SLURM_ARRAY_TASK_COUNT; refused unless the
+// array's ids are MIN, MIN + STEP, ..., MAX) or "auto/N" (Kubernetes indexed
+// Job: i = JOB_COMPLETION_INDEX + 1), 1 <= i <= N <= 100000. Rerunning one
+// task of an array 1-N: "$SLURM_ARRAY_TASK_ID/N" (a one-task array is 1/1 to
+// "auto"). `env` looks a variable up (nullptr: unset). Throws
+// std::invalid_argument naming --shard and the value.
 std::pair<std::size_t, std::size_t> parse_shard(const std::string& text, const char* (*env)(const char*));
 
 // The items of shard i of N among `total` (1-based i): the contiguous block

@@ -4,6 +4,7 @@
 // sweep ran (infeasible points are results, listed in the CSV), 2 bad input.
 #include <unistd.h>
 
+#include <charconv>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -12,6 +13,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/output_path.hpp"
+#include "io/text.hpp"
 #include "sizing/sweep.hpp"
 
 #include <fmt/format.h>
@@ -45,6 +47,18 @@ int sweep_command(const sizing::SweepOptions& a) {
   return 0;
 }
 
+// CLI11's Range says "Value  not in range" for `--threads "$SLURM_CPUS_PER_TASK"`
+// with the variable unset (issue 31): name the value and the way out.
+std::string check_threads(const std::string& value) {
+  int n = 0;
+  const auto r = std::from_chars(value.data(), value.data() + value.size(), n);
+  if (r.ec == std::errc() && r.ptr == value.data() + value.size() && n >= 1 && n <= 64) return "";
+  return fmt::format("'{}' is not a whole number 1 .. 64{}", io::escape_control(value),
+                     value.empty() ? " (an unset variable such as SLURM_CPUS_PER_TASK? leave --threads out: the default "
+                                     "is SLURM_CPUS_PER_TASK if set, else the CPUs this process may use)"
+                                   : "");
+}
+
 int merge_command(const std::string& csv, const std::vector<std::string>& parts) {
   try {
     io::check_outputs({{"--csv", csv, io::OutputKind::File}}, parts); // the one output rule (issue 12)
@@ -65,14 +79,14 @@ SREH_REGISTER_COMMAND(31, [](CLI::App& app, int& exit_code) {
   CLI::App* cmd = app.add_subcommand(
       "sweep", "Sizing over a grid of loads x angles x voltages (x speeds): CSV and plots (exit 0 ran, 2 bad input)");
   add_table_options(cmd, sizing::sweep_option_table(), *a);
-  cmd->get_option("--threads")->check(CLI::Range(1, 64));
+  cmd->get_option("--threads")->check(CLI::Validator(check_threads, "1..64"));
   // `sweep merge --csv OUT PART...` (issue 17): the grid options are then
   // not needed, so they are checked in the callback rather than by CLI11.
   cmd->get_option("--loads-gcm2")->required(false);
   cmd->get_option("--angles-deg")->required(false);
   auto parts = std::make_shared<std::vector<std::string>>();
   auto merged = std::make_shared<std::string>();
-  CLI::App* merge = cmd->add_subcommand("merge", "Join the CSVs of `sweep --shard i/N` into the unsharded CSV (byte-identical)");
+  CLI::App* merge = cmd->add_subcommand("merge", "Join the CSVs of `sweep --shard i/N` (one or more) into the unsharded CSV (byte-identical)");
   merge->add_option("--csv", *merged, "Write the merged CSV here")->required();
   merge->add_option("parts", *parts, "The part CSVs, any order")->required();
   merge->callback([parts, merged, &exit_code] { exit_code = merge_command(*merged, *parts); });
