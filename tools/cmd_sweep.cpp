@@ -27,8 +27,10 @@ namespace {
 
 int sweep_command(const sizing::SweepOptions& a) {
   sizing::SweepResult result;
+  int threads = 0;
   try {
     sizing::SweepRequest rq = sizing::make_sweep_request(a);
+    threads = rq.threads;
     // Progress for a person watching only (stderr a TTY); never on stdout.
     if (isatty(STDERR_FILENO) != 0) {
       rq.progress = [](std::size_t done, std::size_t total) {
@@ -43,7 +45,9 @@ int sweep_command(const sizing::SweepOptions& a) {
   }
   std::size_t feasible = 0;
   for (const auto& p : result.points) feasible += p.result.evaluation.feasible ? 1 : 0;
-  std::cout << fmt::format("{} points, {} feasible: {}\n", result.points.size(), feasible, a.csv);
+  // The thread count shows what the default found (issue 31: a batch job's CPUs, not the node's).
+  std::cout << fmt::format("{} points, {} feasible, {} thread{}: {}\n", result.points.size(), feasible, threads,
+                           threads == 1 ? "" : "s", a.csv);
   return 0;
 }
 

@@ -44,7 +44,10 @@ show() { tail -n 5 "$dir"/*/*.log >&2; }
 trap 'show; slurm_stop; rm -rf "$dir"' ERR
 
 # The threads came from --cpus-per-task (SLURM_CPUS_PER_TASK=1); the shard lines from the array.
-for i in 1 2 3; do grep -qx "# sreh-twin sweep shard $i/3 rows 2 of 6" "$dir/a1-3/part_$i.csv"; done
+for i in 1 2 3; do
+  grep -qx "2 points, 2 feasible, 1 thread: part_$i.csv" "$dir/a1-3/sweep_$i.log"
+  grep -qx "# sreh-twin sweep shard $i/3 rows 2 of 6" "$dir/a1-3/part_$i.csv"
+done
 cmp "$dir/whole.csv" "$dir/a1-3/sweep.csv" # merged by the dependent job
 grep -q "^3 parts merged" "$dir/a1-3/merge.log"
 sreh-twin sweep merge --csv "$dir/a5-9/sweep.csv" "$dir"/a5-9/part_*.csv > /dev/null
