@@ -29,7 +29,9 @@ int default_threads(const char* (*env)(const char*), int max) {
     throw std::invalid_argument("SLURM_CPUS_PER_TASK=" + escape_control(s) +
                                 ": expected a whole number >= 1 (the default of --threads)");
   }
-  return static_cast<int>(std::min<long long>(n, max));
+  // Never more than the CPUs we may run on: Slurm 22.05's srun no longer
+  // passes --cpus-per-task on to the step, which then runs bound to 1 CPU.
+  return static_cast<int>(std::min<long long>({n, usable_cpus(), max}));
 }
 
 } // namespace sreh::io

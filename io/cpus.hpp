@@ -6,9 +6,9 @@
 
 namespace sreh::io {
 
-// SLURM_CPUS_PER_TASK when set and non-empty (Slurm's grant for this task),
-// else the CPUs in this process's affinity mask (sched_getaffinity), else 1;
-// at most `max`. `env` looks a variable up (nullptr: unset). Throws
+// The CPUs in this process's affinity mask (sched_getaffinity), and fewer
+// if SLURM_CPUS_PER_TASK is set and non-empty (Slurm's grant for this task,
+// where Slurm does not bind tasks to CPUs); at least 1, at most `max`. `env` looks a variable up (nullptr: unset). Throws
 // std::invalid_argument naming the variable and its value if it is not a
 // whole number >= 1.
 int default_threads(const char* (*env)(const char*), int max);

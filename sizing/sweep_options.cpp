@@ -31,7 +31,7 @@ const OptionSpec<W> kSweepOptions[] = {
     {"timeout-ms", "Settling timeout in ms (index 64+n.7) [default: wait + 75 ms, >= 100 ms]", &W::timeout_ms},
     {"ambient-C", "Ambient temperature, degC", &W::ambient_C, false, true},
     {"cycles", "Back-and-forth cycles simulated per evaluation", &W::cycles, false, true},
-    {"threads", "Worker threads 1 .. 64 [default: SLURM_CPUS_PER_TASK if set, else the CPUs this process may use]", &W::threads},
+    {"threads", "Worker threads 1 .. 64 [default: the CPUs this process may use, fewer if SLURM_CPUS_PER_TASK says so]", &W::threads},
     {"csv", "Write the results to this CSV file (one row per grid point)", &W::csv},
     {"report", "Write an HTML report with plots into this folder", &W::report},
     {"shard", "Run only shard i of N and start the CSV with a shard line for `sweep merge`: i/N (rerun of one task of a Slurm array 1-N: $SLURM_ARRAY_TASK_ID/N), auto (Slurm array, FIRST-LAST[:STEP]), auto/N (Kubernetes indexed Job)", &W::shard},

@@ -59,7 +59,7 @@ std::string check_threads(const std::string& value) {
   if (r.ec == std::errc() && r.ptr == value.data() + value.size() && n >= 1 && n <= 64) return "";
   return fmt::format("'{}' is not a whole number 1 .. 64{}", io::escape_control(value),
                      value.empty() ? " (an unset variable such as SLURM_CPUS_PER_TASK? leave --threads out: the default "
-                                     "is SLURM_CPUS_PER_TASK if set, else the CPUs this process may use)"
+                                     "is the CPUs this process may use, fewer if SLURM_CPUS_PER_TASK says so)"
                                    : "");
 }
 

@@ -41,12 +41,15 @@ TEST(Cpus, FollowsTheAffinityMaskNotTheMachine) {
   EXPECT_EQ(usable_cpus(), 1);
   EXPECT_EQ(threads({}), 1);
   EXPECT_EQ(threads({{"SLURM_CPUS_PER_TASK", ""}}), 1); // set but empty: as unset
+  EXPECT_EQ(threads({{"SLURM_CPUS_PER_TASK", "2"}}), 1); // srun bound the step to 1 CPU of the 2 granted
   ASSERT_EQ(sched_setaffinity(0, sizeof saved, &saved), 0);
 }
 
-TEST(Cpus, SlurmCpusPerTaskWinsAndIsChecked) {
-  EXPECT_EQ(threads({{"SLURM_CPUS_PER_TASK", "3"}}), 3);
-  EXPECT_EQ(threads({{"SLURM_CPUS_PER_TASK", "128"}}), 64); // at most max
+TEST(Cpus, SlurmCpusPerTaskLimitsAndIsChecked) {
+  const int cpus = usable_cpus();
+  EXPECT_EQ(threads({{"SLURM_CPUS_PER_TASK", "1"}}), 1);
+  EXPECT_EQ(threads({{"SLURM_CPUS_PER_TASK", "3"}}), std::min(3, cpus));
+  EXPECT_EQ(threads({{"SLURM_CPUS_PER_TASK", "128"}}), std::min(64, cpus)); // never more than the CPUs, nor max
   EXPECT_EQ(threads({{"SLURM_CPUS_PER_TASK", "2"}}, 1), 1);
   for (const char* bad : {"0", "-2", "two", "2x", " 2"}) {
     try {

@@ -23,9 +23,9 @@ refused "^sreh-twin: --threads: '65' is not a whole number 1 \.\. 64$" "$bin" sw
 refused "^sreh-twin: --threads: 'two' is not a whole number" "$bin" sweep "${grid[@]}" --threads two --csv "$dir/out.csv"
 refused "^sreh-twin: SLURM_CPUS_PER_TASK=x2: expected a whole number >= 1 \(the default of --threads\)$" \
   env SLURM_CPUS_PER_TASK=x2 "$bin" sweep "${grid[@]}" --csv "$dir/out.csv"
-# The default: SLURM_CPUS_PER_TASK, else the CPUs this process may use (one
-# under taskset), not the machine's; set but empty is as unset; --threads
-# given: the variable is not read.
+# The default: the CPUs this process may use (one under taskset), not the
+# machine's, and fewer if SLURM_CPUS_PER_TASK says so; set but empty is as
+# unset; --threads given: the variable is not read.
 cpus=$(nproc) # the affinity mask, as sched_getaffinity
 threads() { # threads N COMMAND...: the run says it used N threads
   local n=$1
@@ -36,7 +36,8 @@ threads() { # threads N COMMAND...: the run says it used N threads
 threads 1 taskset -c 0 "$bin" sweep "${grid[@]}" --csv "$dir/a.csv"
 threads "$cpus" env -u SLURM_CPUS_PER_TASK "$bin" sweep "${grid[@]}" --csv "$dir/b.csv"
 threads "$cpus" env SLURM_CPUS_PER_TASK= "$bin" sweep "${grid[@]}" --csv "$dir/c.csv"
-threads 3 env SLURM_CPUS_PER_TASK=3 "$bin" sweep "${grid[@]}" --csv "$dir/d.csv"
+threads 1 env SLURM_CPUS_PER_TASK=1 "$bin" sweep "${grid[@]}" --csv "$dir/d.csv"
+threads 1 env SLURM_CPUS_PER_TASK=3 taskset -c 0 "$bin" sweep "${grid[@]}" --csv "$dir/f.csv" # never more than the CPUs
 threads 1 env SLURM_CPUS_PER_TASK=x2 "$bin" sweep "${grid[@]}" --threads 1 --csv "$dir/e.csv"
-for f in b c d e; do cmp "$dir/a.csv" "$dir/$f.csv"; done
+for f in b c d e f; do cmp "$dir/a.csv" "$dir/$f.csv"; done
 echo "threads: errors name the value"
