@@ -90,7 +90,8 @@ def main():
             return re.sub(r"--loads-gcm2 \S+\s+--angles-deg \S+", SMALL_GRID, text)
 
         for index in range(n):
-            subprocess.run(["sh", "-c", local(script(sweep))], check=True, env=dict(env, JOB_COMPLETION_INDEX=str(index)))
+            subprocess.run(["sh", "-c", local(script(sweep))], check=True, env=dict(env, JOB_COMPLETION_INDEX=str(index)),
+                           stdout=subprocess.DEVNULL)
         subprocess.run(["sh", "-c", local(script(merge))], check=True, env=env, stdout=subprocess.DEVNULL)
         whole = os.path.join(out, "whole.csv")
         subprocess.run([sreh_twin, "sweep", *SMALL_GRID.split(), "--threads", "1", "--csv", whole], check=True,
