@@ -85,6 +85,15 @@ std::pair<std::size_t, std::size_t> parse_shard(const std::string& text, const c
   return {static_cast<std::size_t>(i), static_cast<std::size_t>(n)};
 }
 
+std::string one_task_array_note(const std::string& text, const char* (*env)(const char*)) {
+  const char* count = env("SLURM_ARRAY_TASK_COUNT");
+  const char* id = env("SLURM_ARRAY_TASK_ID");
+  if (text != "auto" || count == nullptr || std::string_view(count) != "1" || id == nullptr) return "";
+  const std::string i = escape_control(id);
+  return "note: --shard auto: a one-task Slurm array (task " + i +
+         ") is shard 1/1, the whole batch; to rerun task " + i + " of an array 1-N give --shard " + i + "/N";
+}
+
 std::pair<std::size_t, std::size_t> shard_range(std::size_t shard, std::size_t shards, std::size_t total) {
   return {(shard - 1) * total / shards, shard * total / shards};
 }

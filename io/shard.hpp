@@ -17,6 +17,11 @@ namespace sreh::io {
 // std::invalid_argument naming --shard and the value.
 std::pair<std::size_t, std::size_t> parse_shard(const std::string& text, const char* (*env)(const char*));
 
+// For "auto" in a one-task Slurm array, which is shard 1/1 (the whole
+// batch): a note naming the rerun form, since `sbatch --array=ID` is how one
+// failed task of a larger array is rerun. "" otherwise.
+std::string one_task_array_note(const std::string& text, const char* (*env)(const char*));
+
 // The items of shard i of N among `total` (1-based i): the contiguous block
 // [floor((i-1) total / N), floor(i total / N)); the N blocks cover every item once.
 std::pair<std::size_t, std::size_t> shard_range(std::size_t shard, std::size_t shards, std::size_t total);

@@ -6,6 +6,7 @@
 
 #include <charconv>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -13,6 +14,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/output_path.hpp"
+#include "io/shard.hpp"
 #include "io/text.hpp"
 #include "sizing/sweep.hpp"
 
@@ -43,6 +45,9 @@ int sweep_command(const sizing::SweepOptions& a) {
   } catch (const sizing::SizingInputError& e) {
     throw InputError(e.what());
   }
+  // After the run: bad input stays one line on stderr (exit 2).
+  const std::string note = io::one_task_array_note(a.shard, [](const char* name) -> const char* { return std::getenv(name); });
+  if (!note.empty()) std::cerr << "sreh-twin: " << note << "\n";
   std::size_t feasible = 0;
   for (const auto& p : result.points) feasible += p.result.evaluation.feasible ? 1 : 0;
   // The thread count shows what the default found (issue 31: a batch job's CPUs, not the node's).

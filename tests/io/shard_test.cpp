@@ -78,6 +78,18 @@ TEST(Shard, SlurmArrayWithAStepGivesEveryShardOnce) {
   EXPECT_EQ(parse("2/3", slurm(2, 2, 2, 1, 1)), std::make_pair(std::size_t{2}, std::size_t{3}));
 }
 
+TEST(Shard, OneTaskArrayNamesTheRerunForm) {
+  g_env = slurm(2, 2, 2, 1, 1); // sbatch --array=2
+  EXPECT_EQ(one_task_array_note("auto", fake_env),
+            "note: --shard auto: a one-task Slurm array (task 2) is shard 1/1, the whole batch; to rerun task 2 of "
+            "an array 1-N give --shard 2/N");
+  EXPECT_EQ(one_task_array_note("2/3", fake_env), "");
+  g_env = slurm(2, 1, 3, 1, 3);
+  EXPECT_EQ(one_task_array_note("auto", fake_env), "");
+  g_env = {};
+  EXPECT_EQ(one_task_array_note("auto", fake_env), "");
+}
+
 TEST(Shard, RefusesSlurmArraysThatAreNotArithmetic) {
   // --array=1,2,4: min 1, max 4, 3 tasks; no step makes 1, 1+s, 1+2s = 4.
   for (int step : {1, 2, 3}) {

@@ -37,8 +37,10 @@ head -1 "$dir/one.csv" | grep -qx "# sreh-twin sweep shard 1/1 rows 6 of 6"
 "$bin" sweep merge --csv "$dir/one_merged.csv" "$dir/one.csv" > /dev/null
 cmp "$dir/whole.csv" "$dir/one_merged.csv"
 SLURM_ARRAY_TASK_ID=7 SLURM_ARRAY_TASK_MIN=7 SLURM_ARRAY_TASK_MAX=7 SLURM_ARRAY_TASK_STEP=1 SLURM_ARRAY_TASK_COUNT=1 \
-  "$bin" sweep "${grid[@]}" --shard auto --csv "$dir/one_task.csv" > /dev/null
+  "$bin" sweep "${grid[@]}" --shard auto --csv "$dir/one_task.csv" > /dev/null 2> "$dir/note"
 cmp "$dir/one.csv" "$dir/one_task.csv"
+# ... with a note, since that is also what `sbatch --array=7` of a larger array looks like.
+grep -qx "sreh-twin: note: --shard auto: a one-task Slurm array (task 7) is shard 1/1, the whole batch; to rerun task 7 of an array 1-N give --shard 7/N" "$dir/note"
 # The rerun form for one task of an array 1-4: --shard $SLURM_ARRAY_TASK_ID/4.
 SLURM_ARRAY_TASK_ID=3 SLURM_ARRAY_TASK_MIN=3 SLURM_ARRAY_TASK_MAX=3 SLURM_ARRAY_TASK_STEP=1 SLURM_ARRAY_TASK_COUNT=1 \
   bash -c '"$0" sweep "${@}" --shard "$SLURM_ARRAY_TASK_ID/4" --csv "'"$dir"'/rerun.csv"' "$bin" "${grid[@]}" > /dev/null

@@ -43,6 +43,11 @@ SLURM_ARRAY_TASK_ID=2 SLURM_ARRAY_TASK_MIN=1 SLURM_ARRAY_TASK_MAX=4 SLURM_ARRAY_
 test "$status" -eq 2
 test ! -s "$dir/out"
 grep -q "not an arithmetic sequence" "$dir/err"
+# A one-task array runs the whole folder and names the rerun form.
+SLURM_ARRAY_TASK_ID=2 SLURM_ARRAY_TASK_MIN=2 SLURM_ARRAY_TASK_MAX=2 SLURM_ARRAY_TASK_STEP=1 SLURM_ARRAY_TASK_COUNT=1 \
+  "$bin" run "$folder" --json --shard auto > "$dir/one_task.jsonl" 2> "$dir/err" || true
+cmp "$dir/whole.jsonl" "$dir/one_task.jsonl"
+grep -q "to rerun task 2 of an array 1-N give --shard 2/N" "$dir/err"
 # The text lines name the same files in the same order.
 "$bin" run "$folder" > "$dir/whole.txt" || true
 grep -oE '^(PASS|FAIL)  [^ ]+' "$dir/whole.txt" | awk '{print $2}' > "$dir/text_files"
