@@ -1,4 +1,4 @@
-// How many worker threads a batch job should start by default (issue 31):
+// How many worker threads a batch job should start by default (issue 31, A-SHARD-3):
 // the CPUs this process may run on, not the machine's cores. Inside
 // `srun -c1`, a `taskset` or a container's cpuset, hardware_concurrency()
 // still counts every core of the node (64 on a big one) and oversubscribes.

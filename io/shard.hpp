@@ -1,4 +1,4 @@
-// Splitting a batch over the tasks of a job array (issue 17, A-SIZE-11):
+// Splitting a batch over the tasks of a job array (issues 17, 31; A-SIZE-11, A-SHARD-1, A-SHARD-2):
 // `sweep --shard` (grid points) and `run DIR --shard` (scenario files) share
 // this one parser and one split.
 #pragma once
