@@ -8,9 +8,9 @@ namespace sreh::io {
 
 // The CPUs in this process's affinity mask (sched_getaffinity), and fewer
 // if SLURM_CPUS_PER_TASK is set and non-empty (Slurm's grant for this task,
-// where Slurm does not bind tasks to CPUs); at least 1, at most `max`. `env` looks a variable up (nullptr: unset). Throws
-// std::invalid_argument naming the variable and its value if it is not a
-// whole number >= 1.
+// where Slurm does not bind tasks to CPUs); at least 1, at most `max`.
+// `env` looks a variable up (nullptr: unset). Throws std::invalid_argument
+// naming the variable and its value if it is not a whole number >= 1.
 int default_threads(const char* (*env)(const char*), int max);
 
 // The CPUs in this process's affinity mask (>= 1).

@@ -44,7 +44,9 @@ std::pair<long long, long long> slurm_array_shard(const char* (*env)(const char*
   const long long count = env_int(env, "SLURM_ARRAY_TASK_COUNT", text);
   const std::string array = "Slurm array " + std::to_string(min) + "-" + std::to_string(max) + ":" +
                             std::to_string(step) + " with " + std::to_string(count) + " tasks";
-  if (count < 1 || count > 100000) throw bad(text, "N = SLURM_ARRAY_TASK_COUNT = " + std::to_string(count) + " is outside 1 .. 100000");
+  if (count < 1 || count > 100000) {
+    throw bad(text, "N = SLURM_ARRAY_TASK_COUNT = " + std::to_string(count) + " is outside 1 .. 100000");
+  }
   for (const long long v : {id, min, max, step}) {
     if (v < 0 || v > kMaxSlurmId) throw bad(text, array + " (task " + std::to_string(id) + "): not a Slurm array");
   }
@@ -69,7 +71,8 @@ std::pair<std::size_t, std::size_t> parse_shard(const std::string& text, const c
     n = *count;
     const long long index = env_int(env, "JOB_COMPLETION_INDEX", text);
     if (index < 0 || index >= n) {
-      throw bad(text, "JOB_COMPLETION_INDEX=" + std::to_string(index) + " is outside 0 .. N-1 = " + std::to_string(n - 1));
+      throw bad(text, "JOB_COMPLETION_INDEX=" + std::to_string(index) + " is outside 0 .. N-1 = " +
+                          std::to_string(n - 1));
     }
     i = index + 1;
   } else {

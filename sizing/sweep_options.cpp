@@ -85,7 +85,8 @@ SweepRequest make_sweep_request(const SweepOptions& a) {
     }
   }
   try { // not hardware_concurrency(): a Slurm task or a cpuset may use fewer CPUs than the node has (issue 31)
-    rq.threads = a.threads > 0 ? a.threads : io::default_threads([](const char* name) -> const char* { return std::getenv(name); }, 64);
+    rq.threads = a.threads > 0 ? a.threads
+                               : io::default_threads([](const char* n) -> const char* { return std::getenv(n); }, 64);
   } catch (const std::invalid_argument& e) {
     throw SizingInputError(e.what());
   }

@@ -46,7 +46,7 @@ int sweep_command(const sizing::SweepOptions& a) {
     throw InputError(e.what());
   }
   // After the run: bad input stays one line on stderr (exit 2).
-  const std::string note = io::one_task_array_note(a.shard, [](const char* name) -> const char* { return std::getenv(name); });
+  const std::string note = io::one_task_array_note(a.shard, [](const char* n) -> const char* { return std::getenv(n); });
   if (!note.empty()) std::cerr << "sreh-twin: " << note << "\n";
   std::size_t feasible = 0;
   for (const auto& p : result.points) feasible += p.result.evaluation.feasible ? 1 : 0;
@@ -95,7 +95,8 @@ SREH_REGISTER_COMMAND(31, [](CLI::App& app, int& exit_code) {
   cmd->get_option("--angles-deg")->required(false);
   auto parts = std::make_shared<std::vector<std::string>>();
   auto merged = std::make_shared<std::string>();
-  CLI::App* merge = cmd->add_subcommand("merge", "Join the CSVs of `sweep --shard i/N` (one or more) into the unsharded CSV (byte-identical)");
+  CLI::App* merge = cmd->add_subcommand(
+      "merge", "Join the CSVs of `sweep --shard i/N` (one or more) into the unsharded CSV (byte-identical)");
   merge->add_option("--csv", *merged, "Write the merged CSV here")->required();
   merge->add_option("parts", *parts, "The part CSVs, any order")->required();
   merge->callback([parts, merged, &exit_code] { exit_code = merge_command(*merged, *parts); });

@@ -38,6 +38,11 @@ std::string error_of(const std::string& text, std::map<std::string, std::string>
   return "(accepted)";
 }
 
+// The error for `text` in `env` contains `part`.
+bool says(const std::string& text, std::map<std::string, std::string> env, const std::string& part) {
+  return error_of(text, std::move(env)).find(part) != std::string::npos;
+}
+
 TEST(Shard, ParsesExplicitSlurmAndKubernetesForms) {
   EXPECT_EQ(parse("2/5"), std::make_pair(std::size_t{2}, std::size_t{5}));
   EXPECT_EQ(parse("1/1"), std::make_pair(std::size_t{1}, std::size_t{1}));
@@ -102,25 +107,24 @@ TEST(Shard, RefusesSlurmArraysThatAreNotArithmetic) {
       EXPECT_NE(e.find("--array=FIRST-LAST[:STEP] or give each task --shard i/N"), std::string::npos) << e;
     }
   }
-  EXPECT_NE(error_of("auto", slurm(6, 5, 9, 2, 3)).find("not an arithmetic sequence"), std::string::npos); // off the step
-  EXPECT_NE(error_of("auto", slurm(11, 5, 9, 2, 3)).find("not an arithmetic sequence"), std::string::npos); // past max
-  EXPECT_NE(error_of("auto", slurm(5, 5, 9, 0, 3)).find("not an arithmetic sequence"), std::string::npos);
+  EXPECT_TRUE(says("auto", slurm(6, 5, 9, 2, 3), "not an arithmetic sequence")); // off the step
+  EXPECT_TRUE(says("auto", slurm(11, 5, 9, 2, 3), "not an arithmetic sequence")); // past max
+  EXPECT_TRUE(says("auto", slurm(5, 5, 9, 0, 3), "not an arithmetic sequence"));
   // Each variable is needed, and named when missing or not a number.
-  for (const char* name : {"SLURM_ARRAY_TASK_ID", "SLURM_ARRAY_TASK_MIN", "SLURM_ARRAY_TASK_MAX", "SLURM_ARRAY_TASK_STEP",
-                           "SLURM_ARRAY_TASK_COUNT"}) {
+  for (const char* name : {"SLURM_ARRAY_TASK_ID", "SLURM_ARRAY_TASK_MIN", "SLURM_ARRAY_TASK_MAX",
+                           "SLURM_ARRAY_TASK_STEP", "SLURM_ARRAY_TASK_COUNT"}) {
     auto env = slurm(5, 5, 9, 2, 3);
     env.erase(name);
     EXPECT_EQ(error_of("auto", env), std::string("--shard auto: ") + name + " is not set");
     env[name] = "7x";
     EXPECT_EQ(error_of("auto", env), std::string("--shard auto: ") + name + "=7x is not an integer");
   }
-  EXPECT_NE(error_of("auto", slurm(5, 5, 9, 2, 0)).find("SLURM_ARRAY_TASK_COUNT = 0 is outside 1 .. 100000"), std::string::npos);
-  EXPECT_NE(error_of("auto", slurm(-1, -1, 1, 1, 3)).find("not a Slurm array"), std::string::npos);
+  EXPECT_TRUE(says("auto", slurm(5, 5, 9, 2, 0), "SLURM_ARRAY_TASK_COUNT = 0 is outside 1 .. 100000"));
+  EXPECT_TRUE(says("auto", slurm(-1, -1, 1, 1, 3), "not a Slurm array"));
   auto huge = slurm(5, 5, 9, 2, 3);
   huge["SLURM_ARRAY_TASK_MAX"] = "9223372036854775807"; // no overflow in the checks
-  EXPECT_NE(error_of("auto", huge).find("not a Slurm array"), std::string::npos);
-  EXPECT_NE(error_of("auto/3", {{"JOB_COMPLETION_INDEX", "9223372036854775807"}}).find("is outside 0 .. N-1 = 2"),
-            std::string::npos);
+  EXPECT_TRUE(says("auto", huge, "not a Slurm array"));
+  EXPECT_TRUE(says("auto/3", {{"JOB_COMPLETION_INDEX", "9223372036854775807"}}, "is outside 0 .. N-1 = 2"));
 }
 
 TEST(Shard, BlocksCoverEveryItemOnceInOrder) {
