@@ -32,8 +32,8 @@ submit() { # submit FOLDER SBATCH-ARGS...: prints the job id
   (cd "$1" && shift && sbatch --parsable --cpus-per-task=1 "$@")
 }
 j13=$(submit "$dir/a1-3" --array=1-3 "$sbatch_file" "${grid[@]}")
-merge=$(submit "$dir/a1-3" --dependency=afterok:"$j13" --kill-on-invalid-dep=yes --output=merge.log \
-  --wrap 'sreh-twin sweep merge --csv sweep.csv part_*.csv')
+submit "$dir/a1-3" --dependency=afterok:"$j13" --kill-on-invalid-dep=yes --output=merge.log \
+  --wrap 'sreh-twin sweep merge --csv sweep.csv part_*.csv' > /dev/null
 submit "$dir/a5-9" --array=5-9:2 "$sbatch_file" "${grid[@]}" > /dev/null
 submit "$dir/rerun" --array=2 --export=ALL,SHARDS=3 "$sbatch_file" "${grid[@]}" > /dev/null
 submit "$dir/run" --array=5-9:2 --output=run_%a.log \
