@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # Sourced by the Slurm tests (issue 31): a one-node Slurm cluster on
 # loopback from Debian's packages, started by hand (no systemd as PID 1 on
 # these machines), everything in one temporary folder, free ports, no
@@ -90,7 +91,7 @@ CONF
 }
 
 slurm_stop() {
-  [ -n "${SLURM_CONF:-}" ] && scancel --full --quiet --user="$(id -un)" > /dev/null 2>&1 || true
+  if [ -n "${SLURM_CONF:-}" ]; then scancel --full --quiet --user="$(id -un)" > /dev/null 2>&1 || true; fi
   local pid i
   for ((i = ${#SLURM_PIDS[@]} - 1; i >= 0; i--)); do # slurmd, slurmctld, then munged
     pid=${SLURM_PIDS[i]}

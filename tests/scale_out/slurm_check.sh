@@ -22,7 +22,8 @@ trap 'slurm_stop; rm -rf "$dir"' EXIT
 start=$SECONDS
 slurm_start "$dir/cluster"
 echo "cluster up in $((SECONDS - start)) s"
-export PATH="$(dirname "$bin"):$PATH" # the recipe calls `sreh-twin`
+PATH="$(dirname "$bin"):$PATH" # the recipe calls `sreh-twin`
+export PATH
 
 grid=(--loads-gcm2 0,2000,6000 --angles-deg 20,45 --speeds-dps 1500 --cycles 1)
 sreh-twin sweep "${grid[@]}" --threads 1 --csv "$dir/whole.csv" > /dev/null
