@@ -378,9 +378,10 @@ SREH_REGISTER_COMMAND(10, [](CLI::App& app, int& exit_code) {
   cmd->add_flag("--json", args->json,
                 "Print one JSON object with the results on stdout (a folder: one object per file and line, JSON Lines)");
   cmd->add_option("--shard", args->shard,
-                  "With a folder: run only block i of N of its files: i/N, auto (Slurm array: SLURM_ARRAY_TASK_ID - "
-                  "SLURM_ARRAY_TASK_MIN + 1 of SLURM_ARRAY_TASK_COUNT) or auto/N (Kubernetes indexed Job: "
-                  "JOB_COMPLETION_INDEX + 1)");
+                  "With a folder: run only block i of N of its files: i/N (rerun of one task of a Slurm array 1-N: "
+                  "$SLURM_ARRAY_TASK_ID/N), auto (Slurm array FIRST-LAST[:STEP]: (SLURM_ARRAY_TASK_ID - "
+                  "SLURM_ARRAY_TASK_MIN) / SLURM_ARRAY_TASK_STEP + 1 of SLURM_ARRAY_TASK_COUNT) or auto/N "
+                  "(Kubernetes indexed Job: JOB_COMPLETION_INDEX + 1)");
   cmd->add_option("--video", args->video, "Render a video of the run: .mp4 (H.264), .webm (VP8) or .gif");
   cmd->add_option("--fps", args->fps, "Video frames per second, 1 .. 240")->check(CLI::Range(1, 240))->capture_default_str();
   cmd->add_option("--size", args->size, "Video size WIDTHxHEIGHT in pixels (even numbers, 16 .. 4096)")->capture_default_str();

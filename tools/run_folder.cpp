@@ -123,6 +123,9 @@ int run_folder(const FolderArgs& a) {
                              errors ? fmt::format(", {} bad input", errors) : "",
                              shard_note(shard, shards, begin, end, all.size()));
   }
+  // After the runs: bad input found before them stays one line on stderr.
+  const std::string note = io::one_task_array_note(a.shard, getenv_ptr);
+  if (!note.empty()) std::cerr << "sreh-twin: " << note << "\n";
   return errors > 0 ? 2 : failed > 0 ? 1 : 0;
 }
 
