@@ -148,8 +148,8 @@ void Device::Impl::enter(State to, Event via) {
     hold_phys = encoder;
     setpoint = KinematicState{internal_counts_to_rad(encoder), 0, 0, 0};
     controller.reset(internal_counts_to_rad(encoder));
-    hold_set = 0;
-    tune_for_set(pd.parameter_set); // A-SM-6: the set the PLC has selected now
+    // A-SM-6: the set the PLC has selected now (set 0 for an invalid number).
+    tune_for_set(pd.parameter_set < param::kMotionSets ? pd.parameter_set : uint8_t{0});
     last_target_phys.reset(); // manual 3.4: first relative move from the actual position
     phase = MotionPhase::Hold;
   }

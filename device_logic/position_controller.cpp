@@ -68,7 +68,7 @@ double PositionController::update(const KinematicState& setpoint, double measure
   if (!winds_up) integral_ = std::clamp(integral_ + d_integral, lo, hi);
 
   if (gains_.delay_periods <= 0) return torque;
-  const int n = std::min(gains_.delay_periods, kMaxDelaySteps);
+  const int n = std::min(gains_.delay_periods, kMaxDelayPeriods);
   const double out = pending_[static_cast<std::size_t>(pending_head_)]; // computed n periods ago (A-CTRL-7)
   pending_[static_cast<std::size_t>(pending_head_)] = torque;
   pending_head_ = (pending_head_ + 1) % n;

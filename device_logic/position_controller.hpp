@@ -44,6 +44,8 @@ struct ControllerGains {
 };
 class PositionController {
  public:
+  static constexpr int kMaxDelayPeriods = 4; // the longest loop delay it holds (A-CTRL-7)
+
   PositionController() = default; // no gains yet: the device sets them from its DriveModel
   explicit PositionController(ControllerGains gains);
 
@@ -73,8 +75,7 @@ class PositionController {
   double vel_est_ = 0;     // measured velocity, filtered
   double sp_vel_ = 0;      // setpoint velocity through the same difference and filter
   double integral_ = 0;
-  static constexpr int kMaxDelaySteps = 4;
-  std::array<double, kMaxDelaySteps> pending_{}; // outputs of the last periods (loop delay, A-CTRL-7)
+  std::array<double, kMaxDelayPeriods> pending_{}; // outputs of the last periods (loop delay, A-CTRL-7)
   int pending_head_ = 0;
   bool primed_ = false;
   bool saturated_ = false;

@@ -1,10 +1,10 @@
 // The model card's schema and reader (issue 25, twin/model_card.hpp).
 #include "twin/model_card.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
-#include <algorithm>
 #include <fstream>
 #include <mutex>
 #include <sstream>
@@ -201,6 +201,10 @@ void read_entry(const CardFile& f, const YAML::Node& key, const YAML::Node& entr
   if (row.integer && c.value != std::floor(c.value)) f.fail(at, name + " must be a whole number, got " + shortest_number(c.value));
   if (row.sign == Sign::Positive ? !(c.value > 0) : !(c.value >= 0)) {
     f.fail(at, name + " must be " + (row.sign == Sign::Positive ? "> 0" : ">= 0") + ", got " + shortest_number(c.value));
+  }
+  if (name == "loop_delay" && c.value > PositionController::kMaxDelayPeriods) {
+    f.fail(at, "loop_delay must be at most " + std::to_string(PositionController::kMaxDelayPeriods) +
+                   " control periods (what the controller holds), got " + shortest_number(c.value));
   }
   if (c.value < c.range_lo || c.value > c.range_hi) {
     f.fail(at, name + " = " + shortest_number(c.value) + " " + c.unit + " is outside its range [" +

@@ -92,6 +92,8 @@ TEST(ModelCard, BadFilesNameFileLineAndConstant) {
   EXPECT_NE(error_of("constants:\n  coulomb_friction: {value: 0.004, range: [0.01, 0.001]}\n").find("lo 0.01 > hi 0.001"),
             std::string::npos);
   EXPECT_NE(error_of("constants:\n  loop_delay: 2.5\n").find("whole number"), std::string::npos);
+  EXPECT_NE(error_of("constants:\n  loop_delay: {value: 6, range: [0, 10]}\n").find("at most 4 control periods"),
+            std::string::npos);
   EXPECT_NE(error_of("constants:\n  coulomb_friction: abc\n").find("finite number, got 'abc'"), std::string::npos);
   EXPECT_NE(error_of("constants:\n  coulomb_friction: .nan\n").find("finite number"), std::string::npos);
   EXPECT_NE(error_of("constants:\n  coulomb_friction: 0.004\n  coulomb_friction: 0.005\n").find("given twice"),
