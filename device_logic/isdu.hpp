@@ -2,6 +2,8 @@
 // (ErrorCode and AdditionalCode as one 16-bit value, iolink.md).
 #pragma once
 #include <cstdint>
+#include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -36,5 +38,12 @@ struct IsduResult {
 
 inline IsduResult isdu_error(uint16_t code) { return IsduResult{code, {}}; }
 inline IsduResult isdu_data(std::vector<uint8_t> data) { return IsduResult{kIsduOk, std::move(data)}; }
+
+// The IO-Link name of an ISDU error code ("Parameter value out of range"
+// for 0x8030; iolink.md, IO-Link spec Annex C); "ISDU error" for a code
+// this device never returns.
+std::string_view isdu_error_name(uint16_t code);
+// "0x8030 (Parameter value out of range)": how every output names a refusal.
+std::string isdu_error_label(uint16_t code);
 
 } // namespace sreh

@@ -60,6 +60,7 @@ std::string bytes_of(const pyb::handle& value, const char* what) {
 PYBIND11_MODULE(_core, m) {
   using namespace sreh::py;
   m.doc() = "Compiled core of sreh_twin: the SREH-50-IOL digital twin (use the sreh_twin package).";
+  m.attr("__version__") = SREH_VERSION; // the release `sreh-twin --version` prints
   input_error_type() = pyb::reinterpret_borrow<pyb::object>(
       PyErr_NewExceptionWithDoc("sreh_twin.InputError",
                                 "Bad input (a file, an option, a value): what and where. The CLI exits 2 for it.",
@@ -69,17 +70,19 @@ PYBIND11_MODULE(_core, m) {
   pyb::dict ns;
   ns["base"] = isdu_base;
   // A small Python class: the IO-Link ISDU error code (manual 6, e.g. 0x8030) as .code.
-  pyb::exec(R"(
+  pyb::exec(R"PY(
 class IsduError(base):
     """An ISDU request refused by the device. ``code`` is the IO-Link error
     code (e.g. 0x8030 value out of range, 0x8011 index not available),
+    ``name`` its IO-Link name ("Parameter value out of range"),
     ``index`` / ``subindex`` the request."""
-    def __init__(self, code, index, subindex, message=None):
+    def __init__(self, code, index, subindex, message=None, name=None):
         self.code = int(code)
         self.index = int(index)
         self.subindex = int(subindex)
-        super().__init__(message or f"ISDU {index}.{subindex}: error 0x{self.code:04X}")
-)", ns);
+        self.name = name or "ISDU error"
+        super().__init__(message or f"ISDU {index}.{subindex}: error 0x{self.code:04X} ({self.name})")
+)PY", ns);
   isdu_error_type() = ns["IsduError"];
   isdu_error_type().attr("__module__") = "sreh_twin";
   m.attr("IsduError") = isdu_error_type();

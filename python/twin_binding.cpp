@@ -29,10 +29,13 @@ namespace {
 
 constexpr uint16_t kIndexSystemCommand = 2; // manual 6.6
 
+// "ISDU 65.1 refused: error 0x8030 (Parameter value out of range)"; .name
+// carries the IO-Link name alone (issue 29).
 [[noreturn]] void raise_isdu(uint16_t code, uint16_t index, uint8_t subindex) {
-  char text[96];
-  std::snprintf(text, sizeof text, "ISDU %u.%u refused: error 0x%04X", index, subindex, code);
-  PyErr_SetObject(isdu_error_type().ptr(), pyb::make_tuple(code, index, subindex, text).ptr());
+  const std::string text = "ISDU " + std::to_string(index) + "." + std::to_string(subindex) +
+                           " refused: error " + isdu_error_label(code);
+  PyErr_SetObject(isdu_error_type().ptr(),
+                  pyb::make_tuple(code, index, subindex, text, std::string(isdu_error_name(code))).ptr());
   throw pyb::error_already_set();
 }
 

@@ -20,7 +20,8 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-std::string hex_code(uint16_t code) { return fmt::format("0x{:04X}", code); }
+// "0x8030 (Parameter value out of range)": code and IO-Link name (issue 29).
+std::string hex_code(uint16_t code) { return isdu_error_label(code); }
 
 std::string bytes_hex(const std::vector<uint8_t>& data) {
   std::string s;

@@ -19,6 +19,7 @@
 #include "scenarios/runner.hpp"
 #include "scenarios/scenario_parser.hpp"
 #include "tools/command.hpp"
+#include "tools/junit_report.hpp"
 #include "tools/run_folder.hpp"
 #include "tools/run_output.hpp"
 #include "twin/plant.hpp"
@@ -54,6 +55,7 @@ struct RunArgs {
   uint64_t max_file_mb = 4;
   std::string shard; // with a folder
   std::string model; // --model FILE (issue 25)
+  std::string junit; // --junit FILE (issue 29)
 };
 
 // Progress on stderr, only for a person watching (a TTY) and only once a run
@@ -242,6 +244,7 @@ int run_folder_command(const RunArgs& a) {
   f.json = a.json;
   f.limits = a.limits;
   f.model = a.model;
+  f.junit = a.junit;
   f.limits.max_trace_bytes = a.max_trace_mb << 20;
   f.limits.max_file_bytes = static_cast<std::size_t>(a.max_file_mb << 20);
   return run_folder(f);
@@ -275,6 +278,7 @@ int run_command(RunArgs a) {
   }
   io::check_outputs({{"--trace", a.trace, io::OutputKind::File},
                      {"--save-nvm", a.save_nvm, io::OutputKind::File},
+                     {"--junit", a.junit, io::OutputKind::File},
                      {"--video", a.video, io::OutputKind::File},
                      {"--frames", a.frames, io::OutputKind::EmptyFolder},
                      {"--report", a.report, io::OutputKind::Folder}},
@@ -311,11 +315,13 @@ int run_command(RunArgs a) {
     throw InputError(e.what());
   }
   double wall_s = 0; // the simulation's own wall time: what real_time_factor compares with
+  JunitReport junit;
   try {
     Progress progress(isatty(STDERR_FILENO) != 0);
     RunOptions options;
     options.limits = a.limits;
     output->attach(options);
+    if (!a.junit.empty()) junit.begin_case(a.scenario, scenario.name);
 #ifdef SREH_WITH_RENDER
     if (trace || report) {
       options.trace_sink = [&](const TraceRow& row) {
@@ -331,6 +337,7 @@ int run_command(RunArgs a) {
       progress.update(twin.time_s());
     };
     if (video) options.on_step = [&](const Step& step) { video->on_step(step); };
+    if (!a.junit.empty()) junit.chain(options);
     result = timed_run(scenario, options, wall_s);
     if (video) {
       try {
@@ -342,6 +349,7 @@ int run_command(RunArgs a) {
 #else
     if (trace) options.trace_sink = [&](const TraceRow& row) { trace->row(row); };
     options.on_cycle = [&](const Twin& twin) { progress.update(twin.time_s()); };
+    if (!a.junit.empty()) junit.chain(options);
     result = timed_run(scenario, options, wall_s);
 #endif
   } catch (const ScenarioError& e) {
@@ -350,6 +358,10 @@ int run_command(RunArgs a) {
   try {
     if (trace) trace->commit();
     write_nvm(a, result);
+    if (!a.junit.empty()) {
+      junit.end_case(result, wall_s);
+      junit.write(a.junit);
+    }
   } catch (const InputError&) {
     throw;
   } catch (const std::runtime_error& e) {
@@ -393,6 +405,8 @@ SREH_REGISTER_COMMAND(10, [](CLI::App& app, int& exit_code) {
   cmd->add_option("--camera", args->camera, "Camera: default (fits module and load, 135 deg azimuth, 30 deg down) or top")
       ->capture_default_str();
   cmd->add_option("--report", args->report, "Write an HTML report folder (index.html, the video copied in) here");
+  cmd->add_option("--junit", args->junit,
+                  "Also write the result as JUnit XML for CI servers: one testcase per scenario (a folder: per file)");
   cmd->add_option("--model", args->model,
                   "Model card overrides (YAML, `sreh-twin model show` prints the format): the module's physical "
                   "constants, applied over the scenario's own `model:`");

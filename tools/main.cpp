@@ -54,6 +54,22 @@ constexpr const char* kExitCodes =
     "one line on stderr), 3 internal error (a bug: please report), 130 / 143 interrupted by SIGINT / SIGTERM "
     "(no output written, temporary files removed).";
 
+// No command, or one that does not exist (issue 29): say which there are.
+// Empty when the first argument is an option or a known command.
+std::string command_problem(const CLI::App& app, int argc, char** argv) {
+  std::string names;
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) {
+    names += (names.empty() ? "" : ", ") + sub->get_name();
+  }
+  if (argc < 2) return "give a command: " + names + " (sreh-twin COMMAND --help for its options)";
+  const std::string first = argv[1];
+  if (first.empty() || first[0] == '-') return {};
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) {
+    if (sub->get_name() == first) return {};
+  }
+  return "unknown command '" + first + "'; the commands are " + names;
+}
+
 // Error messages echo user input: one line, control characters escaped.
 int fail(int code, const std::string& what) {
   std::cerr << "sreh-twin: " << sreh::io::escape_control(what) << "\n";
@@ -92,6 +108,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
+    if (const std::string problem = command_problem(app, argc, argv); !problem.empty()) return fail(2, problem);
     return fail(2, e.what());
   } catch (const sreh::io::Interrupted& e) {
     return fail(e.exit_code(), e.what());

@@ -13,11 +13,13 @@
 #include <nlohmann/json.hpp>
 
 #include "io/interrupt.hpp"
+#include "io/output_path.hpp"
 #include "io/shard.hpp"
 #include "io/text.hpp"
 #include "scenarios/runner.hpp"
 #include "scenarios/scenario_parser.hpp"
 #include "tools/command.hpp"
+#include "tools/junit_report.hpp"
 #include "tools/run_output.hpp"
 
 namespace sreh::tools {
@@ -82,6 +84,8 @@ int run_folder(const FolderArgs& a) {
   }
   if (last_error) throw InputError(*last_error);
 
+  io::check_outputs({{"--junit", a.junit, io::OutputKind::File}}, files);
+  JunitReport junit;
   std::size_t held = 0, failed = 0, errors = 0;
   for (std::size_t i = 0; i < files.size(); ++i) {
     const auto start = std::chrono::steady_clock::now();
@@ -94,6 +98,10 @@ int run_folder(const FolderArgs& a) {
     RunOptions options;
     options.limits = a.limits;
     output->attach(options);
+    if (!a.junit.empty()) {
+      junit.begin_case(files[i], scenarios[i].name);
+      junit.chain(options);
+    }
     RunResult result;
     try {
       result = run_scenario(scenarios[i], options);
@@ -102,6 +110,7 @@ int run_folder(const FolderArgs& a) {
       // bad input; the others still run.
       ++errors;
       const std::string what = io::escape_control(e.what());
+      if (!a.junit.empty()) junit.end_case_with_error(what);
       if (a.json) {
         std::cout << nlohmann::json{{"file", files[i]}, {"passed", false}, {"error", what}}.dump(
                          -1, ' ', false, nlohmann::json::error_handler_t::replace)
@@ -114,6 +123,7 @@ int run_folder(const FolderArgs& a) {
     }
     const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     (result.passed ? held : failed) += 1;
+    if (!a.junit.empty()) junit.end_case(result, wall_s);
     output->print_file_line(std::cout, result, files[i], wall_s);
     std::cout.flush(); // a line per file as it finishes (a batch log shows progress)
     std::vector<Step>().swap(scenarios[i].steps); // done: its steps' memory goes
@@ -122,6 +132,13 @@ int run_folder(const FolderArgs& a) {
     std::cout << fmt::format("{} of {} scenarios held, {} failed{}{}\n", held, files.size(), failed,
                              errors ? fmt::format(", {} bad input", errors) : "",
                              shard_note(shard, shards, begin, end, all.size()));
+  }
+  if (!a.junit.empty()) {
+    try {
+      junit.write(a.junit);
+    } catch (const std::runtime_error& e) {
+      throw InputError(fmt::format("--junit {}: {}", a.junit, e.what()));
+    }
   }
   // After the runs: bad input found before them stays one line on stderr.
   const std::string note = io::one_task_array_note(a.shard, getenv_ptr);

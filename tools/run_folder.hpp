@@ -18,6 +18,7 @@ struct FolderArgs {
   bool json = false;  // JSON Lines: one `run FILE --json` object (+ "file") per line
   Limits limits;
   std::string model; // --model FILE: model card overrides for every scenario (issue 25)
+  std::string junit; // --junit FILE: JUnit XML of every file's run (issue 29)
 };
 
 // The scenario files of `dir` (paths as DIR/NAME), sorted; throws InputError

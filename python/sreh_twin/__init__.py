@@ -33,6 +33,7 @@ from ._core import (  # noqa: E402
     SWEEP_OPTIONS,
     models_dir,
     model_card,
+    __version__,
 )
 
 __all__ = [

@@ -3,6 +3,7 @@ table's types, refusals carrying the IO-Link code, the device unchanged."""
 import pytest
 
 import sreh_twin
+from conftest import cli
 
 
 def test_numeric_round_trip_and_factory_default():
@@ -96,3 +97,17 @@ def test_bad_values_are_input_errors_not_device_answers():
     with pytest.raises(TypeError):
         twin.isdu_write(65, 1, 1.5)
     assert issubclass(sreh_twin.InputError, ValueError)
+
+
+def test_isdu_error_carries_the_io_link_name():
+    """Issue 29: a refusal names its code the IO-Link way (iolink.md)."""
+    twin = sreh_twin.Twin()
+    with pytest.raises(sreh_twin.IsduError) as refused:
+        twin.isdu_write(65, 1, 60000)  # above 43000 (4300 deg/s)
+    assert refused.value.code == 0x8030
+    assert refused.value.name == "Parameter value out of range"
+    assert "0x8030 (Parameter value out of range)" in str(refused.value)
+
+
+def test_version_is_the_command_lines():
+    assert cli("--version").stdout.split()[1] == sreh_twin.__version__
