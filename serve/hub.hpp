@@ -18,6 +18,8 @@
 
 namespace sreh::serve {
 
+class StateDir; // serve/state_dir.hpp
+
 // What a port shows beyond the twin itself: the faults injected so far.
 struct FaultState {
   bool link_up = true;
@@ -111,23 +113,39 @@ class Hub {
   // Runs one cycle of every port now (tests, without the pacing thread).
   void step_all();
 
+  // --state-dir (issue 27): set before start(). persist(p) writes port p's
+  // memory image and flange angle if they changed since the last write; the
+  // fronts call it after every request that may have changed them, before
+  // they answer, so an answered write survives a SIGKILL. A saver thread
+  // also calls it every kPersistEvery (counters, a flange that moved) and
+  // stop() once more for every port.
+  void set_state_dir(StateDir* state) { state_ = state; }
+  void persist(int p);
+  static constexpr std::chrono::milliseconds kPersistEvery{200};
+
  private:
   void pace();
   void after_cycle(Port& port);
   void run_port_cycle(Port& port);
+  void save_loop();
 
   HubOptions options_;
   std::vector<std::unique_ptr<Port>> ports_;
   std::atomic<bool> running_{false};
   std::thread thread_;
   mutable std::mutex stats_mutex_;
-  std::vector<uint32_t> jitter_hist_; // 1 us buckets, last one open-ended
+  std::vector<uint32_t> jitter_hist_; // 1 us buckets up to 100 ms
+  std::vector<double> jitter_over_us_; // the rare cycles later than that, exactly (bounded)
   uint64_t cycles_ = 0, late_ = 0;
   double jitter_max_us_ = 0;
   double busy_s_ = 0;
   std::atomic<bool> realtime_{false};
   std::chrono::steady_clock::time_point stats_start_;
   uint64_t stats_cycle0_ = 0;
+  StateDir* state_ = nullptr;
+  std::thread saver_;
+  std::mutex saver_mutex_;
+  std::condition_variable saver_cv_;
 };
 
 } // namespace sreh::serve

@@ -345,8 +345,12 @@ Json parse_body(const std::string& body) {
   Json j;
   try {
     j = Json::parse(body);
-  } catch (const std::exception& e) {
-    throw RequestError(400, std::string("malformed JSON: ") + e.what());
+  } catch (const Json::parse_error& e) {
+    // Position only: the parser's own message quotes the input (a token in it
+    // would reach MQTT's errors topic, issue 27).
+    throw RequestError(400, fmt::format("malformed JSON at byte {}", e.byte));
+  } catch (const std::exception&) {
+    throw RequestError(400, "malformed JSON");
   }
   if (!j.is_object()) throw RequestError(400, "expected a JSON object");
   return j;
