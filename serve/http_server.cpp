@@ -24,6 +24,7 @@ namespace {
 
 constexpr int kMaxStreams = 16;       // concurrent event streams; more get 503 at once
 constexpr std::size_t kMaxThreads = 256; // connection threads (http_workers.hpp); plain requests keep > 200
+constexpr int kListenBacklog = 256;
 constexpr const char* kJsonType = "application/json";
 
 struct Route {
@@ -97,15 +98,17 @@ struct Front<HttpOptions>::Impl {
   std::atomic<int> streams{0};
 
   std::vector<std::regex> route_patterns; // kRoutes[i].pattern, for 405
+  int listen_fd = -1;                     // cpp-httplib's listening socket (owned by it)
 
   Impl(Hub& h, const HttpOptions& o) : hub(h), options(o) {
     for (const auto& r : kRoutes) route_patterns.emplace_back(r.pattern);
     server.new_task_queue = [] { return new ConnectionThreads(kMaxThreads); };
     // SO_REUSEADDR only: cpp-httplib's default adds SO_REUSEPORT, which let a
     // second serve share the port silently (issue 27).
-    server.set_socket_options([](socket_t sock) {
+    server.set_socket_options([this](socket_t sock) {
       const int yes = 1;
       setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+      listen_fd = sock;
     });
     server.set_payload_max_length(o.max_body_bytes); // larger bodies: 413
     server.set_read_timeout(2, 0);
@@ -143,6 +146,9 @@ struct Front<HttpOptions>::Impl {
                                            errno == EADDRINUSE ? "address in use"
                                            : errno != 0       ? std::strerror(errno)
                                                               : "cannot bind"));
+    // cpp-httplib listens with a backlog of 5: a burst of clients then waits
+    // for SYN retries (1 s, 2 s, ...). listen() again only enlarges it.
+    if (listen_fd >= 0) ::listen(listen_fd, kListenBacklog);
   }
 
   // "GET, PUT" for a path some route serves with other methods; "" if none does.

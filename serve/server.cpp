@@ -11,6 +11,7 @@
 
 #include "device_logic/units.hpp"
 #include "io/atomic_file.hpp"
+#include "io/interrupt.hpp"
 #include "scenarios/runner.hpp"
 #include "scenarios/scenario_parser.hpp"
 #include "serve/http_server.hpp"
@@ -170,6 +171,9 @@ int run_serve(const ServeOptions& o, std::ostream& out, std::ostream& err) {
   }
 
   block_shutdown_signals(); // before any thread starts, so only sigtimedwait sees them
+  // A signal before that went to the batch commands' handler (io/interrupt):
+  // stop now, cleanly, or the twins' cycles would throw io::Interrupted.
+  if (io::interrupt_signal() != 0) return 0;
   ModbusOptions mo;
   mo.host = o.modbus.host;
   mo.port = o.modbus.port;

@@ -68,7 +68,8 @@ for c in silent:  # the server closes them after its read timeout
 # ---- 405 for a wrong method, 404 for no such path ----
 code, body = s.curl("DELETE", "/v1/ports/1")
 check(code == 405 and "error" in body, "DELETE /v1/ports/1 -> %d %s" % (code, body))
-out = subprocess.run(["curl", "-s", "-i", "-X", "POST", "-m", "10", s.http + "/v1/ports/1/processdata"],
+out = subprocess.run(["curl", "-s", "-i", "-X", "POST", "-m", "10", "-H", "Content-Type: application/json",
+                      "--data", "{}", s.http + "/v1/ports/1/processdata"],
                      capture_output=True, text=True, timeout=15).stdout
 check(out.startswith("HTTP/1.1 405") and "Allow: GET" in out, "POST processdata: %s" % out[:200])
 check(s.curl("GET", "/v1/nothing")[0] == 404, "unknown path: 404")
