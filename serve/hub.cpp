@@ -147,6 +147,17 @@ void Hub::run_port_cycle(Port& port) {
   if (!port.failure.empty()) return;
   try {
     port.twin.run_cycle();
+    // A replacement module got through start-up: the master restores its backup.
+    if (port.ds_download_pending && port.twin.iolink_led() == IoLinkLedMode::Operate) {
+      port.ds_download_pending = false;
+      port.ds_last_error = port.ds_backup ? ds_download(port.twin, *port.ds_backup) : 0;
+      push_event(port, "data_storage",
+                 nlohmann::json{{"t_s", port.twin.time_s()},
+                                {"action", port.ds_backup ? "download" : "none (no backup)"},
+                                {"iolink_error", port.ds_last_error == 0 ? nlohmann::json(nullptr)
+                                                                         : nlohmann::json(hex16(port.ds_last_error))}}
+                     .dump());
+    }
     after_cycle(port);
   } catch (const std::exception& e) {
     port.failure = e.what();
@@ -165,7 +176,19 @@ void Hub::start() {
   if (running_.exchange(true)) return;
   reset_stats();
   thread_ = std::thread([this] { pace(); });
-  if (state_ != nullptr) saver_ = std::thread([this] { save_loop(); });
+  saver_ = std::thread([this] { save_loop(); });
+}
+
+void Hub::ds_startup() {
+  for (auto& p : ports_) {
+    std::lock_guard lock(p->mutex);
+    if (!p->ds_backup || p->ds_backup->checksum != ds_checksum(p->twin) || ds_upload_requested(p->twin)) {
+      if (auto b = ds_upload(p->twin)) {
+        p->ds_backup = std::move(b);
+        ++p->ds_generation;
+      }
+    }
+  }
 }
 
 void Hub::stop() {
@@ -192,8 +215,15 @@ void Hub::persist(int p) {
     nvm = port.twin.save_nvm();
     flange_deg = rad_to_deg(port.twin.plant().angle_rad());
   });
+  std::optional<DsBackup> ds;
+  uint64_t ds_generation = 0;
+  with_port(p, [&](Port& port) {
+    ds_generation = port.ds_generation;
+    if (port.ds_backup) ds = port.ds_backup;
+  });
   try {
     state_->save(p, nvm, flange_deg); // outside the port lock: the clock goes on while the file is written
+    if (ds) state_->save_ds(p, *ds, ds_generation);
   } catch (const std::exception& e) {
     static std::atomic<bool> told{false}; // a full disk: say it once, keep serving
     if (!told.exchange(true)) std::cerr << "sreh-twin serve: warning: " << e.what() << "\n";
@@ -207,7 +237,16 @@ void Hub::save_loop() {
     saver_cv_.wait_for(lock, kPersistEvery, [this] { return !running_.load(); });
     if (!running_.load()) break;
     lock.unlock();
-    for (int p = 1; p <= port_count(); ++p) persist(p);
+    for (int p = 1; p <= port_count(); ++p) {
+      with_port(p, [](Port& port) { // the device asks the master to back its set up (manual 8)
+        if (port.failure.empty() && port.twin.powered() && ds_upload_requested(port.twin))
+          if (auto b = ds_upload(port.twin)) {
+            port.ds_backup = std::move(b);
+            ++port.ds_generation;
+          }
+      });
+      persist(p);
+    }
     lock.lock();
   }
 }

@@ -10,10 +10,12 @@
 #include <deque>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "serve/ds_master.hpp"
 #include "twin/twin.hpp"
 
 namespace sreh::serve {
@@ -28,6 +30,7 @@ struct FaultState {
   bool flange_blocked = false;
   double ambient_C = 25.0;
   uint32_t power_cycles = 0;
+  uint32_t device_replacements = 0;
 };
 
 // One entry of a port's event stream (SSE, MQTT): `type` is "state",
@@ -78,6 +81,13 @@ class Hub {
     std::vector<uint8_t> last_detailed_status; // index 37
     bool first = true;
     std::string failure; // the plant failed (MuJoCo instability): the port stops, the server goes on
+    // Data Storage at the master (serve/ds_master.hpp): the backup, whether it
+    // changed since it was written, and a download owed to a replacement
+    // module (made in its first cycle in OPERATE).
+    std::optional<DsBackup> ds_backup;
+    uint64_t ds_generation = 0;
+    bool ds_download_pending = false;
+    uint16_t ds_last_error = 0; // IO-Link code of the last refused download, 0 if none
   };
 
   Hub(const std::vector<TwinConfig>& configs, const HubOptions& options);
@@ -121,6 +131,13 @@ class Hub {
   // stop() once more for every port.
   void set_state_dir(StateDir* state) { state_ = state; }
   void persist(int p);
+  // The master's Data Storage start-up for every port (before start()): a
+  // backup read from the state folder is kept; without one, or when the
+  // module's set differs (serve restarted: the same module, its memory
+  // kept), the master uploads. While running, an upload request of the
+  // device (3.2 bit 7, e.g. after ParamDownloadStore) is served within
+  // kPersistEvery.
+  void ds_startup();
   static constexpr std::chrono::milliseconds kPersistEvery{200};
 
  private:

@@ -165,6 +165,11 @@ int run_serve(const ServeOptions& o, std::ostream& out, std::ostream& err) {
     }
   }
 
+  // Data Storage at the master (manual 8): the backup kept, or a first upload.
+  for (int p = 1; p <= o.ports; ++p)
+    if (const auto& ds = kept[static_cast<std::size_t>(p - 1)].ds)
+      hub->with_port(p, [&](Hub::Port& port) { port.ds_backup = *ds; });
+  hub->ds_startup();
   if (state) {
     hub->set_state_dir(state.get());
     for (int p = 1; p <= o.ports; ++p) hub->persist(p); // the files exist from the first start on

@@ -63,6 +63,7 @@ StateDir::~StateDir() {
 
 std::string StateDir::nvm_path(int p) const { return (fs::path(dir_) / fmt::format("port{}.nvm", p)).string(); }
 std::string StateDir::flange_path(int p) const { return (fs::path(dir_) / fmt::format("port{}.flange.json", p)).string(); }
+std::string StateDir::ds_path(int p) const { return (fs::path(dir_) / fmt::format("port{}.ds.json", p)).string(); }
 
 PortState StateDir::load(int p) {
   PortState s;
@@ -87,6 +88,13 @@ PortState StateDir::load(int p) {
       throw std::invalid_argument(fmt::format("{}: corrupt (expected {{\"flange_angle_deg\": number}}); left as it is", path));
     s.flange_angle_deg = j["flange_angle_deg"].get<double>();
   }
+  if (const auto text = read_if_exists(ds_path(p))) {
+    try {
+      s.ds = ds_backup_from_json(*text);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(fmt::format("{}: corrupt: {}; left as it is", ds_path(p), e.what()));
+    }
+  }
   Saved& saved = *saved_.at(static_cast<std::size_t>(p - 1));
   std::lock_guard lock(saved.mutex);
   saved.nvm = s.nvm;
@@ -109,6 +117,14 @@ void StateDir::save(int p, const std::vector<uint8_t>& nvm, double flange_angle_
     });
     saved.flange_angle_deg = flange_angle_deg;
   }
+}
+
+void StateDir::save_ds(int p, const DsBackup& backup, uint64_t generation) {
+  Saved& saved = *saved_.at(static_cast<std::size_t>(p - 1));
+  std::lock_guard lock(saved.mutex);
+  if (saved.ds_generation == generation) return;
+  io::write_file_atomic(ds_path(p), [&](std::ostream& f) { f << ds_backup_json(backup); });
+  saved.ds_generation = generation;
 }
 
 } // namespace sreh::serve

@@ -6,7 +6,9 @@
 //                            works as a scenario's `device: {nvm_image: ...}`;
 //   DIR/port<P>.flange.json  where the flange is (physical frame), which the
 //                            module's absolute multiturn encoder reads back at
-//                            power-on (manual 4.1).
+//                            power-on (manual 4.1);
+//   DIR/port<P>.ds.json      the master's Data Storage backup of the port
+//                            (serve/ds_master.hpp, manual 8).
 // Each is written atomically (io/atomic_file) when it changes; a missing file
 // is a factory-new module / a flange at 0; a corrupt one is bad input naming
 // the file and is never overwritten. DIR/.lock (flock) keeps a second serve out.
@@ -18,11 +20,14 @@
 #include <string>
 #include <vector>
 
+#include "serve/ds_master.hpp"
+
 namespace sreh::serve {
 
 struct PortState {
   std::optional<std::vector<uint8_t>> nvm;  // none: factory-new
   std::optional<double> flange_angle_deg;   // none: the flange at 0
+  std::optional<DsBackup> ds;               // none: the master holds no backup yet
 };
 
 class StateDir {
@@ -39,8 +44,12 @@ class StateDir {
   // Throws std::runtime_error naming the file if it cannot be written.
   void save(int p, const std::vector<uint8_t>& nvm, double flange_angle_deg);
 
+  // The master's backup, written when `generation` differs from the last one written.
+  void save_ds(int p, const DsBackup& backup, uint64_t generation);
+
   std::string nvm_path(int p) const;
   std::string flange_path(int p) const;
+  std::string ds_path(int p) const;
 
   // Flange moves smaller than this are not worth a write (encoder dither at rest).
   static constexpr double kFlangeResolution_deg = 0.01;
@@ -50,6 +59,7 @@ class StateDir {
     std::mutex mutex;
     std::optional<std::vector<uint8_t>> nvm;
     std::optional<double> flange_angle_deg;
+    uint64_t ds_generation = 0;
   };
   std::string dir_;
   int lock_fd_ = -1;
