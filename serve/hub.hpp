@@ -15,7 +15,7 @@
 #include <thread>
 #include <vector>
 
-#include "serve/ds_master.hpp"
+#include "scenarios/data_storage_master.hpp"
 #include "twin/twin.hpp"
 
 namespace sreh::serve {
@@ -81,7 +81,7 @@ class Hub {
     std::vector<uint8_t> last_detailed_status; // index 37
     bool first = true;
     std::string failure; // the plant failed (MuJoCo instability): the port stops, the server goes on
-    // Data Storage at the master (serve/ds_master.hpp): the backup, whether it
+    // Data Storage at the master (scenarios/data_storage_master.hpp): the backup, whether it
     // changed since it was written, and a download owed to a replacement
     // module (made in its first cycle in OPERATE).
     std::optional<DsBackup> ds_backup;

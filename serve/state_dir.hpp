@@ -8,7 +8,7 @@
 //                            module's absolute multiturn encoder reads back at
 //                            power-on (manual 4.1);
 //   DIR/port<P>.ds.json      the master's Data Storage backup of the port
-//                            (serve/ds_master.hpp, manual 8).
+//                            (scenarios/data_storage_master.hpp, manual 8).
 // Each is written atomically (io/atomic_file) when it changes; a missing file
 // is a factory-new module / a flange at 0; a corrupt one is bad input naming
 // the file and is never overwritten. DIR/.lock (flock) keeps a second serve out.
@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "serve/ds_master.hpp"
+#include "serve/ds_backup_file.hpp"
 
 namespace sreh::serve {
 

@@ -173,6 +173,18 @@ async function main() {
   tokenInput.addEventListener('change', () => localStorage.setItem('sreh-token', token()));
   const ports = await api('GET', '/v1/ports');
   ports.forEach((info) => new PortView(info));
+  showPacing();
+  setInterval(showPacing, 2000);
+}
+
+// The pacing figures of /v1/stats (issue 27): p99 jitter and late cycles.
+async function showPacing() {
+  try {
+    const s = await api('GET', '/v1/stats');
+    document.getElementById('pacing').textContent =
+      `cycle ${(s.cycle_s * 1000).toFixed(1)} ms: jitter p99 ${Math.round(s.jitter_p99_us)} \u00b5s, ` +
+      `max ${Math.round(s.jitter_max_us)} \u00b5s, late cycles ${s.late_cycles} of ${s.cycles}`;
+  } catch (e) { /* the stream's status shows connection trouble */ }
 }
 
 main().catch((e) => { document.getElementById('status').textContent = 'error: ' + e.message; });

@@ -74,6 +74,12 @@ out = subprocess.run(["curl", "-s", "-i", "-X", "POST", "-m", "10", "-H", "Conte
 check(out.startswith("HTTP/1.1 405") and "Allow: GET" in out, "POST processdata: %s" % out[:200])
 check(s.curl("GET", "/v1/nothing")[0] == 404, "unknown path: 404")
 
+# ---- the live page shows the pacing figures of /v1/stats ----
+code, js = s.curl("GET", "/assets/app.js")
+check(code == 200 and "/v1/stats" in js and "late cycles" in js and "p99" in js, "live page without pacing figures")
+stats = s.get("/v1/stats")
+check(stats["jitter_max_us"] >= stats["jitter_p99_us"] >= stats["jitter_p50_us"] >= 0, "stats: %s" % stats)
+
 # ---- bearer scheme case-insensitive ----
 for scheme in ("Bearer", "bearer", "BEARER"):
     code, body = s.curl("PUT", "/v1/ports/1/processdata/out", {"motor_on": False},

@@ -1,19 +1,19 @@
 // IO-Link Data Storage at the master (manual 8 "Device exchange", iolink.md
-// "Data Storage"): the master keeps a backup of each port's parameter set
-// and puts it into a replacement module, so the PLC program runs on
-// without re-parameterising. Under the port lock, through the device's own
-// index 3 protocol (DS_Command, Index_List, Parameter_Checksum), exactly as
-// a master does it over ISDU.
+// "Data Storage"): the master keeps a backup of a port's parameter set and
+// puts it into a replacement module, so the PLC program runs on without
+// re-parameterising. Through the device's own index 3 protocol
+// (DS_Command, Index_List, Parameter_Checksum), exactly as a master does it
+// over ISDU. Used by the scenario runner (`replace_device:`) and by serve's
+// master (the caller holds the port lock there).
 #pragma once
 #include <cstdint>
 #include <optional>
-#include <string>
 #include <vector>
 
 #include "device_logic/data_storage.hpp"
 #include "twin/twin.hpp"
 
-namespace sreh::serve {
+namespace sreh {
 
 struct DsBackup {
   uint32_t checksum = 0; // the device's Parameter_Checksum (3.4) after the upload
@@ -36,9 +36,4 @@ uint16_t ds_download(Twin& twin, const DsBackup& backup);
 uint32_t ds_checksum(Twin& twin);    // 3.4; 0 if unreadable
 bool ds_upload_requested(Twin& twin); // 3.2 bit 7
 
-// The backup as a file (serve's state folder): JSON, values as hex.
-std::string ds_backup_json(const DsBackup& backup);
-// Throws std::invalid_argument (message without a file name) if malformed.
-DsBackup ds_backup_from_json(const std::string& text);
-
-} // namespace sreh::serve
+} // namespace sreh

@@ -1,13 +1,8 @@
-#include "serve/ds_master.hpp"
-
-#include <stdexcept>
-
-#include <nlohmann/json.hpp>
+#include "scenarios/data_storage_master.hpp"
 
 #include "device_logic/parameter_store.hpp"
-#include "serve/port_api.hpp"
 
-namespace sreh::serve {
+namespace sreh {
 namespace {
 
 bool command(Twin& twin, DsCommand c) {
@@ -69,29 +64,4 @@ uint16_t ds_download(Twin& twin, const DsBackup& backup) {
   return r.ok() ? 0 : r.error;
 }
 
-std::string ds_backup_json(const DsBackup& b) {
-  nlohmann::json values = nlohmann::json::array();
-  for (const auto& v : b.values)
-    values.push_back({{"index", v.entry.index}, {"subindex", v.entry.subindex}, {"raw", hex_bytes(v.data)}});
-  return nlohmann::json{{"checksum", b.checksum}, {"values", values}}.dump(1) + "\n";
-}
-
-DsBackup ds_backup_from_json(const std::string& text) {
-  DsBackup b;
-  try {
-    const auto j = nlohmann::json::parse(text);
-    b.checksum = j.at("checksum").get<uint32_t>();
-    for (const auto& v : j.at("values")) {
-      DsBackup::Value value;
-      value.entry.index = v.at("index").get<uint16_t>();
-      value.entry.subindex = v.at("subindex").get<uint8_t>();
-      value.data = parse_hex(v.at("raw").get<std::string>(), "raw");
-      b.values.push_back(std::move(value));
-    }
-  } catch (const std::exception&) {
-    throw std::invalid_argument("not a data storage backup ({\"checksum\", \"values\": [{index, subindex, raw}]})");
-  }
-  return b;
-}
-
-} // namespace sreh::serve
+} // namespace sreh
