@@ -170,10 +170,6 @@ int run_serve(const ServeOptions& o, std::ostream& out, std::ostream& err) {
     if (const auto& ds = kept[static_cast<std::size_t>(p - 1)].ds)
       hub->with_port(p, [&](Hub::Port& port) { port.ds_backup = *ds; });
   hub->ds_startup();
-  if (state) {
-    hub->set_state_dir(state.get());
-    for (int p = 1; p <= o.ports; ++p) hub->persist(p); // the files exist from the first start on
-  }
 
   block_shutdown_signals(); // before any thread starts, so only sigtimedwait sees them
   // A signal before that went to the batch commands' handler (io/interrupt):
@@ -206,6 +202,10 @@ int run_serve(const ServeOptions& o, std::ostream& out, std::ostream& err) {
     }
   } catch (const std::runtime_error& e) {
     throw std::invalid_argument(e.what());
+  }
+  if (state) { // bound: from here on the state folder is written (exit 2 before leaves it alone)
+    hub->set_state_dir(state.get());
+    for (int p = 1; p <= o.ports; ++p) hub->persist(p); // the files exist from the first start on
   }
   hub->start();
   modbus->start();
