@@ -205,6 +205,7 @@ struct Front<ModbusOptions>::Impl {
   void loop() {
     const auto idle = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.idle_timeout_s));
     std::vector<pollfd> fds;
+    bool backlog = false; // a client has whole frames waiting beyond its turn: do not sleep in poll()
     while (running.load()) {
       fds.clear();
       fds.push_back({listen_fd, POLLIN, 0});
@@ -214,7 +215,8 @@ struct Front<ModbusOptions>::Impl {
         if (!c.out.empty()) want |= POLLOUT;
         fds.push_back({c.fd, want, 0});
       }
-      const int n = poll(fds.data(), fds.size(), kPollMs);
+      const int n = poll(fds.data(), fds.size(), backlog ? 0 : kPollMs);
+      backlog = false;
       if (n < 0 && errno != EINTR) break;
       if (n > 0 && (fds[0].revents & POLLIN)) accept_clients();
       std::size_t i = 1;
@@ -233,6 +235,7 @@ struct Front<ModbusOptions>::Impl {
           close(c.fd);
           it = clients.erase(it);
         } else {
+          backlog = backlog || (c.out.size() < kMaxPendingOut && modbus::next_frame(c.in).status == modbus::Frame::Status::Ready);
           ++it;
         }
       }
