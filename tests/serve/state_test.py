@@ -70,14 +70,19 @@ wait_until(lambda: pd(s)["in"]["valid"], "PD in valid after start-up")
 pos = pd(s)["in"]["position_deg"]
 check(abs(pos) < 0.1, "flange not where it was: position %.3f deg, expected 0 (origin at the flange)" % pos)
 
-# ---- SIGKILL 0.5 s after an answered write ----
+# ---- SIGKILL 0.5 s after an answered write (HTTP and Modbus) ----
 write_param(s, 66, 4, 7000)
+mb = s.pymodbus()
+r = mb.write_registers(1100, [2, 67, 4, 2, 5000], slave=1)  # ISDU write 67.4 = 5000 over Modbus
+check(not r.isError() and mb.read_holding_registers(1301, 2, slave=1).registers == [1, 0], "Modbus ISDU write")
+mb.close()
 time.sleep(0.5)
 s.proc.send_signal(signal.SIGKILL)
 s.proc.communicate(timeout=10)
 
 s = Serve(exe, *args)
 check(param(s, 66, 4) == 7000, "66.4 lost across SIGKILL: %s" % param(s, 66, 4))
+check(param(s, 67, 4) == 5000, "67.4 (written over Modbus) lost across SIGKILL: %s" % param(s, 67, 4))
 check(param(s, 86, 0) == zero, "stored origin lost across SIGKILL")
 wait_until(lambda: pd(s)["in"]["valid"], "PD in valid")
 check(abs(pd(s)["in"]["position_deg"]) < 0.1, "flange moved across SIGKILL: %s" % pd(s)["in"]["position_deg"])
