@@ -27,6 +27,7 @@ struct ModbusOptions {
 };
 
 using ModbusServer = Front<ModbusOptions>;
-extern template class Front<ModbusOptions>;
+// Instantiated in the .cpp (with its Impl); front.hpp declares the members only, so
+// no other file instantiates them (clang refuses an extern template before Impl).
 
 } // namespace sreh::serve

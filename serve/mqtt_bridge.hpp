@@ -30,6 +30,7 @@ struct MqttOptions {
 };
 
 using MqttBridge = Front<MqttOptions>;
-extern template class Front<MqttOptions>;
+// Instantiated in the .cpp (with its Impl); front.hpp declares the members only, so
+// no other file instantiates them (clang refuses an extern template before Impl).
 
 } // namespace sreh::serve
