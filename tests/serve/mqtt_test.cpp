@@ -131,8 +131,8 @@ struct Listener {
     mosquitto_loop_stop(m, false);
     mosquitto_destroy(m);
   }
-  void publish(const std::string& topic, const std::string& payload) {
-    mosquitto_publish(m, nullptr, topic.c_str(), static_cast<int>(payload.size()), payload.data(), 1, false);
+  void publish(const std::string& topic, const std::string& payload, bool retain = false) {
+    mosquitto_publish(m, nullptr, topic.c_str(), static_cast<int>(payload.size()), payload.data(), 1, retain);
   }
   // Waits up to 10 s for a message on `topic` with exactly `payload`.
   bool wait_raw(const std::string& topic, const std::string& payload) {
@@ -217,6 +217,11 @@ TEST(MqttBridge, TokenNeverPublishedIdOnRefusalsAvailabilityAndCleanStop) {
   Broker broker;
   ASSERT_TRUE(broker.start()) << "mosquitto did not start";
   const std::string token = "tok-5f3a9c1e77";
+  {
+    Listener earlier(broker.port, "t/none"); // a former serve with 3 ports left this behind
+    earlier.publish("t/port/3/processdata", R"({"in": {"valid": true, "state": "Ready"}})", true);
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
   Hub hub(std::vector<TwinConfig>(1), HubOptions{});
   MqttOptions o;
   o.port = broker.port;
@@ -257,7 +262,10 @@ TEST(MqttBridge, TokenNeverPublishedIdOnRefusalsAvailabilityAndCleanStop) {
   EXPECT_TRUE(late.wait_raw("t/port/1/availability", "offline"));
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   std::lock_guard lock(late.mutex);
-  for (const auto& [t, p, r] : late.raw) EXPECT_NE(t, "t/port/1/processdata") << p;
+  for (const auto& [t, p, r] : late.raw) {
+    EXPECT_NE(t, "t/port/1/processdata") << p;
+    EXPECT_NE(t, "t/port/3/processdata") << "a port above --ports stayed retained: " << p;
+  }
 }
 
 // SIGKILL: the broker publishes each port's last will ("offline").
