@@ -161,6 +161,11 @@ class PortView {
       this.errBox.textContent = `event ${d.code} ${d.mode} (qualifier ${d.qualifier}) at ${d.t_s.toFixed(2)} s`;
     });
     es.addEventListener('failure', (e) => { this.errBox.textContent = 'port failed: ' + JSON.parse(e.data).message; });
+    es.addEventListener('data_storage', (e) => { // a replacement module got the master's backup (manual 8)
+      const d = JSON.parse(e.data);
+      this.errBox.textContent = `data storage: ${d.action}` + (d.iolink_error ? ` refused ${d.iolink_error}` : '') +
+        ` at ${d.t_s.toFixed(2)} s`;
+    });
     es.onopen = () => { document.getElementById('status').textContent = 'live'; };
     es.onerror = () => { document.getElementById('status').textContent = 'reconnecting\u2026'; };
   }
