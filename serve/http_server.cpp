@@ -5,6 +5,7 @@
 #include <sys/socket.h>
 
 #include <atomic>
+#include <chrono>
 #include <cerrno>
 #include <cstring>
 #include <regex>
@@ -321,6 +322,10 @@ struct Front<HttpOptions>::Impl {
   int port() const { return bound; }
   void start() {
     thread = std::thread([this] { server.listen_after_bind(); });
+    // cpp-httplib's stop() does nothing until the listening loop runs: a stop
+    // right after start (a signal during start-up) would leave it in accept()
+    // for good. Return only once it runs.
+    for (int i = 0; i < 5000 && !server.is_running(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
   void stop() {
     stopping.store(true);
