@@ -150,6 +150,12 @@ with connect() as c:
     check(read_regs(c, 3, 2) == [0, 0], "global block past 2 reads 0")
     check(request(c, struct.pack(">BHH", 3, 1995, 10)) == bytes([0x83, 2]), "outside the map: exception 02")
 
+# ---- FC 23 from a real client (pymodbus), as docs/modbus-map.md shows it ----
+pm = s.pymodbus()
+r = pm.readwrite_registers(read_address=1300, read_count=5, write_address=1100, write_registers=[1, 64, 1, 0], slave=1)
+check(not r.isError() and r.registers[1:] == [1, 0, 2, 300], "pymodbus FC 23: %s" % r)
+pm.close()
+
 # ---- bad MBAP: no answer, connection closed ----
 for bad in (mbap(struct.pack(">BHH", 3, 1001, 4), protocol=1),        # protocol id
             mbap(struct.pack(">BHH", 3, 1001, 4), length=261) + b"\0" * 300,  # length over 254
