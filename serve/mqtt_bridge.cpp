@@ -15,6 +15,7 @@
 #include <fmt/format.h>
 
 #include "serve/front_impl.hpp"
+#include "serve/mqtt_auth.hpp"
 #include "serve/port_api.hpp"
 
 namespace sreh::serve {
@@ -164,11 +165,9 @@ struct Front<MqttOptions>::Impl {
     try {
       body = parse_body(std::string(static_cast<const char*>(msg->payload), static_cast<std::size_t>(msg->payloadlen)));
       if (what == "isdu/request") id = body.value("id", Json(nullptr)); // every answer carries it, refusals too
-      if (!options.token.empty()) {
-        if (!body.contains("token") || !body["token"].is_string() || body["token"].get<std::string>() != options.token)
-          throw RequestError(403, "missing or wrong token");
-      }
+      if (!options.token.empty()) authorise(t, msg, body);
       body.erase("token");
+      body.erase("auth");
       if (what == "processdata/out/set") {
         hub.with_port(p, [&](Hub::Port& port) { apply_pd_out(port, body); });
       } else if (what == "faults/set") {
@@ -184,6 +183,18 @@ struct Front<MqttOptions>::Impl {
       publish(topic(p, "isdu/response"),
               Json{{"id", id}, {"ok", false}, {"iolink_error", iolink_error_text(e.code)}, {"message", e.what()}}.dump());
     }
+  }
+
+  // With a token: "auth" (signed, the token never on the wire) or "token".
+  void authorise(const std::string& t, const mosquitto_message* msg, const Json& body) const {
+    if (body.contains("auth")) {
+      const std::string payload(static_cast<const char*>(msg->payload), static_cast<std::size_t>(msg->payloadlen));
+      if (!body["auth"].is_string() || !command_signed(options.token, t, payload, body["auth"].get<std::string>()))
+        throw RequestError(403, "wrong signature (auth)");
+      return;
+    }
+    if (!body.contains("token") || !body["token"].is_string() || body["token"].get<std::string>() != options.token)
+      throw RequestError(403, "missing or wrong token (or auth)");
   }
 
   void isdu_request(int p, Json body, const Json& id) {

@@ -10,8 +10,8 @@
 //   <prefix>/port/<p>/isdu/request         (command) {"id", "op": "read"|"write", "index", "subindex", "value"|"raw"}
 //   <prefix>/port/<p>/isdu/response        (published) {"id", "ok", ...} or {"id", "ok": false, "iolink_error", "message"}
 //   <prefix>/errors                        (published) refused commands: {"topic", "error"}
-// With a token, every command carries it as "token"; nothing serve publishes
-// ever contains it.
+// With a token, every command is signed ("auth", serve/mqtt_auth.hpp) or
+// carries it as "token"; nothing serve publishes ever contains it.
 #pragma once
 #include <memory>
 #include <string>

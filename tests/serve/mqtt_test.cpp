@@ -18,6 +18,7 @@
 #include <thread>
 #include <tuple>
 
+#include "serve/mqtt_auth.hpp"
 #include "serve/mqtt_bridge.hpp"
 #include "serve/port_api.hpp"
 
@@ -240,20 +241,33 @@ TEST(MqttBridge, TokenNeverPublishedIdOnRefusalsAvailabilityAndCleanStop) {
   EXPECT_FALSE((*refused)["ok"].get<bool>());
   // Malformed JSON that quotes the token: the error must not repeat it.
   commander.publish("t/port/1/faults/set", "{\"token\": \"" + token + "\", \"supply_V\": }");
-  commander.publish("t/port/1/isdu/request", "{\"id\": 42, \"op\": \"read\", \"index\": 64, \"subindex\": 1, \"token\": \"" + token + "\"}");
+  // A signed command (serve/mqtt_auth.hpp): the token itself never travels.
+  const std::string unsigned_cmd = R"({"id": 42, "op": "read", "index": 64, "subindex": 1, "auth": ""})";
+  std::string signed_cmd = unsigned_cmd;
+  signed_cmd.replace(signed_cmd.find(R"("auth": "")") + 9, 0, command_signature(token, "t/port/1/isdu/request", unsigned_cmd));
+  commander.publish("t/port/1/isdu/request", signed_cmd);
   const auto ok = commander.wait_for("t/port/1/isdu/response", [](const Json& j) { return j["id"] == 42; });
   ASSERT_TRUE(ok);
-  EXPECT_TRUE((*ok)["ok"].get<bool>());
+  EXPECT_TRUE((*ok)["ok"].get<bool>()) << ok->dump();
+  // The same signature on another command is refused (it signs topic and payload).
+  std::string forged = signed_cmd;
+  forged.replace(forged.find("64"), 2, "65");
+  commander.publish("t/port/1/isdu/request", forged);
+  const auto refused2 = commander.wait_for("t/port/1/isdu/response", [](const Json& j) {
+    return j["id"] == 42 && j.contains("ok") && !j["ok"].get<bool>();
+  });
+  EXPECT_TRUE(refused2) << "a forged signature was accepted";
   EXPECT_TRUE(l.wait_for("t/errors", [](const Json& j) { return j["topic"] == "t/port/1/faults/set"; }));
   bridge->stop();
   hub.stop();
   EXPECT_TRUE(l.wait_raw("t/port/1/availability", "offline"));
   EXPECT_TRUE(l.wait_raw("t/port/1/processdata", "")); // the retained process data deleted
-  // What serve published (everything but the commands themselves) never holds the token.
+  // A "#" subscriber never saw the token: not in what serve published, not in
+  // the signed commands (only the deliberately malformed one above quotes it).
   {
     std::lock_guard lock(l.mutex);
     for (const auto& [t, p, r] : l.raw)
-      if (t.find("/set") == std::string::npos && t.find("/request") == std::string::npos) {
+      if (t != "t/port/1/faults/set") {
         EXPECT_EQ(p.find(token), std::string::npos) << t << ": " << p;
       }
   }
