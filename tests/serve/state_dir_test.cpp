@@ -59,6 +59,14 @@ TEST_F(StateDirTest, CorruptImageIsRefusedByNameAndLeftAlone) {
   { std::ofstream(dir / "port1.flange.json") << "{\"flange_angle_deg\": \"north\"}"; }
   fs::remove(dir / "port1.nvm");
   EXPECT_THROW(s.load(1), std::invalid_argument);
+  fs::remove(dir / "port1.flange.json");
+  { std::ofstream(dir / "port1.ds.json") << "{\"checksum\": 1, \"values\": [{\"index\": 64}]}"; }
+  try {
+    s.load(1);
+    FAIL() << "a corrupt Data Storage backup was taken";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("port1.ds.json"), std::string::npos) << e.what();
+  }
 }
 
 TEST_F(StateDirTest, OneServePerFolder) {
