@@ -24,9 +24,12 @@ packages=(
   python3-yaml                                            # serve's OpenAPI test reads docs/api/openapi.yaml
   pybind11-dev python3-pybind11 python3-dev python3-numpy python3-pytest  # Python API (headers: python3-dev) and its tests, Debian's /usr/bin/python3
   parallel                                                # sharded sweeps and scenario runs
+  slurmctld slurmd slurm-client munge                     # tests/scale_out: a one-node Slurm started by hand (no service is started at install)
+  python3-distributed                                     # tests/scale_out: the Dask example on scheduler + worker processes
+  yamllint python3-kubernetes                             # tests/scale_out: the Kubernetes manifest linted, checked against the API's models
 )
 if [ "${SREH_WITH_EXAMPLES:-0}" = 1 ]; then
-  packages+=(python3-matplotlib python3-distributed) # only for examples/python
+  packages+=(python3-matplotlib) # only for examples/python
 fi
 if [ "${SREH_WITH_BROWSER:-0}" = 1 ]; then
   packages+=(chromium) # only for the report-in-a-browser test

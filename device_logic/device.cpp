@@ -20,6 +20,7 @@ void Device::Impl::power_on(const SensorReadings& s) {
   MoveRecorder records = std::move(move_recorder); // records not yet handed out survive
   static_cast<DeviceState&>(*this) = DeviceState();
   static_cast<DeviceMonitors&>(*this) = DeviceMonitors();
+  controller = PositionController(drive.gains);
   move_recorder = std::move(records);
   move_recorder.restart_numbering();
   powered = true;
@@ -42,6 +43,10 @@ void Device::Impl::process_outputs(const ProcessDataOut& next) {
   auto rose = [](bool before, bool now) { return !before && now; };
 
   if (!next.motor_on && motor_on()) apply(Event::SwitchOff); // T2, T9, or 114.6/1 in Busy/Done
+  // A-SM-6: while holding, a new selection retunes the loop for that set's load.
+  if (motor_on() && phase == MotionPhase::Hold && next.parameter_set != prev.parameter_set) {
+    tune_for_set(next.parameter_set);
+  }
 
   // T10.1 / T10.2; with the motor off only if Motor On = 0 (manual 3.3).
   if (rose(prev.reset_error, next.reset_error)) {
@@ -143,9 +148,8 @@ void Device::Impl::enter(State to, Event via) {
     hold_phys = encoder;
     setpoint = KinematicState{internal_counts_to_rad(encoder), 0, 0, 0};
     controller.reset(internal_counts_to_rad(encoder));
-    const MotionParameterSet set0 = store.motion_set(0);
-    limits = limits_from_parameter_set(set0.speed_dps, set0.accel_pct, set0.jerk_pct, set0.load_gcm2);
-    inertia_kgm2 = kInternalInertia_kgm2 + gcm2_to_kgm2(set0.load_gcm2);
+    hold_set = 0;
+    tune_for_set(pd.parameter_set); // A-SM-6: the set the PLC has selected now
     last_target_phys.reset(); // manual 3.4: first relative move from the actual position
     phase = MotionPhase::Hold;
   }
@@ -216,7 +220,7 @@ MotorCommand Device::Impl::tick(int64_t dt_ns, const SensorReadings& sensors) {
   const double dt_s = ns_to_seconds(dt_ns);
   if (dt_ns > 0) { // encoder speed, first-order filtered (A-MON-3)
     const double raw = internal_counts_to_rad(encoder - prev_encoder) / dt_s;
-    velocity_rad_s += (raw - velocity_rad_s) * std::min(1.0, dt_s / kVelocityFilter_s);
+    velocity_rad_s += (raw - velocity_rad_s) * std::min(1.0, dt_s / drive.speed_filter_s);
   }
   prev_encoder = encoder;
 

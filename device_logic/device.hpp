@@ -28,8 +28,9 @@ struct NonVolatileMemory;
 
 class Device {
  public:
-  Device();                                   // factory-new, powered on
-  explicit Device(const std::vector<uint8_t>& nvm_image); // powered on with a saved memory image
+  // The drive's data come from the module's model card (drive_model.hpp).
+  explicit Device(const DriveModel& drive);   // factory-new, powered on
+  Device(const DriveModel& drive, const std::vector<uint8_t>& nvm_image); // powered on with a saved memory image
   explicit Device(const DeviceSnapshot& snapshot);         // exactly where the snapshot was taken
   ~Device();
   Device(const Device&);

@@ -8,9 +8,9 @@
 
 namespace sreh {
 
-Device::Device() : impl_(std::make_unique<Impl>()) { impl_->power_on(SensorReadings{}); }
+Device::Device(const DriveModel& drive) : impl_(std::make_unique<Impl>(drive)) { impl_->power_on(SensorReadings{}); }
 
-Device::Device(const std::vector<uint8_t>& nvm_image) : impl_(std::make_unique<Impl>()) {
+Device::Device(const DriveModel& drive, const std::vector<uint8_t>& nvm_image) : impl_(std::make_unique<Impl>(drive)) {
   if (!restore_nvm(*impl_, nvm_image)) {
     // A corrupt memory image: factory configuration and error 114.1 code 1 (A-NVM-1).
     impl_->power_on(SensorReadings{});

@@ -3,6 +3,7 @@
 // cycle keeps and the memory image carries (device_nvm.cpp).
 #pragma once
 
+#include "device_logic/drive_model.hpp"
 #include "device_logic/parameter_ids.hpp"
 #include "device_logic/parameter_store.hpp"
 
@@ -11,6 +12,9 @@ namespace sreh {
 struct DeviceConfiguration {
   ParameterStore store;
   bool firmware_failed = false; // manual 9: a failed update starts in boot mode until a good image
+  // The module's drive (model card): constant for the device's life, not in
+  // the memory image (it is the hardware, not a stored parameter).
+  DriveModel drive;
 
   // Manual 4.2, index 82: 1 = counter-clockwise is positive (-1 in the physical frame).
   int dir() const { return store.raw(param::kPositiveDirection) == 1 ? -1 : 1; }

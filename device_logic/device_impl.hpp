@@ -14,8 +14,6 @@
 
 namespace sreh {
 
-inline constexpr double kVelocityFilter_s = 0.001; // A-MON-3: telemetry / torque-limit speed filter
-
 // Firmware transfer over ISDU (A-FW-4): the image arrives in chunks at
 // index 17344 subindex 1; subindex 2 takes the transfer commands.
 inline constexpr uint8_t kFirmwareChunkSub = 1;
@@ -28,9 +26,10 @@ inline constexpr std::size_t kFirmwareMaxImage = 4u << 20; // 4 MiB: far above a
 enum class BootStatus : uint8_t { Normal = 0, BootMode = 1, BootModeAfterFailedUpdate = 2 };
 
 struct Device::Impl : DeviceConfiguration, DeviceState, DeviceMonitors {
-  MotorModel motor; // constant
-
-  Impl() = default;
+  explicit Impl(const DriveModel& d) {
+    drive = d;
+    controller = PositionController(d.gains);
+  }
   explicit Impl(const DeviceSnapshot& s)
       : DeviceConfiguration(s.configuration), DeviceState(s.state), DeviceMonitors(s.monitors) {}
   DeviceSnapshot snapshot() const {
@@ -53,6 +52,7 @@ struct Device::Impl : DeviceConfiguration, DeviceState, DeviceMonitors {
   MotorCommand tick(int64_t dt_ns, const SensorReadings& sensors);
 
   // device_motion.cpp: the control step and the move records
+  void tune_for_set(uint8_t set_number);
   void start_move();
   void start_stop_profile();
   MotorCommand control(int64_t dt_ns, double dt_s); // dt_s = dt_ns / 1e9, derived once per tick

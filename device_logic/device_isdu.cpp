@@ -130,6 +130,7 @@ IsduResult Device::Impl::write(uint16_t index, uint8_t sub, std::span<const uint
   // it, also when it arrives through a Data Storage download (index 3).
   const bool zero_written = index == param::kPositionZero.index && !store.download_open();
   if (r.ok() && (zero_written || store.raw(param::kPositionZero) != zero_before)) init_origin();
+  if (r.ok() && motor_on() && phase == MotionPhase::Hold) tune_for_set(hold_set); // A-SM-6: its load may have changed
   return r;
 }
 

@@ -8,8 +8,21 @@
 
 namespace sreh {
 
+// A-SM-6: holding, the loop is tuned for the set selected in the process
+// data (the set the PLC will move with; after a move, the latched one until
+// the PLC selects another). An invalid number changes nothing (it raises
+// 114.7.2 only with Move, manual 3.5).
+void Device::Impl::tune_for_set(uint8_t set_number) {
+  if (set_number >= param::kMotionSets) return;
+  hold_set = set_number;
+  const MotionParameterSet set = store.motion_set(set_number);
+  limits = limits_from_parameter_set(set.speed_dps, set.accel_pct, set.jerk_pct, set.load_gcm2);
+  inertia_kgm2 = kInternalInertia_kgm2 + gcm2_to_kgm2(set.load_gcm2);
+}
+
 // T3: the set is latched now (manual 3.2).
 void Device::Impl::start_move() {
+  hold_set = latched.parameter_set;
   const MotionParameterSet set = store.motion_set(latched.parameter_set);
   limits = limits_from_parameter_set(set.speed_dps, set.accel_pct, set.jerk_pct, set.load_gcm2);
   inertia_kgm2 = kInternalInertia_kgm2 + gcm2_to_kgm2(set.load_gcm2);
@@ -107,8 +120,8 @@ MotorCommand Device::Impl::control(int64_t dt_ns, double dt_s) {
   if (!motor_on()) return {}; // an error above switched it off
 
   const double vel = velocity_rad_s;
-  const double lim_pos = motor.max_torque_Nm(vel, supply_V, +1.0);
-  const double lim_neg = motor.max_torque_Nm(vel, supply_V, -1.0);
+  const double lim_pos = drive.motor.max_torque_Nm(vel, supply_V, +1.0);
+  const double lim_neg = drive.motor.max_torque_Nm(vel, supply_V, -1.0);
   torque_Nm = controller.update(setpoint, measured, inertia_kgm2, lim_pos, lim_neg, dt_s);
   torque_limit_Nm = torque_Nm >= 0 ? lim_pos : lim_neg;
   return MotorCommand{torque_Nm, true};

@@ -59,7 +59,8 @@ struct DeviceState {
   double stop_base_rad = 0;      // profile positions are relative to this
   KinematicState setpoint{};     // physical rad, this step
   MotionLimits limits{};
-  double inertia_kgm2 = 0;
+  double inertia_kgm2 = 0;       // J_intern + the configured load the loop is tuned for
+  uint8_t hold_set = 0;          // the set whose load tunes the loop while holding (A-SM-6)
   SettlingParameters settle{};
   SettlingMonitor settling;
   PositionController controller;

@@ -1,7 +1,7 @@
 // The motor's torque capability: a DC-type motor with back-EMF and a current
 // limit. The manual gives only M = 0.485 N m (3.5.4) and that the reachable
 // speed falls in proportion to the supply voltage below 24 V (3.5.3); every
-// constant here is an assumption, listed in ASSUMPTIONS.md (A-MOTOR-*).
+// constant is an assumption on the model card (A-MOTOR-*).
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -11,25 +11,15 @@
 namespace sreh {
 
 struct MotorModel {
-  // A-MOTOR-1: back-EMF / torque constant (flange side). No-load speed
-  // 24 V / ke = 4400 deg/s at 24 V and proportional to the voltage below
-  // (manual 3.5.3: "the maximum possible speed decreases proportionally to
-  // the voltage", 4300 deg/s at 24 V): at 19 V nothing above 3483 deg/s is
-  // reachable, so 3500 deg/s ends in a tracking error and 3300 completes.
-  double torque_constant_Nm_per_A = 24.0 / deg_to_rad(4400.0);
-  // A-MOTOR-2: winding resistance 0.543 ohm (kept from issue 5: the thermal
-  // model is calibrated on its copper losses). Full peak torque up to
-  // ~4200 deg/s at 24 V, 0.31 N m left at 4300 deg/s for the end of the
-  // S-curve's acceleration; at 19 V the rated M = 0.485 N m up to 3330 deg/s.
-  double winding_resistance_ohm = 0.543;
-  // A-MOTOR-3: current limit of the output stage; peak torque 0.60 N m, i.e.
-  // 24 % above M so the controller keeps headroom at full acceleration.
-  double current_limit_A = 0.60 / (24.0 / deg_to_rad(4400.0));
-  // A-MOTOR-4: winding inductance 1.0 mH (electrical time constant L/R =
-  // 1.8 ms), the order of comparable small servo motors' phase inductance.
-  double winding_inductance_H = 1.0e-3;
-  // A-CTRL-6: current loop bandwidth 2 pi x 1 kHz (PI on R and L).
-  double current_loop_bandwidth_rad_s = 2.0 * kPi * 1000.0;
+  // The constants come from the model card (models/sreh50-model.yaml, read by
+  // twin/model_card.cpp); their reasons are A-MOTOR-1..4 and A-CTRL-6.
+  double torque_constant_Nm_per_A = 0; // = back-EMF constant (V s/rad), flange side
+  double winding_resistance_ohm = 0;
+  double current_limit_A = 0;          // of the output stage: the peak torque is kt x this
+  double winding_inductance_H = 0;
+  double current_loop_bandwidth_rad_s = 0;
+
+  bool operator==(const MotorModel&) const = default;
 
   double peak_torque_Nm() const { return torque_constant_Nm_per_A * current_limit_A; }
 

@@ -9,17 +9,6 @@
 
 namespace sreh {
 
-ControllerGains default_controller_gains() {
-  ControllerGains g;
-  g.velocity_bandwidth_rad_s = 1000.0; // A-CTRL-1: what the 3-period loop delay allows (A-CTRL-7)
-  g.schedule_exponent = 0.8;           // A-CTRL-1
-  g.position_ratio = 0.25;             // A-CTRL-2
-  g.integral_ratio = 0.2;              // A-CTRL-3
-  g.velocity_filter_s = 0.2e-3;        // A-CTRL-4
-  g.delay_steps = 3;                   // A-CTRL-7: encoder transfer + computation + PWM reload
-  return g;
-}
-
 double ControllerGains::velocity_bandwidth_for(double inertia_kgm2) const {
   const double ratio = kInternalInertia_kgm2 / std::max(inertia_kgm2, kInternalInertia_kgm2);
   return velocity_bandwidth_rad_s * std::pow(ratio, schedule_exponent);
@@ -78,8 +67,8 @@ double PositionController::update(const KinematicState& setpoint, double measure
   const bool winds_up = (unsat > hi && d_integral > 0.0) || (unsat < lo && d_integral < 0.0);
   if (!winds_up) integral_ = std::clamp(integral_ + d_integral, lo, hi);
 
-  if (gains_.delay_steps <= 0) return torque;
-  const int n = std::min(gains_.delay_steps, kMaxDelaySteps);
+  if (gains_.delay_periods <= 0) return torque;
+  const int n = std::min(gains_.delay_periods, kMaxDelaySteps);
   const double out = pending_[static_cast<std::size_t>(pending_head_)]; // computed n periods ago (A-CTRL-7)
   pending_[static_cast<std::size_t>(pending_head_)] = torque;
   pending_head_ = (pending_head_ + 1) % n;

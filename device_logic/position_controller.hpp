@@ -4,7 +4,7 @@
 //     -> velocity loop (PI, with acceleration feed-forward J a)
 //       -> torque (current) reference, saturated to what the motor can give
 //          now, with anti-windup; handed to the current loop
-//          `delay_steps` control periods later (A-CTRL-7: the encoder's
+//          `delay_periods` control periods later (A-CTRL-7: the encoder's
 //          serial transfer, the computation, the PWM reload).
 //
 //   v_cmd  = v_sp~ + Kp e,           e = pos_sp - encoder
@@ -30,22 +30,22 @@
 
 namespace sreh {
 
+// The firmware's tuning, from the model card (A-CTRL-1..4, A-CTRL-7).
 struct ControllerGains {
   double velocity_bandwidth_rad_s = 0; // wv0: velocity loop bandwidth at J = J_intern
   double schedule_exponent = 0;        // p in wv(J) = wv0 (J_intern / J)^p
   double position_ratio = 0;           // position loop bandwidth / velocity loop bandwidth
   double integral_ratio = 0;           // velocity integral corner / velocity loop bandwidth
   double velocity_filter_s = 0;        // time constant of the low-pass on encoder differences
-  int delay_steps = 0;                 // loop delay in control periods (0 .. 4)
+  int delay_periods = 0;                 // loop delay in control periods (0 .. 4)
 
   double velocity_bandwidth_for(double inertia_kgm2) const; // wv(J)
   bool operator==(const ControllerGains&) const = default;
 };
-ControllerGains default_controller_gains();
-
 class PositionController {
  public:
-  explicit PositionController(ControllerGains gains = default_controller_gains());
+  PositionController() = default; // no gains yet: the device sets them from its DriveModel
+  explicit PositionController(ControllerGains gains);
 
   // Forget integrator, filters and the delayed output; `measured_pos_rad` is the position now.
   void reset(double measured_pos_rad);
@@ -54,7 +54,7 @@ class PositionController {
   // `measured_pos_rad` from the encoder, `inertia_kgm2` = J_intern + configured
   // load, `torque_limit_pos_Nm` / `torque_limit_neg_Nm` the motor's capability
   // in each direction now (both >= 0). Returns the torque reference for the
-  // current loop: the saturated output computed `delay_steps` periods ago.
+  // current loop: the saturated output computed `delay_periods` periods ago.
   // Not reset yet: the first call resets at `measured_pos_rad`. dt_s <= 0 or a
   // non-finite input: no state change, returns 0 torque.
   double update(const KinematicState& setpoint, double measured_pos_rad, double inertia_kgm2,

@@ -3,10 +3,13 @@
 // CSV's columns as numpy arrays. Keywords are the long options with '-' as '_'.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
+#include <chrono>
 #include <type_traits>
 
 #include "python/bindings.hpp"
+#include "scenarios/model_card_json.hpp"
 #include "scenarios/result_json.hpp"
 #include "scenarios/runner.hpp"
 #include "scenarios/scenario_parser.hpp"
@@ -123,16 +126,35 @@ pyb::dict sweep_arrays(const sizing::SweepResult& result) {
 void bind_tools(pyb::module_& m) {
   using pyb::arg;
   m.def(
+      "model_card",
+      [](const std::optional<std::filesystem::path>& model) {
+        try {
+          const ModelCard card = model ? apply_model_file(default_model_card(), model->string()) : default_model_card();
+          return to_python(nlohmann::json(model_card_json(card)));
+        } catch (const ModelCardError& e) {
+          throw input_error(std::string("model: ") + e.what());
+        }
+      },
+      pyb::arg("model") = pyb::none(),
+      "The module's model card (issue 25): {'constants': {NAME: {'value', 'unit', 'source', 'range'}}}, with a "
+      "model file's overrides applied when given.");
+  m.def(
       "run_scenario",
       [](const std::string& path) {
         RunResult result;
+        double wall_s = 0;
         try {
           const Scenario scenario = parse_scenario_file(path);
+          const auto start = std::chrono::steady_clock::now();
           result = run_scenario(scenario);
+          wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         } catch (const ScenarioError& e) {
           throw input_error(e.what());
         }
-        return to_python(to_json(result));
+        nlohmann::json j = to_json(result); // as `run --json`, with its measured wall time (issue 25)
+        j["wall_s"] = wall_s;
+        j["real_time_factor"] = wall_s > 0 ? result.sim_time_s / wall_s : 0.0;
+        return to_python(j);
       },
       arg("path"),
       "Run a scenario file; the result dict of `sreh-twin run --json` (passed, failures, moves, final, checks, ...). "

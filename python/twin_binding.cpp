@@ -14,6 +14,7 @@
 #include "device_logic/parameter_table.hpp"
 #include "device_logic/units.hpp"
 #include "python/bindings.hpp"
+#include "twin/model_card.hpp"
 #include "scenarios/result_json.hpp"
 #include "io/atomic_file.hpp"
 #include "scenarios/isdu_value.hpp"
@@ -122,8 +123,15 @@ class PyTwin {
  public:
   PyTwin(std::optional<double> load_gcm2, std::optional<std::filesystem::path> load_file, double voltage_V, double ambient_C,
          double master_cycle_ms, bool configure_load, bool record_trace, std::vector<double> hard_stops_deg,
-         std::optional<pyb::bytes> nvm) {
+         std::optional<pyb::bytes> nvm, std::optional<std::filesystem::path> model) {
     TwinConfig c;
+    if (model) {
+      try {
+        c.module = load_module_model(model->string()); // issue 25: the model card with the file's overrides
+      } catch (const ModelCardError& e) {
+        throw input_error(std::string("model: ") + e.what());
+      }
+    }
     if (load_gcm2 && load_file) throw input_error("Twin: give load_gcm2 or load_file, not both");
     if (load_gcm2) {
       check_finite(*load_gcm2, "load_gcm2");
@@ -356,15 +364,18 @@ A load given here is mounted and, unless configure_load=False, written
 into every parameter set's configured load (index 64..71 subindex 4).
 Not thread-safe: one Twin per thread.)")
       .def(pyb::init<std::optional<double>, std::optional<std::filesystem::path>, double, double, double, bool, bool,
-                     std::vector<double>, std::optional<pyb::bytes>>(),
+                     std::vector<double>, std::optional<pyb::bytes>, std::optional<std::filesystem::path>>(),
            pyb::kw_only(), arg("load_gcm2") = pyb::none(), arg("load_file") = pyb::none(), arg("voltage_V") = 24.0,
            arg("ambient_C") = 25.0, arg("master_cycle_ms") = 2.0, arg("configure_load") = true,
            arg("record_trace") = true, arg("hard_stops_deg") = std::vector<double>{}, arg("nvm") = pyb::none(),
+           arg("model") = pyb::none(),
            R"(load_gcm2: a load of this inertia about the axis (g cm^2, 0 .. 15000).
 load_file: a YAML file with a scenario's 'load:' key, or an MJCF body file (.xml).
 voltage_V: supply; ambient_C: air temperature; master_cycle_ms: IO-Link cycle 2 .. 1000 ms.
 record_trace: keep one trace row per cycle (trace()); hard_stops_deg: obstacles the load hits.
-nvm: a saved memory image (save_nvm()); factory-new otherwise.)")
+nvm: a saved memory image (save_nvm()); factory-new otherwise.
+model: a model file overriding constants of the module's model card
+(YAML as `sreh-twin model show` prints; model_card() gives the card).)")
       .def("exchange", &PyTwin::exchange, arg("pd_out"),
            "One IO-Link cycle: send the 6-byte output frame, run the cycle, return the 7-byte input frame.")
       .def("run_cycles", &PyTwin::run_cycles, arg("n"), arg("pd_out") = pyb::none(),

@@ -468,6 +468,7 @@ TwinConfig make_twin_config(const Scenario& s) {
   c.thermal = ThermalSpec{s.device.ambient_C, s.sim.thermal_time_scale};
   c.physics_dt_s = s.sim.physics_dt_s;
   c.cycle_s = s.sim.cycle_s;
+  c.module = s.module;
   if (s.device.nvm_image_path) c.nvm_image = read_bytes(*s.device.nvm_image_path, s.device.nvm_image_loc);
   c.record_trace = false;
   return c;

@@ -193,6 +193,11 @@ struct Scenario {
   double mounting_tilt_deg = 0.0; // `mounting:`, 0 = vertical axis, 90 = horizontal (A-TWIN-24)
   std::vector<HardStop> hard_stops;
   SimSetup sim;
+  // `model: FILE` (issue 25): overrides of the model card, relative to the
+  // scenario; `module` is the card with them applied (and with `run --model`'s).
+  std::string model_file;
+  SourceLoc model_loc;
+  ModuleModel module = default_module_model();
   bool stop_on_failure = false; // default: a failed check is recorded and the run goes on
   std::vector<Step> steps;
   std::vector<RunCheck> expect;

@@ -22,6 +22,7 @@
 #include "scenarios/isdu_value.hpp"
 #include "scenarios/snapshot.hpp"
 #include "twin/load_builder.hpp"
+#include "twin/model_card.hpp"
 #include "scenarios/yaml_reader.hpp"
 #include "scenarios/yaml_safety.hpp"
 
@@ -77,10 +78,20 @@ class Parser {
 
   Scenario parse(const YAML::Node& root) {
     r_.check_map(root, "scenario",
-                 {"name", "description", "device", "load", "mounting", "world", "sim", "stop_on_failure", "steps", "expect"});
+                 {"name", "description", "model", "device", "load", "mounting", "world", "sim", "stop_on_failure", "steps",
+                  "expect"});
     Scenario s;
     s.file = r_.file();
     s.name = r_.text(r_.require(root, "name", "scenario"), "name");
+    if (root["model"]) {
+      s.model_loc = r_.loc(root["model"]);
+      s.model_file = existing_file(root["model"], "model", true);
+      try {
+        s.module = apply_model_file(default_model_card(), s.model_file).module_model();
+      } catch (const ModelCardError& e) {
+        r_.fail(root["model"], std::string("model: ") + e.what());
+      }
+    }
     if (root["device"]) parse_device(root["device"], s.device);
     if (root["load"]) {
       s.load_loc = r_.loc(root["load"]);
@@ -89,6 +100,7 @@ class Parser {
     if (root["mounting"]) s.mounting_tilt_deg = parse_mounting(root["mounting"]);
     if (root["world"]) s.hard_stops = parse_world(root["world"]);
     if (root["sim"]) s.sim = parse_sim(root["sim"]);
+    check_clocks(s, root["sim"] ? root["sim"] : root);
     sim_ = s.sim;
     if (root["stop_on_failure"]) s.stop_on_failure = r_.boolean(root["stop_on_failure"], "stop_on_failure");
     const YAML::Node steps = r_.require(root, "steps", "scenario");
@@ -212,6 +224,22 @@ class Parser {
     }
     if (n["thermal_time_scale"]) s.thermal_time_scale = r_.number(n["thermal_time_scale"], "sim.thermal_time_scale", 1.0, 1e6);
     return s;
+  }
+
+  // Issue 25: the physics sub-steps the drive's control period (model card).
+  void check_clocks(const Scenario& s, const YAML::Node& at) {
+    const double period_s = s.module.drive.control_period_s();
+    if (!detail::integer_multiple(period_s, s.sim.physics_dt_s)) {
+      r_.fail(at["physics_dt_s"] ? at["physics_dt_s"] : at,
+              fmt::format("sim.physics_dt_s {} must divide the drive's control period {} s (model card "
+                          "control_period): the physics sub-steps the drive's clock",
+                          s.sim.physics_dt_s, period_s));
+    }
+    if (!detail::integer_multiple(s.sim.cycle_s, period_s)) {
+      r_.fail(at["cycle_s"] ? at["cycle_s"] : at,
+              fmt::format("sim.cycle_s {} must be an integer multiple of the drive's control period {} s",
+                          s.sim.cycle_s, period_s));
+    }
   }
 
   // A file that must exist; relative to the scenario's folder, or (models/...)
@@ -493,6 +521,23 @@ LoadSpec parse_load_node(const YAML::Node& node, const std::string& file, const 
 }
 
 double parse_mounting_node(const YAML::Node& node, const std::string& file) { return Parser(file, "").mounting(node); }
+
+void apply_command_line_model(Scenario& s, const std::string& model_path) {
+  if (model_path.empty()) return;
+  try {
+    ModelCard card = default_model_card();
+    if (!s.model_file.empty()) card = apply_model_file(card, s.model_file);
+    s.module = apply_model_file(card, model_path).module_model();
+  } catch (const ModelCardError& e) {
+    throw ScenarioError(SourceLoc{s.file}, std::string("--model: ") + e.what());
+  }
+  const double period_s = s.module.drive.control_period_s();
+  if (!detail::integer_multiple(period_s, s.sim.physics_dt_s) || !detail::integer_multiple(s.sim.cycle_s, period_s)) {
+    throw ScenarioError(SourceLoc{s.file}, fmt::format("sim: physics_dt_s {} and cycle_s {} do not fit the control period "
+                                                       "{} s of --model {}", s.sim.physics_dt_s, s.sim.cycle_s, period_s,
+                                                       model_path));
+  }
+}
 
 Scenario parse_scenario_file(const std::string& path, const Limits& limits) {
   const std::string text = detail::read_limited_file(path, limits, "scenario file");

@@ -19,4 +19,10 @@ Scenario parse_scenario_file(const std::string& path, const Limits& limits = {})
 Scenario parse_scenario_text(const std::string& yaml_text, const std::string& file,
                              const std::string& base_dir, const Limits& limits = {});
 
+// `run --model FILE` (issue 25): the file's overrides of the model card on
+// top of the scenario's own `model:` (the command line wins). Throws
+// ScenarioError naming the model file's line, or the scenario when its
+// sim clocks no longer fit the drive's control period.
+void apply_command_line_model(Scenario& s, const std::string& model_path);
+
 } // namespace sreh

@@ -12,6 +12,7 @@
 #include "device_logic/units.hpp"
 #include "io/atomic_file.hpp"
 #include "io/interrupt.hpp"
+#include "twin/model_card.hpp"
 #include "scenarios/runner.hpp"
 #include "scenarios/scenario_parser.hpp"
 #include "serve/http_server.hpp"
@@ -122,9 +123,20 @@ int run_serve(const ServeOptions& o, std::ostream& out, std::ostream& err) {
   std::vector<Scenario> scenarios(static_cast<std::size_t>(o.ports));
   for (int p = 1; p <= o.ports; ++p) {
     TwinConfig c;
+    try {
+      c.module = load_module_model(o.model); // issue 25: the model card with --model's overrides
+    } catch (const ModelCardError& e) {
+      throw std::invalid_argument(fmt::format("--model: {}", e.what()));
+    }
     if (const auto it = o.port_config.find(p); it != o.port_config.end()) {
-      scenarios[static_cast<std::size_t>(p - 1)] = read_port_config(it->second);
-      c = make_twin_config(scenarios[static_cast<std::size_t>(p - 1)]);
+      Scenario& s = scenarios[static_cast<std::size_t>(p - 1)];
+      s = read_port_config(it->second);
+      try {
+        apply_command_line_model(s, o.model); // over the port file's own `model:`
+      } catch (const ScenarioError& e) {
+        throw std::invalid_argument(e.what());
+      }
+      c = make_twin_config(s);
     }
     c.cycle_s = o.master_cycle_ms * 1e-3;
     if (const auto& nvm = kept[static_cast<std::size_t>(p - 1)].nvm) c.nvm_image = *nvm; // newer than a port config's

@@ -36,6 +36,7 @@ struct ServeOptions {
   double modbus_idle_timeout_s = 10;      // a Modbus client silent this long is disconnected
   std::vector<std::string> modbus_writers; // with a token: client addresses that may write over Modbus
   double duration_s = 0;                  // > 0: stop by itself after this wall time
+  std::string model;                      // --model FILE: model card overrides for every port (issue 25)
 };
 
 // Throws std::invalid_argument (bad option values, unreadable files: exit 2);

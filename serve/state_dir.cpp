@@ -17,6 +17,7 @@
 
 #include "device_logic/device.hpp"
 #include "io/atomic_file.hpp"
+#include "twin/model_card.hpp"
 
 namespace sreh::serve {
 namespace {
@@ -38,7 +39,7 @@ std::optional<std::string> read_if_exists(const std::string& path) {
 bool nvm_image_sound(const std::vector<uint8_t>& image) {
   // A device refuses a bad image (magic, version, CRC, rows) and starts
   // factory-new instead, so its own image then differs from the one given.
-  const Device device(image);
+  const Device device(default_model_card().module_model().drive, image); // the memory does not depend on the drive
   return device.save_nvm() == image;
 }
 

@@ -46,6 +46,7 @@ struct CycleRequest {
   LoadSpec load = NoLoad{};       // at the start of every repetition (A-SIZE-19)
   int load_line = 0, load_column = 0; // of `load:` in the file (messages)
   double mounting_tilt_deg = 0;   // 0 vertical, 90 horizontal (A-TWIN-24)
+  ModuleModel module = default_module_model(); // model card, `--model FILE` (issue 25)
   double voltage_V = 24.0;
   double source_resistance_ohm = 0.0;
   double bus_capacitance_F = 0.0;

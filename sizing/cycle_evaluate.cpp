@@ -55,8 +55,8 @@ CycleEvaluation evaluate_cycle(const CycleRequest& rq, const CyclePlan& plan, co
   const TwinConfig cfg = sizing_twin_config(rq);
   const std::unique_ptr<Twin> owner = make_twin(cfg);
   Twin& twin = *owner;
-  const MotorModel motor;
-  const Thermal thermal(cfg.thermal);
+  const MotorModel& motor = rq.module.drive.motor;
+  const Thermal thermal(cfg.thermal, rq.module.thermal);
   const double cycle_s = cfg.cycle_s;
 
   CycleEvaluation ev;
@@ -226,7 +226,7 @@ CycleEvaluation evaluate_cycle(const CycleRequest& rq, const CyclePlan& plan, co
       ev.mean_loss_W = loss_s / total_s;
     }
   }
-  derive_figures(motor, rows, first_move_row, ev.last_repetition_row, cycle_s, rq.ambient_C, rq.thermal_margin_K, ev);
+  derive_figures(rq.module, rows, first_move_row, ev.last_repetition_row, cycle_s, rq.ambient_C, rq.thermal_margin_K, ev);
   // The same checks and margins as a single move (A-SIZE-5).
   judge_into(limit_figures(ev, scan, rq.voltage_V, rq.ambient_C, rq.thermal_margin_K), std::move(reasons), ev);
   if (keep_trace) ev.trace = rows;

@@ -43,8 +43,8 @@ std::string cycle_speed_torque_plot(const CycleRequest& rq, const CycleEvaluatio
   svg::Plot p = report_parts::speed_torque_plane(
       "cycle-speed-torque",
       fmt::format("Speed-torque plane: operating points of the cycle, motor envelope at {:.1f} V", rq.voltage_V));
-  auto envelope = [](double volts, const std::string& label, const char* color, double width, bool dashed) {
-    return report_parts::motor_envelope(volts, 1.02, label, color, width, dashed);
+  auto envelope = [&rq](double volts, const std::string& label, const char* color, double width, bool dashed) {
+    return report_parts::motor_envelope(rq.module.drive.motor, volts, 1.02, label, color, width, dashed);
   };
   p.series.push_back(envelope(rq.voltage_V, fmt::format("envelope {:.1f} V", rq.voltage_V), "#d62728", 1.8, false));
   for (double v : {16.0, 32.0}) {
@@ -107,10 +107,10 @@ std::string segment_time_plot(const CycleEvaluation& e) {
 } // namespace
 
 std::string temperature_plot(double mean_loss_W, double ambient_C, double thermal_margin_K,
-                             const std::optional<double>& time_to_trip_s) {
+                             const std::optional<double>& time_to_trip_s, const ThermalConstants& constants) {
   // Long enough to see the steady state (housing: 20 min) or the trip.
   const double duration_s = time_to_trip_s ? std::max(60.0, 1.3 * *time_to_trip_s) : 6000.0;
-  const std::vector<TemperaturePoint> curve = temperature_curve(mean_loss_W, ambient_C, duration_s, duration_s / 600.0);
+  const std::vector<TemperaturePoint> curve = temperature_curve(mean_loss_W, ambient_C, duration_s, duration_s / 600.0, constants);
   svg::Plot p;
   p.id = "temperature";
   p.title = "Module temperature under continuous cycling, from ambient (twin's thermal model, mean loss)";
@@ -176,7 +176,7 @@ std::string cycle_report_html(const CycleRequest& rq, const CycleResult& r) {
   o += "</table>\n<h2>Plots</h2>\n";
   o += segment_time_plot(e);
   if (!e.trace.empty()) o += cycle_speed_torque_plot(rq, e);
-  o += temperature_plot(e.mean_loss_W, rq.ambient_C, rq.thermal_margin_K, e.time_to_trip_s);
+  o += temperature_plot(e.mean_loss_W, rq.ambient_C, rq.thermal_margin_K, e.time_to_trip_s, rq.module.thermal);
   if (!e.trace.empty()) {
     svg::Plot q;
     q.id = "cycle-torque";
@@ -206,7 +206,9 @@ std::filesystem::path write_cycle_report(const std::filesystem::path& dir, const
 namespace {
 [[noreturn]] void no_reports() { throw std::runtime_error("this build has no reports (SREH_WITH_RENDER=OFF)"); }
 } // namespace
-std::string temperature_plot(double, double, double, const std::optional<double>&) { no_reports(); }
+std::string temperature_plot(double, double, double, const std::optional<double>&, const ThermalConstants&) {
+  no_reports();
+}
 std::string cycle_report_html(const CycleRequest&, const CycleResult&) { no_reports(); }
 std::filesystem::path write_cycle_report(const std::filesystem::path&, const CycleRequest&, const CycleResult&) {
   no_reports();

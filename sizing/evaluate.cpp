@@ -122,8 +122,8 @@ Evaluation evaluate(const SizingRequest& rq, const ParameterSetValues& set, bool
   const TwinConfig cfg = sizing_twin_config(rq);
   const std::unique_ptr<Twin> twin_owner = make_twin(cfg);
   Twin& twin = *twin_owner;
-  const MotorModel motor;
-  const Thermal thermal(cfg.thermal);
+  const MotorModel& motor = rq.module.drive.motor;
+  const Thermal thermal(cfg.thermal, rq.module.thermal);
 
   Evaluation ev;
   ev.set = set;
@@ -251,7 +251,7 @@ Evaluation evaluate(const SizingRequest& rq, const ParameterSetValues& set, bool
       ev.mean_loss_W = (cycle.loss * cycle_s + hold_loss * extra_s) / total_s;
     }
   }
-  derive_figures(motor, rows, first_move_row, last_cycle_row, cycle_s, rq.ambient_C, rq.thermal_margin_K, ev);
+  derive_figures(rq.module, rows, first_move_row, last_cycle_row, cycle_s, rq.ambient_C, rq.thermal_margin_K, ev);
   // Feasible with margin (A-SIZE-5); the same checks for a given set, for
   // every set the search tries and for cycles (judge(), limits.cpp).
   LimitFigures lf = limit_figures(ev, scan, rq.voltage_V, rq.ambient_C, rq.thermal_margin_K);

@@ -86,14 +86,14 @@ TorqueScan scan_torque(const std::vector<TraceRow>& rows, std::size_t from, Trac
   return scan;
 }
 
-void derive_figures(const MotorModel& motor, const std::vector<TraceRow>& rows, std::size_t from,
+void derive_figures(const ModuleModel& module, const std::vector<TraceRow>& rows, std::size_t from,
                     std::size_t cycle_from, double dt_s, double ambient_C, double thermal_margin_K, TraceFigures& f) {
-  f.supply = supply_figures(motor, rows, from, cycle_from, dt_s, f.supply.bus_max_V);
-  const ThermalEstimate th = estimate_thermal(f.mean_loss_W, ambient_C);
+  f.supply = supply_figures(module.drive.motor, rows, from, cycle_from, dt_s, f.supply.bus_max_V);
+  const ThermalEstimate th = estimate_thermal(f.mean_loss_W, ambient_C, module.thermal);
   f.steady_temperature_C = th.steady_C;
   f.time_to_warning_s = th.time_to_warning_s;
   f.time_to_trip_s = th.time_to_trip_s;
-  f.continuous_torque_Nm = continuous_torque_Nm(ambient_C, thermal_margin_K);
+  f.continuous_torque_Nm = continuous_torque_Nm(ambient_C, thermal_margin_K, module);
   f.utilisation.peak_torque_pct = 100.0 * (1.0 - f.min_torque_headroom);
   f.utilisation.rms_torque_pct = f.continuous_torque_Nm > 0 ? 100.0 * f.rms_torque_Nm / f.continuous_torque_Nm : 0;
   f.utilisation.thermal_margin_K = kTemperatureWarning_C - f.steady_temperature_C;

@@ -81,7 +81,7 @@ std::string numbers_table(const SizingRequest& rq, const SizingResult& r) {
 std::string speed_torque_plot(const SizingRequest& rq, const Evaluation& e) {
   svg::Plot p = report_parts::speed_torque_plane(
       "speed-torque", fmt::format("Speed-torque: operating points and motor capability at {:.1f} V", rq.voltage_V));
-  const svg::Series cap = report_parts::motor_envelope(rq.voltage_V, 1.05, "capability (motoring)", "#d62728", 1.6, false);
+  const svg::Series cap = report_parts::motor_envelope(rq.module.drive.motor, rq.voltage_V, 1.05, "capability (motoring)", "#d62728", 1.6, false);
   svg::Series motoring{"motoring", {}, {}, "#1f77b4", 1.0, false, true};
   svg::Series braking{"braking", {}, {}, "#ff7f0e", 1.0, false, true};
   for (const TraceRow& r : e.trace) {
@@ -150,9 +150,8 @@ svg::Plot position_plot(const std::string& id, const std::vector<TraceRow>& rows
   return p;
 }
 
-svg::Series motor_envelope(double voltage_V, double top_factor, const std::string& label, const char* color,
-                           double width, bool dashed) {
-  const MotorModel motor;
+svg::Series motor_envelope(const MotorModel& motor, double voltage_V, double top_factor, const std::string& label,
+                           const char* color, double width, bool dashed) {
   svg::Series s{label, {}, {}, color, width, dashed, false};
   const double top_dps = top_factor * rad_to_deg(voltage_V / motor.torque_constant_Nm_per_A);
   for (int k = 0; k <= 200; ++k) {
@@ -238,7 +237,7 @@ std::string size_report_html(const SizingRequest& rq, const SizingResult& r) {
     te.bands = {{{}, {}, -e.set.tolerance_deg, e.set.tolerance_deg, "tolerance window", "#2ca02c", 0.15}};
     o += report::figure(te);
   }
-  o += temperature_plot(e.mean_loss_W, rq.ambient_C, rq.thermal_margin_K, e.time_to_trip_s);
+  o += temperature_plot(e.mean_loss_W, rq.ambient_C, rq.thermal_margin_K, e.time_to_trip_s, rq.module.thermal);
   o += "<p class=\"note\">Travel time from the device's planner; settling and positioning simulated; torque "
        "sampled per IO-Link cycle; temperature from the twin's lumped thermal model at the cycle's mean loss "
        "(docs/assumptions/sizing.md).</p>\n" + io::html_page_close();

@@ -32,7 +32,7 @@ std::filesystem::path write_cycle_report(const std::filesystem::path& dir, const
 // Temperature vs time from ambient under the mean loss, with the 70 degC
 // warning, the 75 degC trip and the required margin (both reports).
 std::string temperature_plot(double mean_loss_W, double ambient_C, double thermal_margin_K,
-                             const std::optional<double>& time_to_trip_s);
+                             const std::optional<double>& time_to_trip_s, const ThermalConstants& constants);
 
 // Target times for the inverse plot when none are given: nice values
 // spanning the feasible positioning times of the grid.

@@ -27,7 +27,7 @@ svg::Plot speed_torque_plane(const std::string& id, const std::string& title);
 svg::Plot position_plot(const std::string& id, const std::vector<TraceRow>& rows);
 // The motor's speed-torque capability at `voltage_V` (MotorModel, manual
 // 3.5.3), from standstill to `top_factor` x the no-load speed.
-svg::Series motor_envelope(double voltage_V, double top_factor, const std::string& label, const char* color,
+svg::Series motor_envelope(const MotorModel& motor, double voltage_V, double top_factor, const std::string& label, const char* color,
                            double width, bool dashed);
 // The RMS point (issue 17, RMS torque at the RMS speed) as a series, and
 // the torque margin and continuous torque lines (A-SIZE-14) on `plot`.

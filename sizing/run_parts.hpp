@@ -41,6 +41,7 @@ TwinConfig sizing_twin_config(const Request& rq) {
   cfg.supply.bus_capacitance_F = rq.bus_capacitance_F;
   cfg.mounting_tilt_deg = rq.mounting_tilt_deg;
   cfg.thermal.ambient_C = rq.ambient_C;
+  cfg.module = rq.module;
   cfg.record_trace = true;
   return cfg;
 }
@@ -107,7 +108,7 @@ TorqueScan scan_torque(const std::vector<TraceRow>& rows, std::size_t from, Trac
 // After the RMS torque and the mean loss are set: the supply figures (rows
 // [from, end), RMS over [cycle_from, end)), the temperature, the continuous
 // torque and the utilisation (A-SIZE-6, 14, 15).
-void derive_figures(const MotorModel& motor, const std::vector<TraceRow>& rows, std::size_t from,
+void derive_figures(const ModuleModel& module, const std::vector<TraceRow>& rows, std::size_t from,
                     std::size_t cycle_from, double dt_s, double ambient_C, double thermal_margin_K, TraceFigures& f);
 
 // The limit figures of a run (without targets).

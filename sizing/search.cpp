@@ -51,7 +51,7 @@ double round_tenth(double v) { return std::round(v * 10.0) / 10.0; } // the devi
 // Every grid point with its planned travel; speeds the move never reaches
 // collapse into the lowest such speed (same trajectory, same behaviour).
 std::vector<Candidate> candidates(const SizingRequest& rq, double load_gcm2) {
-  const MotorModel motor;
+  const MotorModel& motor = rq.module.drive.motor;
   const double fixed_s = make_parameter_set(rq, MotionSetting{}, load_gcm2).wait_ms * 1e-3 +
                          rq.handshake_cycles * TwinConfig{}.cycle_s + rq.dwell_s; // per move, besides travel
   const double v_top = voltage_speed_limit_dps(rq.voltage_V);

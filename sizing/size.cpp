@@ -8,6 +8,7 @@
 #include "device_logic/units.hpp"
 #include "sizing/sizing.hpp"
 #include "sizing/twin_factory.hpp"
+#include "twin/model_card.hpp"
 
 namespace sreh::sizing {
 namespace {
@@ -20,6 +21,14 @@ void check_range(const char* option, double value, double lo, double hi, const c
 
 
 } // namespace
+
+ModuleModel module_from_option(const std::string& model_path) {
+  try {
+    return load_module_model(model_path);
+  } catch (const ModelCardError& e) {
+    throw SizingInputError(fmt::format("--model: {}", e.what()));
+  }
+}
 
 double validate(const SizingRequest& rq) {
   if (!std::isfinite(rq.angle_deg) || std::abs(rq.angle_deg) > kMaxAngle_deg) {

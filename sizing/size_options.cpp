@@ -37,6 +37,7 @@ const OptionSpec<S> kSizeOptions[] = {
     {"bus-capacitance-F", "Capacitance on the motor supply, F (with a source resistance)", &S::bus_capacitance_F, false, true},
     {"handshake-cycles", "IO-Link cycles per move for the PLC handshake (A-SIZE-16)", &S::handshake_cycles, false, true},
     {"mounting-tilt-deg", "Axis tilt from vertical, 0 .. 180 deg (90 horizontal: gravity acts); default: the load file's mounting:, else 0", &S::mounting_tilt_deg},
+    {"model", "Model card overrides (YAML as `sreh-twin model show` prints): the module's physical constants", &S::model},
     {"report", "Write an HTML sizing report into this folder", &S::report},
     {"cycle", "Size a multi-segment cycle from this YAML file (moves, dwells, load changes; docs/sizing.md)", &S::cycle},
     {"emit-scenario", "Write a scenario replaying the sized cycle in the twin to this file", &S::emit_scenario},
@@ -91,6 +92,7 @@ SizingRequest make_request(const SizeOptions& a) {
     rq.setting = MotionSetting{a.speed_dps.value_or(factory.speed_dps), a.accel_pct.value_or(factory.accel_pct),
                                a.jerk_pct.value_or(factory.jerk_pct)};
   }
+  rq.module = module_from_option(a.model);
   rq.keep_trace = !a.report.empty();
   return rq;
 }
@@ -123,6 +125,7 @@ SizeOutcome run_cycle(const SizeOptions& a) {
   refuse_with_cycle(a);
   SizeOutcome out;
   CycleRequest rq = parse_cycle_file(a.cycle);
+  rq.module = module_from_option(a.model);
   rq.keep_trace = !a.report.empty();
   out.cycle_result = size_cycle(rq);
   if (!a.report.empty()) {

@@ -36,6 +36,7 @@ struct SizeOptions {
   std::string report;        // HTML report folder ("" none)
   std::string cycle;         // --cycle FILE.yaml: a multi-segment cycle (the file holds load, supply, ...)
   std::string emit_scenario; // --emit-scenario FILE: a scenario replaying the sized cycle
+  std::string model;         // --model FILE: model card overrides (issue 25)
 };
 
 // Every option of `size` except the CLI's own --json.

@@ -62,6 +62,8 @@ struct SizingRequest {
   // along the axis, no torque), 90 = horizontal (an eccentric load's weight
   // loads the motor).
   double mounting_tilt_deg = 0.0;
+  // The module's constants (model card, `--model FILE`): issue 25.
+  ModuleModel module = default_module_model();
 };
 
 // What the motor supply sees (issue 17, A-SIZE-15), from the trace.
@@ -183,6 +185,10 @@ inline constexpr double kMaxThermalMargin_K = 45.0;
 inline constexpr double kTorqueMargin = 0.90;   // peak <= 90 % of capability
 inline constexpr double kTrackingMargin = 0.80; // max tracking error <= 80 % of index 87.1
 
+// `--model FILE` (issue 25): the model card with the file's overrides; ""
+// the card as it is. Throws SizingInputError naming the option, file and line.
+ModuleModel module_from_option(const std::string& model_path);
+
 // Checks the request against the module's limits; throws SizingInputError
 // with a message naming the option. Builds the load once to learn its
 // inertia (MJCF loads); returns it in g cm^2.
@@ -209,6 +215,6 @@ SizingResult search_gentlest(const SizingRequest& request, double load_gcm2);
 
 // Torque the module holds continuously at this ambient without reaching the
 // 70 degC warning minus the margin (A-SIZE-14), N m.
-double continuous_torque_Nm(double ambient_C, double thermal_margin_K);
+double continuous_torque_Nm(double ambient_C, double thermal_margin_K, const ModuleModel& module);
 
 } // namespace sreh::sizing

@@ -5,11 +5,11 @@
 #include <cstdlib>
 #include <stdexcept>
 #include <tuple>
-#include <thread>
 
 #include <fmt/format.h>
 
 #include "io/atomic_file.hpp"
+#include "io/cpus.hpp"
 #include "io/output_path.hpp"
 #include "io/shard.hpp"
 #include "sizing/report.hpp"
@@ -31,10 +31,11 @@ const OptionSpec<W> kSweepOptions[] = {
     {"timeout-ms", "Settling timeout in ms (index 64+n.7) [default: wait + 75 ms, >= 100 ms]", &W::timeout_ms},
     {"ambient-C", "Ambient temperature, degC", &W::ambient_C, false, true},
     {"cycles", "Back-and-forth cycles simulated per evaluation", &W::cycles, false, true},
-    {"threads", "Worker threads 1 .. 64 [default: one per core]", &W::threads},
+    {"threads", "Worker threads 1 .. 64 [default: the CPUs this process may use, fewer if SLURM_CPUS_PER_TASK says so]", &W::threads},
     {"csv", "Write the results to this CSV file (one row per grid point)", &W::csv},
     {"report", "Write an HTML report with plots into this folder", &W::report},
-    {"shard", "Run only shard i of N: i/N, auto (Slurm array), auto/N (Kubernetes indexed Job)", &W::shard},
+    {"model", "Model card overrides (YAML as `sreh-twin model show` prints): the module's physical constants", &W::model},
+    {"shard", "Run only shard i of N and start the CSV with a shard line for `sweep merge`: i/N (rerun of one task of a Slurm array 1-N: $SLURM_ARRAY_TASK_ID/N), auto (Slurm array, FIRST-LAST[:STEP]), auto/N (Kubernetes indexed Job)", &W::shard},
     {"targets-s", "Target positioning times in s for the heaviest-load plot, comma separated [default: 8 spanning the feasible times]", &W::targets_s},
 };
 
@@ -76,6 +77,7 @@ SweepRequest make_sweep_request(const SweepOptions& a) {
   rq.base.timeout_ms = a.timeout_ms;
   rq.base.ambient_C = a.ambient_C;
   rq.base.cycles = a.cycles;
+  rq.base.module = module_from_option(a.model);
   if (!a.shard.empty()) {
     if (!a.report.empty()) throw SizingInputError("--shard with --report: merge the parts, then report the whole sweep");
     try {
@@ -84,7 +86,12 @@ SweepRequest make_sweep_request(const SweepOptions& a) {
       throw SizingInputError(e.what());
     }
   }
-  rq.threads = a.threads > 0 ? a.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  try { // not hardware_concurrency(): a Slurm task or a cpuset may use fewer CPUs than the node has (issue 31)
+    rq.threads = a.threads > 0 ? a.threads
+                               : io::default_threads([](const char* n) -> const char* { return std::getenv(n); }, 64);
+  } catch (const std::invalid_argument& e) {
+    throw SizingInputError(e.what());
+  }
   return rq;
 }
 
@@ -99,7 +106,7 @@ SweepResult run_sweep_command(const SweepOptions& a, const SweepRequest& rq) {
   try {
     if (!a.csv.empty()) {
       io::write_file_atomic(a.csv, [&](std::ostream& out) {
-        if (rq.shards > 1) out << shard_marker(result); // for `sweep merge`
+        if (!a.shard.empty()) out << shard_marker(result); // for `sweep merge`, 1/1 too (issue 31)
         write_sweep_csv(out, result);
       });
     }

@@ -20,9 +20,10 @@ struct SweepOptions {
   double dwell_s = 0.0, tolerance_deg = 0.1, wait_ms = 25.0, ambient_C = 25.0;
   std::optional<double> timeout_ms;
   int cycles = 2;
-  int threads = 0; // 0: one per core
+  int threads = 0; // 0: io::default_threads (the CPUs this process may use, SLURM_CPUS_PER_TASK if fewer)
   std::string csv, report;
   std::string shard; // "i/N", "auto", "auto/N"; "" runs the whole grid
+  std::string model; // --model FILE: model card overrides (issue 25)
 };
 
 // Every option of `sweep`; list options take comma-separated values on the CLI.

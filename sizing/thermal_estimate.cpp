@@ -6,8 +6,8 @@
 
 namespace sreh::sizing {
 
-ThermalEstimate estimate_thermal(double mean_loss_W, double ambient_C) {
-  Thermal thermal(ThermalSpec{ambient_C, 1.0});
+ThermalEstimate estimate_thermal(double mean_loss_W, double ambient_C, const ThermalConstants& constants) {
+  Thermal thermal(ThermalSpec{ambient_C, 1.0}, constants);
   ThermalEstimate e;
   e.steady_C = thermal.steady_winding_C(mean_loss_W);
   if (e.steady_C < kTemperatureWarning_C) return e;
@@ -28,8 +28,8 @@ ThermalEstimate estimate_thermal(double mean_loss_W, double ambient_C) {
 }
 
 std::vector<TemperaturePoint> temperature_curve(double mean_loss_W, double ambient_C, double duration_s,
-                                                double step_s) {
-  Thermal thermal(ThermalSpec{ambient_C, 1.0});
+                                                double step_s, const ThermalConstants& constants) {
+  Thermal thermal(ThermalSpec{ambient_C, 1.0}, constants);
   std::vector<TemperaturePoint> out{{0.0, thermal.sensor_C()}};
   const int n = static_cast<int>(duration_s / step_s);
   for (int i = 1; i <= n; ++i) {
@@ -47,9 +47,9 @@ namespace sreh::sizing {
 // loss holds the module's steady temperature at the 70 degC warning minus
 // the required margin, at this ambient (the twin's own thermal model): what
 // the pro tools call the rated/continuous torque, derated for ambient.
-double continuous_torque_Nm(double ambient_C, double thermal_margin_K) {
-  const MotorModel motor;
-  const Thermal thermal(ThermalSpec{ambient_C, 1.0});
+double continuous_torque_Nm(double ambient_C, double thermal_margin_K, const ModuleModel& module) {
+  const MotorModel& motor = module.drive.motor;
+  const Thermal thermal(ThermalSpec{ambient_C, 1.0}, module.thermal);
   const double limit_C = kTemperatureWarning_C - thermal_margin_K;
   if (thermal.steady_winding_C(0.0) >= limit_C) return 0.0;
   double lo = 0.0, hi = 10.0 * motor.peak_torque_Nm();

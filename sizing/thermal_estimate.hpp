@@ -4,6 +4,7 @@
 // the times to the 70 degC warning (manual 7.3 115.1) and to the 75 degC
 // error (manual 7.2 114.3, the trip) integrate the same model from ambient.
 #pragma once
+#include "twin/module_model.hpp"
 #include <optional>
 #include <vector>
 
@@ -18,7 +19,7 @@ struct ThermalEstimate {
   std::optional<double> time_to_trip_s;    // none if 75 degC is never reached
 };
 
-ThermalEstimate estimate_thermal(double mean_loss_W, double ambient_C);
+ThermalEstimate estimate_thermal(double mean_loss_W, double ambient_C, const ThermalConstants& constants);
 
 // The sensed temperature from ambient under the constant mean loss, sampled
 // every `step_s` up to `duration_s` (for the report's plot): {t_s, C}.
@@ -27,6 +28,6 @@ struct TemperaturePoint {
   double C = 0;
 };
 std::vector<TemperaturePoint> temperature_curve(double mean_loss_W, double ambient_C, double duration_s,
-                                                double step_s);
+                                                double step_s, const ThermalConstants& constants);
 
 } // namespace sreh::sizing

@@ -53,6 +53,7 @@ struct RunArgs {
   uint64_t max_trace_mb = 2048;
   uint64_t max_file_mb = 4;
   std::string shard; // with a folder
+  std::string model; // --model FILE (issue 25)
 };
 
 // Progress on stderr, only for a person watching (a TTY) and only once a run
@@ -204,9 +205,20 @@ void check_size(const std::string& size) {
 }
 
 // The files a run reads: outputs may not be any of them.
+// run_scenario with its wall time (issue 25: `run --json` reports it and
+// the real-time factor; the simulation itself never reads a clock).
+RunResult timed_run(const Scenario& scenario, const RunOptions& options, double& wall_s) {
+  const auto start = std::chrono::steady_clock::now();
+  RunResult result = run_scenario(scenario, options);
+  wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
 std::vector<std::string> inputs_of(const RunArgs& a, const Scenario& s) {
   std::vector<std::string> in{a.scenario};
   if (s.device.nvm_image_path) in.push_back(*s.device.nvm_image_path);
+  if (!s.model_file.empty()) in.push_back(s.model_file);
+  if (!a.model.empty()) in.push_back(a.model);
   if (const auto* m = std::get_if<MjcfLoad>(&s.load)) in.push_back(m->path);
   return in;
 }
@@ -229,6 +241,7 @@ int run_folder_command(const RunArgs& a) {
   f.shard = a.shard;
   f.json = a.json;
   f.limits = a.limits;
+  f.model = a.model;
   f.limits.max_trace_bytes = a.max_trace_mb << 20;
   f.limits.max_file_bytes = static_cast<std::size_t>(a.max_file_mb << 20);
   return run_folder(f);
@@ -255,6 +268,7 @@ int run_command(RunArgs a) {
   Scenario scenario;
   try {
     scenario = parse_scenario_file(a.scenario, a.limits);
+    apply_command_line_model(scenario, a.model);
     check_run_bound(scenario, a.limits);
   } catch (const ScenarioError& e) {
     throw InputError(e.what());
@@ -296,6 +310,7 @@ int run_command(RunArgs a) {
   } catch (const std::runtime_error& e) {
     throw InputError(e.what());
   }
+  double wall_s = 0; // the simulation's own wall time: what real_time_factor compares with
   try {
     Progress progress(isatty(STDERR_FILENO) != 0);
     RunOptions options;
@@ -316,7 +331,7 @@ int run_command(RunArgs a) {
       progress.update(twin.time_s());
     };
     if (video) options.on_step = [&](const Step& step) { video->on_step(step); };
-    result = run_scenario(scenario, options);
+    result = timed_run(scenario, options, wall_s);
     if (video) {
       try {
         video->render(video_options(a), a.slowmo > 0);
@@ -327,7 +342,7 @@ int run_command(RunArgs a) {
 #else
     if (trace) options.trace_sink = [&](const TraceRow& row) { trace->row(row); };
     options.on_cycle = [&](const Twin& twin) { progress.update(twin.time_s()); };
-    result = run_scenario(scenario, options);
+    result = timed_run(scenario, options, wall_s);
 #endif
   } catch (const ScenarioError& e) {
     throw InputError(e.what());
@@ -343,7 +358,7 @@ int run_command(RunArgs a) {
 #ifdef SREH_WITH_RENDER
   if (report) write_report_dir(a, result, *report);
 #endif
-  output->print(std::cout, result);
+  output->print(std::cout, result, wall_s);
   return result.passed ? 0 : 1;
 }
 
@@ -363,9 +378,10 @@ SREH_REGISTER_COMMAND(10, [](CLI::App& app, int& exit_code) {
   cmd->add_flag("--json", args->json,
                 "Print one JSON object with the results on stdout (a folder: one object per file and line, JSON Lines)");
   cmd->add_option("--shard", args->shard,
-                  "With a folder: run only block i of N of its files: i/N, auto (Slurm array: SLURM_ARRAY_TASK_ID - "
-                  "SLURM_ARRAY_TASK_MIN + 1 of SLURM_ARRAY_TASK_COUNT) or auto/N (Kubernetes indexed Job: "
-                  "JOB_COMPLETION_INDEX + 1)");
+                  "With a folder: run only block i of N of its files: i/N (rerun of one task of a Slurm array 1-N: "
+                  "$SLURM_ARRAY_TASK_ID/N), auto (Slurm array FIRST-LAST[:STEP]: (SLURM_ARRAY_TASK_ID - "
+                  "SLURM_ARRAY_TASK_MIN) / SLURM_ARRAY_TASK_STEP + 1 of SLURM_ARRAY_TASK_COUNT) or auto/N "
+                  "(Kubernetes indexed Job: JOB_COMPLETION_INDEX + 1)");
   cmd->add_option("--video", args->video, "Render a video of the run: .mp4 (H.264), .webm (VP8) or .gif");
   cmd->add_option("--fps", args->fps, "Video frames per second, 1 .. 240")->check(CLI::Range(1, 240))->capture_default_str();
   cmd->add_option("--size", args->size, "Video size WIDTHxHEIGHT in pixels (even numbers, 16 .. 4096)")->capture_default_str();
@@ -377,6 +393,9 @@ SREH_REGISTER_COMMAND(10, [](CLI::App& app, int& exit_code) {
   cmd->add_option("--camera", args->camera, "Camera: default (fits module and load, 135 deg azimuth, 30 deg down) or top")
       ->capture_default_str();
   cmd->add_option("--report", args->report, "Write an HTML report folder (index.html, the video copied in) here");
+  cmd->add_option("--model", args->model,
+                  "Model card overrides (YAML, `sreh-twin model show` prints the format): the module's physical "
+                  "constants, applied over the scenario's own `model:`");
   cmd->add_option("--save-nvm", args->save_nvm, "Save the device's non-volatile memory at the end to this file");
   // Limits (issue 12, scenarios/README.md "Limits"): exceeding one is exit 2.
   Limits& l = args->limits;

@@ -103,6 +103,8 @@ SREH_REGISTER_COMMAND(70, [](CLI::App& app, int& exit_code) {
                   "With --token-file: client IP addresses allowed to write over Modbus (comma-separated); "
                   "others may read, ISDU reads included")
       ->delimiter(',');
+  cmd->add_option("--model", a->options.model,
+                  "Model card overrides for every port (YAML as `sreh-twin model show` prints): the module's constants");
   cmd->add_option("--duration-s", a->options.duration_s, "Stop by itself after this many wall-clock seconds")
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--print-modbus-map", a->print_map, "Print the Modbus register map and exit (binds nothing)");

@@ -73,6 +73,7 @@ int run_folder(const FolderArgs& a) {
   for (const std::string& f : files) {
     try {
       scenarios.push_back(parse_scenario_file(f, a.limits));
+      apply_command_line_model(scenarios.back(), a.model);
       check_setup(scenarios.back(), a.limits);
     } catch (const ScenarioError& e) {
       if (last_error) std::cerr << "sreh-twin: " << io::escape_control(*last_error) << "\n";
@@ -115,13 +116,16 @@ int run_folder(const FolderArgs& a) {
     (result.passed ? held : failed) += 1;
     output->print_file_line(std::cout, result, files[i], wall_s);
     std::cout.flush(); // a line per file as it finishes (a batch log shows progress)
-    scenarios[i] = Scenario{}; // done: its memory goes
+    std::vector<Step>().swap(scenarios[i].steps); // done: its steps' memory goes
   }
   if (!a.json) {
     std::cout << fmt::format("{} of {} scenarios held, {} failed{}{}\n", held, files.size(), failed,
                              errors ? fmt::format(", {} bad input", errors) : "",
                              shard_note(shard, shards, begin, end, all.size()));
   }
+  // After the runs: bad input found before them stays one line on stderr.
+  const std::string note = io::one_task_array_note(a.shard, getenv_ptr);
+  if (!note.empty()) std::cerr << "sreh-twin: " << note << "\n";
   return errors > 0 ? 2 : failed > 0 ? 1 : 0;
 }
 

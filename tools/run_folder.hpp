@@ -17,6 +17,7 @@ struct FolderArgs {
   std::string shard; // "" : the whole folder
   bool json = false;  // JSON Lines: one `run FILE --json` object (+ "file") per line
   Limits limits;
+  std::string model; // --model FILE: model card overrides for every scenario (issue 25)
 };
 
 // The scenario files of `dir` (paths as DIR/NAME), sorted; throws InputError

@@ -1,5 +1,6 @@
 #include "tools/run_output.hpp"
 
+#include <cmath>
 #include <ostream>
 
 #include <fmt/format.h>
@@ -30,9 +31,19 @@ void RunOutput::attach(RunOptions& options) {
   options.failure_sink = [this](const std::string& f) { failure_lines_->stream() << failure_line(f); };
 }
 
-void RunOutput::print(std::ostream& out, const RunResult& r) {
+namespace {
+// Wall time and real-time factor: measured, so they differ run to run; they
+// come last in the object so that everything before them is the
+// deterministic result (tools tests compare that part byte for byte).
+nlohmann::json timing(const RunResult& r, double wall_s) {
+  const double w = std::round(wall_s * 1e4) / 1e4;
+  return {{"wall_s", w}, {"real_time_factor", wall_s > 0 ? std::round(r.sim_time_s / wall_s * 10.0) / 10.0 : 0.0}};
+}
+} // namespace
+
+void RunOutput::print(std::ostream& out, const RunResult& r, double wall_s) {
   if (json_) {
-    json_stream_->write(out, r);
+    json_stream_->write(out, r, timing(r, wall_s));
     out << "\n";
     return;
   }
@@ -49,6 +60,8 @@ void RunOutput::print_failures(std::ostream& out) { failure_lines_->copy_to(out)
 
 void RunOutput::print_file_line(std::ostream& out, const RunResult& r, const std::string& file, double wall_s) {
   if (json_) {
+    // No wall time here: the lines of shards 1..N concatenated are byte for
+    // byte those of the unsharded run (interfaces.md, issue 17).
     json_stream_->write(out, r, {{"file", file}});
     out << "\n";
     return;

@@ -20,8 +20,9 @@ class RunOutput {
   // `json_line`: --json as one compact line (`run DIR --json`, JSON Lines).
   explicit RunOutput(bool json, bool json_line = false);
   void attach(RunOptions& options); // before the run; must outlive it
-  // `run FILE`: the summary, or the --json object.
-  void print(std::ostream& out, const RunResult& result);
+  // `run FILE`: the summary, or the --json object; `wall_s` the run's wall
+  // time (JSON: wall_s and real_time_factor = simulated / wall, last).
+  void print(std::ostream& out, const RunResult& result, double wall_s);
   // `run DIR`, per file: "PASS  FILE  NAME  (S s simulated, W s)" and the
   // failures under it, or --json: the object of `run FILE --json` with
   // "file", on one line.

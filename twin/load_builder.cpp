@@ -327,8 +327,40 @@ double flange_axis_inertia_kgm2(const mjModel* model, mjData* data) {
   return data->qM[model->dof_Madr[dof]];
 }
 
+namespace {
+// The model card's drive train onto the compiled module (A-TWIN-4,
+// A-TWIN-20, A-TWIN-22): the rotor's armature, bearing friction and drag;
+// the compliance's stiffness and damping; the flange's own inertia is the
+// rest of J_intern (manual 3.5.4). Then MuJoCo's derived constants again.
+void apply_mechanics(mjModel* m, const MechanicsConstants& c, const std::string& origin) {
+  const int rotor = mj_name2id(m, mjOBJ_JOINT, "rotor");
+  const int flange = mj_name2id(m, mjOBJ_JOINT, "flange");
+  const int flange_body = mj_name2id(m, mjOBJ_BODY, "flange");
+  if (rotor < 0 || flange < 0 || flange_body < 0) {
+    throw std::invalid_argument(origin + ": the module model needs joints \"rotor\", \"flange\" and body \"flange\"");
+  }
+  const double flange_own = kInternalInertia_kgm2 - c.rotor_inertia_kgm2;
+  if (!(flange_own > 0)) {
+    throw std::invalid_argument("model card: rotor_inertia " + num(c.rotor_inertia_kgm2) +
+                                " kg m^2 must be below J_intern = 0.115e-3 kg m^2 (manual 3.5.4)");
+  }
+  const int rotor_dof = m->jnt_dofadr[rotor];
+  const int flange_dof = m->jnt_dofadr[flange];
+  m->dof_armature[rotor_dof] = c.rotor_inertia_kgm2;
+  m->dof_damping[rotor_dof] = c.viscous_friction_Nms_per_rad;
+  m->dof_frictionloss[rotor_dof] = c.coulomb_friction_Nm;
+  m->jnt_stiffness[flange] = c.torsional_stiffness_Nm_per_rad;
+  m->dof_damping[flange_dof] = c.torsional_damping_Nms_per_rad;
+  const double* ipos = m->body_ipos + 3 * flange_body;
+  m->body_inertia[3 * flange_body + 2] =
+      flange_own - m->body_mass[flange_body] * (ipos[0] * ipos[0] + ipos[1] * ipos[1]);
+  MjDataPtr data(mj_makeData(m));
+  mj_setConst(m, data.get());
+}
+} // namespace
+
 BuiltModel build_model(const LoadSpec& load, const std::vector<HardStop>& hard_stops, double physics_dt_s,
-                       const std::string& module_model_path) {
+                       const MechanicsConstants& mechanics, const std::string& module_model_path) {
   if (!(physics_dt_s > 0.0) || !std::isfinite(physics_dt_s)) {
     throw std::invalid_argument("physics_dt_s must be positive, got " + num(physics_dt_s));
   }
@@ -337,6 +369,7 @@ BuiltModel build_model(const LoadSpec& load, const std::vector<HardStop>& hard_s
   built.model = compile_mjcf(compose_model_xml(load, hard_stops, module_model_path), origin);
   mjModel* m = built.model.get();
   m->opt.timestep = physics_dt_s;
+  apply_mechanics(m, mechanics, origin);
   if (hard_stops.empty()) {
     m->opt.disableflags |= mjDSBL_CONTACT; // nothing can touch: skip collision detection
   }

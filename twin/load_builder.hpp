@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "twin/mujoco_support.hpp"
+#include "twin/module_model.hpp"
 #include "twin/specs.hpp"
 
 namespace sreh {
@@ -36,7 +37,10 @@ struct BuiltModel {
 // Composes, compiles (timestep = physics_dt_s, contacts only with hard stops)
 // and checks the load: inertia about the axis <= 15'000 g cm^2, rigid (no
 // joints of its own). Throws std::invalid_argument naming the load or file.
+// The drive train's constants (rotor inertia, compliance, friction) come
+// from the model card: `mechanics` (issue 25).
 BuiltModel build_model(const LoadSpec& load, const std::vector<HardStop>& hard_stops, double physics_dt_s,
+                       const MechanicsConstants& mechanics = default_module_model().mechanics,
                        const std::string& module_model_path = default_module_model_path());
 
 // Inertia about the flange joint's axis incl. armature: qM at its dof after

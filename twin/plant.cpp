@@ -9,17 +9,22 @@
 namespace sreh {
 namespace {
 
-// Drive-train effects MuJoCo's joint has no element for (the Coulomb part
-// is the rotor joint's frictionloss, the viscous part its damping).
-// A-TWIN-22: Stribeck rise of the bearing friction near standstill: static
-// friction 1.5x the Coulomb 0.004 N m, fading out over ~0.02 rad/s.
-constexpr double kStribeckExcess_Nm = 0.002;
-constexpr double kStribeckSpeed_rad_s = 0.02;
-constexpr double kStribeckSmoothing_rad_s = 1e-3; // sign(w) smoothed: no chatter at rest
-// A-TWIN-23: cogging torque 0.005 N m (1 % of M), 60 periods per revolution
-// (a 10-pole / 12-slot motor: lcm(10, 12) = 60).
-constexpr double kCogging_Nm = 0.005;
-constexpr double kCoggingPeriodsPerRev = 60.0;
+// Physics steps per control period (issue 25): the drive keeps its own
+// clock, the simulator sub-steps it.
+int substeps_per_period(const PlantConfig& c) {
+  const double period_s = c.module.drive.control_period_s();
+  if (!(c.physics_dt_s > 0.0) || !(period_s > 0.0)) {
+    throw std::invalid_argument("physics_dt_s and the drive's control period must be positive");
+  }
+  const double ratio = period_s / c.physics_dt_s;
+  const double rounded = std::round(ratio);
+  if (rounded < 1 || std::abs(ratio - rounded) > 1e-9 * ratio) {
+    throw std::invalid_argument("sim.physics_dt_s (" + std::to_string(c.physics_dt_s) +
+                                " s) must divide the drive's control period (" + std::to_string(period_s) +
+                                " s, model card control_period): the physics sub-steps the drive's clock");
+  }
+  return static_cast<int>(rounded);
+}
 
 int require_id(const mjModel* m, mjtObj type, const char* name, const std::string& file) {
   const int id = mj_name2id(m, type, name);
@@ -32,16 +37,17 @@ int require_id(const mjModel* m, mjtObj type, const char* name, const std::strin
 } // namespace
 
 Plant::Plant(const PlantConfig& config)
-    : motor_(config.motor),
-      drive_(config.motor, config.physics_dt_s),
-      supply_(config.supply),
-      thermal_(config.thermal),
+    : drive_(config.module.drive.motor, config.module.drive.control_period_s(), config.physics_dt_s),
+      supply_(config.supply, config.module.supply),
+      thermal_(config.thermal, config.module.thermal),
       dt_s_(config.physics_dt_s),
+      substeps_(substeps_per_period(config)),
       config_(config) {
   if (!std::isfinite(config.mounting_tilt_deg) || config.mounting_tilt_deg < -180.0 || config.mounting_tilt_deg > 180.0) {
     throw std::invalid_argument("mounting tilt_deg must be within -180 .. 180, got " + std::to_string(config.mounting_tilt_deg));
   }
-  adopt_model(build_model(config.load, config.hard_stops, config.physics_dt_s, config.module_model_path));
+  adopt_model(build_model(config.load, config.hard_stops, config.physics_dt_s, config.module.mechanics,
+                          config.module_model_path));
   sensors_.encoder_counts = 0;
   sensors_.supply_V = supply_.bus_voltage_V();
   sensors_.temperature_C = thermal_.sensor_C();
@@ -89,6 +95,16 @@ double Plant::rotor_velocity_rad_s() const { return data_->qvel[rotor_dof_]; }
 double Plant::twist_rad() const { return data_->qpos[twist_qpos_]; }
 double Plant::angle_rad() const { return data_->qpos[rotor_qpos_] + data_->qpos[twist_qpos_]; }
 double Plant::velocity_rad_s() const { return data_->qvel[rotor_dof_] + data_->qvel[twist_dof_]; }
+// A-TWIN-37: MuJoCo's Euler is semi-implicit (velocity first, then the
+// position with the new velocity), so its position at the end of a step
+// leads the motion's true position by v dt / 2: first-order in the step.
+// The encoder sample takes that half step back, which makes the reading
+// second-order accurate, so the drive does not see a delay that shrinks
+// with the simulator's step (issue 25, docs/settling.md).
+double Plant::rotor_angle_sampled_rad() const {
+  return data_->qpos[rotor_qpos_] - 0.5 * dt_s_ * data_->qvel[rotor_dof_];
+}
+
 double Plant::stiffness_Nm_per_rad() const { return model_->jnt_stiffness[model_->dof_jntid[twist_dof_]]; }
 
 double Plant::gravity_torque_Nm() const {
@@ -98,10 +114,14 @@ double Plant::gravity_torque_Nm() const {
   return -data_->qfrc_bias[twist_dof_];
 }
 
+// Drive-train effects MuJoCo's joint has no element for (the Coulomb part
+// is the rotor joint's frictionloss, the viscous part its damping): the
+// Stribeck rise near standstill (A-TWIN-22) and cogging (A-TWIN-23).
 double Plant::drive_train_torque_Nm(double rotor_angle_rad, double rotor_speed_rad_s) const {
-  const double stribeck = -kStribeckExcess_Nm * std::exp(-std::pow(rotor_speed_rad_s / kStribeckSpeed_rad_s, 2)) *
-                          std::tanh(rotor_speed_rad_s / kStribeckSmoothing_rad_s);
-  const double cogging = kCogging_Nm * std::sin(kCoggingPeriodsPerRev * rotor_angle_rad);
+  const MechanicsConstants& c = config_.module.mechanics;
+  const double stribeck = -c.stribeck_excess_Nm * std::exp(-std::pow(rotor_speed_rad_s / c.stribeck_speed_rad_s, 2)) *
+                          std::tanh(rotor_speed_rad_s / c.friction_smoothing_rad_s);
+  const double cogging = c.cogging_torque_Nm * std::sin(c.cogging_periods_per_rev * rotor_angle_rad);
   return stribeck + cogging;
 }
 
@@ -110,12 +130,23 @@ const SensorReadings& Plant::step(const MotorCommand& cmd) {
   if (failed_) {
     throw std::runtime_error("plant: stepping after a MuJoCo failure");
   }
-  mjData* d = data_.get();
-  const double omega = d->qvel[rotor_dof_];
+  const double omega = data_->qvel[rotor_dof_];
   const double bus_V = supply_.bus_voltage_V();
   const double sign = cmd.torque_Nm >= 0.0 ? 1.0 : -1.0;
-  torque_limit_Nm_ = motor_.max_torque_Nm(omega, bus_V, sign);
-  drive_.step(cmd.torque_Nm, cmd.enabled, omega, bus_V);
+  torque_limit_Nm_ = motor().max_torque_Nm(omega, bus_V, sign);
+  drive_.control(cmd.torque_Nm, cmd.enabled, omega, bus_V); // the current loop: once per control period
+  for (int i = 0; i < substeps_; ++i) physics_step(cmd.enabled);
+  sensors_.encoder_counts = rad_to_internal_counts(rotor_angle_sampled_rad());
+  sensors_.supply_V = supply_.bus_voltage_V();
+  sensors_.temperature_C = thermal_.sensor_C();
+  return sensors_;
+}
+
+// One physics sub-step with the period's bridge voltage.
+void Plant::physics_step(bool enabled) {
+  mjData* d = data_.get();
+  const double omega = d->qvel[rotor_dof_];
+  drive_.advance(omega);
   applied_torque_Nm_ = drive_.mean_torque_Nm();
   d->ctrl[actuator_] = applied_torque_Nm_;
   // An external torque acts on the flange: a generalised force on both
@@ -132,17 +163,12 @@ const SensorReadings& Plant::step(const MotorCommand& cmd) {
   ++steps_;
 
   // Electrical side over the step.
-  copper_loss_W_ = drive_.mean_current_A() * drive_.mean_current_A() * motor_.winding_resistance_ohm;
+  copper_loss_W_ = drive_.mean_current_A() * drive_.mean_current_A() * motor().winding_resistance_ohm;
   // Bridge off: the winding's remaining current decays through the
   // freewheel diodes, drawing nothing from the bus.
-  electrical_power_W_ = cmd.enabled ? applied_torque_Nm_ * omega + copper_loss_W_ : 0.0;
+  electrical_power_W_ = enabled ? applied_torque_Nm_ * omega + copper_loss_W_ : 0.0;
   supply_.step(dt_s_, electrical_power_W_);
   thermal_.step(dt_s_, copper_loss_W_ + thermal_.speed_loss_W(omega));
-
-  sensors_.encoder_counts = rad_to_internal_counts(d->qpos[rotor_qpos_]);
-  sensors_.supply_V = supply_.bus_voltage_V();
-  sensors_.temperature_C = thermal_.sensor_C();
-  return sensors_;
 }
 
 // A hand turns the whole drive train: rotor and flange together, no twist

@@ -26,10 +26,9 @@
 
 namespace sreh {
 
-// The plant's configuration: the world (twin/specs.hpp, shared with
-// TwinConfig) plus the motor and the module's MJCF.
+// The plant's configuration: the world and the module's constants
+// (twin/specs.hpp, shared with TwinConfig) plus the module's MJCF.
 struct PlantConfig : WorldSpec {
-  MotorModel motor;
   std::string module_model_path = default_module_model_path();
 };
 
@@ -39,10 +38,11 @@ class Plant {
   Plant(const Plant&) = delete;
   Plant& operator=(const Plant&) = delete;
 
-  // One physics step: the torque reference goes through the current loop
-  // and winding (the bus voltage and back-EMF limit the current, so physics
-  // limits the torque even if a controller did not), steps MuJoCo, updates
-  // supply and thermal. A MuJoCo instability
+  // One control period of the drive (issue 25): the torque reference goes
+  // through the current loop (once per period) and the winding (the bus
+  // voltage and back-EMF limit the current, so physics limits the torque
+  // even if a controller did not); MuJoCo, supply and thermal advance in
+  // control_period / physics_dt_s sub-steps. A MuJoCo instability
   // (bad qpos/qvel/qacc, singular inertia) throws std::runtime_error and
   // the plant stays failed.
   const SensorReadings& step(const MotorCommand& cmd);
@@ -82,6 +82,7 @@ class Plant {
   double velocity_rad_s() const;        // flange
   double rotor_angle_rad() const;
   double rotor_velocity_rad_s() const;
+  double rotor_angle_sampled_rad() const; // what the encoder samples at a period's end (A-TWIN-37)
   double twist_rad() const;             // flange - rotor
   double applied_torque_Nm() const { return applied_torque_Nm_; }   // motor torque (kt x winding current)
   double motor_current_A() const { return drive_.mean_current_A(); }
@@ -89,9 +90,10 @@ class Plant {
   double gravity_torque_Nm() const;     // on the flange about the axis now (physical frame)
   double electrical_power_W() const { return electrical_power_W_; } // drawn from the bus (< 0 regenerating)
   double copper_loss_W() const { return copper_loss_W_; }
-  uint64_t steps() const { return steps_; }
+  uint64_t steps() const { return steps_; } // physics steps
   double time_s() const { return static_cast<double>(steps_) * dt_s_; } // integer clock, not d->time
   double physics_dt_s() const { return dt_s_; }
+  int substeps() const { return substeps_; } // physics steps per control period
 
   double load_inertia_kgm2() const { return load_inertia_kgm2_; } // about the axis, from qM
   double axis_inertia_kgm2() const { return axis_inertia_kgm2_; } // incl. J_intern
@@ -101,7 +103,8 @@ class Plant {
 
   const Supply& supply() const { return supply_; }
   const Thermal& thermal() const { return thermal_; }
-  const MotorModel& motor() const { return motor_; }
+  const MotorModel& motor() const { return config_.module.drive.motor; }
+  const ModuleModel& module() const { return config_.module; }
 
   // For renderers (renders/): the model and data; and the two visual hooks.
   const mjModel* model() const { return model_.get(); }
@@ -115,14 +118,15 @@ class Plant {
   void check_warnings();
   void adopt_model(BuiltModel built);
   double drive_train_torque_Nm(double rotor_angle_rad, double rotor_speed_rad_s) const;
+  void physics_step(bool enabled);
 
   MjModelPtr model_;
   MjDataPtr data_;
-  MotorModel motor_;
   MotorDrive drive_;
   Supply supply_;
   Thermal thermal_;
   double dt_s_;
+  int substeps_;
   PlantConfig config_; // the load, world and mounting it was built with (set_load rebuilds from it)
   int rotor_qpos_ = 0;   // joint "rotor": absolute rotor angle
   int rotor_dof_ = 0;

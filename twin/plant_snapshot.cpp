@@ -16,6 +16,7 @@ std::string world_difference(const WorldSpec& now, const WorldSpec& then) {
   if (now.physics_dt_s != then.physics_dt_s) return "physics_dt_s";
   if (now.mounting_tilt_deg != then.mounting_tilt_deg) return "mounting tilt_deg";
   if (now.hard_stops != then.hard_stops) return "hard_stops";
+  if (!(now.module == then.module)) return "model card";
   return {};
 }
 
@@ -60,7 +61,7 @@ void Plant::restore(const PlantSnapshot& s) {
     }
   };
   if (!(s.world.load == config_.load)) {
-    BuiltModel built = build_model(s.world.load, config_.hard_stops, dt_s_, config_.module_model_path);
+    BuiltModel built = build_model(s.world.load, config_.hard_stops, dt_s_, config_.module.mechanics, config_.module_model_path);
     check_fits(MjDataPtr(mj_makeData(built.model.get())).get());
     adopt_model(std::move(built));
     config_.load = s.world.load;

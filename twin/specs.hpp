@@ -7,6 +7,8 @@
 #include <variant>
 #include <vector>
 
+#include "twin/module_model.hpp"
+
 namespace sreh {
 
 // Attachable loads (issue 5). Masses in kg, lengths in m.
@@ -51,7 +53,13 @@ struct WorldSpec {
   // module's +y pointing up, so a load along +x at flange angle 0 feels the
   // largest gravity torque (m g r cos(angle)).
   double mounting_tilt_deg = 0.0;
+  // The physics step: divides the drive's control period (the model card's
+  // control_period), which it sub-steps (issue 25); only numerical error
+  // depends on it.
   double physics_dt_s = 1e-4;
+  // The module's constants: the model card (twin/model_card.hpp), with any
+  // --model overrides applied.
+  ModuleModel module = default_module_model();
 };
 
 } // namespace sreh

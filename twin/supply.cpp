@@ -5,6 +5,12 @@
 #include <stdexcept>
 
 namespace sreh {
+namespace {
+// A numerical floor, not a property of the module: P / U has no meaning
+// near 0 V, where the output stage is off anyway (A-TWIN-11).
+constexpr double kMinBusForCurrent_V = 1.0;
+} // namespace
+
 
 Supply::Supply(const SupplySpec& spec, const SupplyConstants& constants)
     : spec_(spec), constants_(constants), bus_V_(spec.voltage_V) {
@@ -24,7 +30,7 @@ void Supply::step(double dt_s, double load_power_W) {
   const double c = spec_.bus_capacitance_F;
   if (r == 0.0) { // ideal source: it sources and sinks anything
     bus_V_ = us;
-    load_A_ = load_power_W / std::max(bus_V_, constants_.min_bus_V);
+    load_A_ = load_power_W / std::max(bus_V_, kMinBusForCurrent_V);
     source_A_ = load_A_;
     return;
   }
@@ -33,7 +39,7 @@ void Supply::step(double dt_s, double load_power_W) {
     // Beyond the maximum transferable power the bus collapses to Us / 2.
     const double disc = us * us - 4.0 * r * load_power_W;
     bus_V_ = disc > 0 ? (us + std::sqrt(disc)) / 2.0 : us / 2.0;
-    load_A_ = load_power_W / std::max(bus_V_, constants_.min_bus_V);
+    load_A_ = load_power_W / std::max(bus_V_, kMinBusForCurrent_V);
     source_A_ = load_A_;
     return;
   }
@@ -44,7 +50,7 @@ void Supply::step(double dt_s, double load_power_W) {
   const int n = std::max(1, static_cast<int>(std::ceil(2.0 * dt_s / tau)));
   const double h = dt_s / n;
   for (int i = 0; i < n; ++i) {
-    const double u = std::max(bus_V_, constants_.min_bus_V);
+    const double u = std::max(bus_V_, kMinBusForCurrent_V);
     load_A_ = load_power_W / u;
     source_A_ = std::max(0.0, (us - bus_V_) / r);
     const double bleed_A = bus_V_ / constants_.bleed_resistance_ohm;

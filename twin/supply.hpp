@@ -2,19 +2,14 @@
 // source resistance the bus sags under load, and with a bus capacitance
 // braking energy charges it (no braking chopper: manual 7.2, error 114.4.2).
 #pragma once
+#include "twin/module_model.hpp"
 #include "twin/specs.hpp"
 
 namespace sreh {
 
-// A-TWIN-SUPPLY-*: docs/assumptions/twin.md.
-struct SupplyConstants {
-  double bleed_resistance_ohm = 1000.0; // bus discharge through the electronics (A-TWIN-11)
-  double min_bus_V = 1.0;               // floor for P / U (no current limit model below it)
-};
-
 class Supply {
  public:
-  explicit Supply(const SupplySpec& spec, const SupplyConstants& constants = {});
+  Supply(const SupplySpec& spec, const SupplyConstants& constants); // constants: model card
 
   // Source (power supply unit) voltage; the bus follows it.
   void set_source_voltage(double volts);

@@ -1,27 +1,16 @@
 // Module temperature (index 112; warning >= 70 degC 115.1, error >= 75 degC
 // 114.3): a lumped two-node model, winding -> housing -> ambient, heated by
 // copper losses and a small speed-dependent loss. Every constant is an
-// assumption (docs/assumptions/twin.md A-TWIN-THERMAL-*).
+// assumption on the model card (docs/assumptions/twin.md A-TWIN-THERMAL-*).
 #pragma once
+#include "twin/module_model.hpp"
 #include "twin/specs.hpp"
 
 namespace sreh {
 
-// Calibrated to behaviour, not to a drawing (A-TWIN-THERMAL-1..4): the
-// motor model's copper losses are small (R = 0.54 ohm, A-MOTOR-2: ~1.1 W
-// mean when cycling 180 deg with 15'000 g cm^2 and no dwell, ~0.1 W for
-// normal duty), so the sensed hot spot sits behind a high resistance.
-struct ThermalConstants {
-  double winding_capacity_J_per_K = 2.5;    // winding + power stage hot spot the sensor sees
-  double housing_capacity_J_per_K = 150.0;  // aluminium housing + flange (~0.17 kg)
-  double winding_to_housing_K_per_W = 50.0; // tau = 125 s
-  double housing_to_ambient_K_per_W = 8.0;  // free convection, tau = 20 min
-  double speed_loss_W_per_rad_s = 0.004;    // iron + bearing losses: 0.3 W at 4300 deg/s
-};
-
 class Thermal {
  public:
-  explicit Thermal(const ThermalSpec& spec, const ThermalConstants& constants = {});
+  Thermal(const ThermalSpec& spec, const ThermalConstants& constants); // constants: model card
 
   // Advances dt_s (scaled by ThermalSpec::time_scale) with `loss_W` into the winding.
   void step(double dt_s, double loss_W);

@@ -19,19 +19,21 @@ constexpr double kMinCycle_s = 0.002;
 constexpr double kMaxCycle_s = 0.1328;
 constexpr int kStartupCycles = 2; // one STARTUP, one PREOPERATE cycle (A-LINK-3)
 
-int steps_per_cycle(double cycle_s, double physics_dt_s) {
-  if (!(physics_dt_s > 0) || !(cycle_s > 0)) {
-    throw std::invalid_argument("twin: physics_dt_s and cycle_s must be positive");
+// Control periods per master cycle: the device runs on its own clock.
+int periods_per_cycle(double cycle_s, double control_period_s) {
+  if (!(control_period_s > 0) || !(cycle_s > 0)) {
+    throw std::invalid_argument("twin: the control period and cycle_s must be positive");
   }
   if (cycle_s < kMinCycle_s - 1e-12 || cycle_s > kMaxCycle_s + 1e-12) {
     throw std::invalid_argument("twin: master cycle " + std::to_string(cycle_s) +
                                 " s is outside 0.002 .. 0.1328 s (manual 1, IO-Link MasterCycleTime)");
   }
-  const double ratio = cycle_s / physics_dt_s;
+  const double ratio = cycle_s / control_period_s;
   const double rounded = std::round(ratio);
   if (rounded < 1 || std::abs(ratio - rounded) > 1e-9 * ratio) {
     throw std::invalid_argument("twin: cycle_s (" + std::to_string(cycle_s) +
-                                ") must be an integer multiple of physics_dt_s (" + std::to_string(physics_dt_s) + ")");
+                                ") must be an integer multiple of the drive's control period (" +
+                                std::to_string(control_period_s) + " s)");
   }
   return static_cast<int>(rounded);
 }
@@ -45,13 +47,15 @@ PlantConfig plant_config(const TwinConfig& c) {
 // Checks the cycle before the plant is built (a bad config throws cheaply).
 TwinRunState first_run_state(const TwinConfig& c) {
   TwinRunState r;
-  r.steps = steps_per_cycle(c.cycle_s, c.physics_dt_s);
+  r.steps = periods_per_cycle(c.cycle_s, c.module.drive.control_period_s());
   r.cycle_s = c.cycle_s;
   r.cycle_ns = seconds_to_ns(c.cycle_s);
   return r;
 }
 
-Device make_device(const TwinConfig& c) { return c.nvm_image ? Device(*c.nvm_image) : Device(); }
+Device make_device(const TwinConfig& c) {
+  return c.nvm_image ? Device(c.module.drive, *c.nvm_image) : Device(c.module.drive);
+}
 
 } // namespace
 
@@ -168,7 +172,7 @@ void Twin::set_ambient_C(double celsius) { impl_->plant.set_ambient_C(celsius); 
 
 void Twin::set_master_cycle_s(double cycle_s) {
   Impl& s = *impl_;
-  s.steps = steps_per_cycle(cycle_s, s.config.physics_dt_s); // throws before anything changes
+  s.steps = periods_per_cycle(cycle_s, s.config.module.drive.control_period_s()); // throws before anything changes
   s.cycle_s = cycle_s;
   s.config.cycle_s = cycle_s;
   s.cycle_ns = seconds_to_ns(cycle_s);
@@ -200,7 +204,7 @@ void Twin::power_cycle() {
 
 void Twin::replace_device() {
   power_off();
-  impl_->device = Device();     // factory-new, as delivered ...
+  impl_->device = Device(impl_->config.module.drive); // factory-new, as delivered ...
   impl_->device.power_off();    // ... and mounted unpowered
   power_on();
 }
@@ -248,10 +252,12 @@ void Twin::run_cycle() {
       s.last_pd_in = *in;
     }
   }
-  const double dt = s.config.physics_dt_s;
+  // The drive's clock (issue 25): one control step per period; the plant
+  // sub-steps the physics inside it.
+  const int64_t period_ns = s.config.module.drive.control_period_ns;
   for (int i = 0; i < s.steps; ++i) {
     s.ticked_counts = s.plant.sensors().encoder_counts;
-    const MotorCommand cmd = s.device.tick(dt, s.plant.sensors());
+    const MotorCommand cmd = s.device.tick_ns(period_ns, s.plant.sensors());
     s.plant.step(cmd);
   }
   if (s.turning && ++s.turn_done == s.turn_cycles) {

@@ -50,7 +50,7 @@ struct PlantSnapshot {
 // integer clocks, the hand turning the flange, what it collected. Twin::Impl
 // is built on it, so a field added here is snapshotted without more code.
 struct TwinRunState {
-  int steps = 0;             // physics steps per master cycle
+  int steps = 0;             // control periods per master cycle
   double cycle_s = 0;        // the master cycle now (as configured)
   ProcessDataOut pd_out{};
   bool outputs_valid = true;

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """One sizing point as a CSV row: LOAD_GCM2 ANGLE_DEG -> load,angle,speed,positioning_s,feasible.
 
-The unit of work of the scale-out examples (sweep_dask.py, sweep_parallel.sh).
+The unit of work of sweep_parallel.sh.
 """
 import sys
 

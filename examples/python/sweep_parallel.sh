@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Scale-out: the same sizing sweep as sweep_dask.py over GNU parallel
-# (issue 19): one process per grid point, rows in grid order (--keep-order),
-# so the output equals sweep_dask.py's.
+# Scale-out: a sizing sweep over GNU parallel through the Python API
+# (issue 19): one process per grid point (size_point.py), rows in grid order
+# (--keep-order). For the CLI's sweep CSV use `sweep --shard {}/N` and
+# `sweep merge` (docs/sizing.md); sweep_dask.py does that on a Dask cluster.
 #   PYTHONPATH=build/python examples/python/sweep_parallel.sh [JOBS] > parallel.csv
 # Across machines: add --sshlogin host1,host2 (sreh_twin installed there).
 set -euo pipefail

@@ -32,11 +32,12 @@ from ._core import (  # noqa: E402
     SIZE_OPTIONS,
     SWEEP_OPTIONS,
     models_dir,
+    model_card,
 )
 
 __all__ = [
     "Twin", "TwinSnapshot", "IsduError", "InputError", "run_scenario", "size", "sweep", "pd_out", "decode_pd_in",
-    "decode_pd_out", "STATES", "LEDS", "SIZE_OPTIONS", "SWEEP_OPTIONS", "models_dir", "env",
+    "decode_pd_out", "STATES", "LEDS", "SIZE_OPTIONS", "SWEEP_OPTIONS", "models_dir", "model_card", "env",
 ]
 
 

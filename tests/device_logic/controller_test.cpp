@@ -16,8 +16,10 @@
 #include "device_logic/position_controller.hpp"
 #include "device_logic/settling.hpp"
 #include "device_logic/units.hpp"
+#include "tests/device_logic/device_rig.hpp"
 
 namespace sreh {
+using sreh::test::card_drive;
 namespace {
 
 struct PlantSpec {
@@ -26,7 +28,7 @@ struct PlantSpec {
   double supply_V = 24.0;
   double coulomb_Nm = 0.01;      // test plant friction, not the twin's
   double viscous_Nms = 1e-5;
-  ControllerGains gains = default_controller_gains();
+  ControllerGains gains = card_drive().gains;
   double dt_s = 1e-4;
 };
 
@@ -66,7 +68,7 @@ class RigidPlant {
  private:
   PlantSpec s_;
   double j_;
-  MotorModel motor_;
+  MotorModel motor_ = card_drive().motor;
   double pos_ = 0;
   double vel_ = 0;
 };
@@ -77,7 +79,7 @@ MoveResult simulate_move(double distance_rad, const MotionLimits& limits, const 
                                 double max_settle_s = 1.0) {
   RigidPlant plant(spec);
   PositionController ctrl(spec.gains);
-  MotorModel motor;
+  MotorModel motor = card_drive().motor;
   const double j_conf = kInternalInertia_kgm2 + gcm2_to_kgm2(spec.configured_load_gcm2);
   const Profile profile = Profile::rest_to_rest(distance_rad, limits);
   MoveResult r;
@@ -121,8 +123,8 @@ MoveResult simulate_move(double distance_rad, const MotionLimits& limits, const 
 constexpr double kMaxTrackingError_rad = deg_to_rad(1.0); // manual 6.2 index 87.1 default
 
 ControllerGains without_delay() {
-  ControllerGains g = default_controller_gains();
-  g.delay_steps = 0;
+  ControllerGains g = card_drive().gains;
+  g.delay_periods = 0;
   return g;
 }
 
@@ -130,7 +132,7 @@ ControllerGains without_delay() {
 // load gets a lower velocity bandwidth, and the loop gain the motor side
 // must carry stays inside the discrete bound for the rotor alone.
 TEST(Controller, GainScheduleLowersBandwidthWithConfiguredLoad) {
-  const ControllerGains g = default_controller_gains();
+  const ControllerGains g = card_drive().gains;
   double last_wv = 1e300;
   double last_kv = 0;
   for (double load : {0.0, 1000.0, 5000.0, 10000.0, 15000.0}) {
@@ -149,12 +151,12 @@ TEST(Controller, GainScheduleLowersBandwidthWithConfiguredLoad) {
 }
 
 // A-CTRL-7: the torque computed from a sample reaches the current loop
-// `delay_steps` control periods later (3 by default: encoder transfer,
+// `delay_periods` control periods later (3 by default: encoder transfer,
 // computation, PWM reload).
 TEST(Controller, OutputIsDelayedByTheLoopDelay) {
-  PositionController delayed;
+  PositionController delayed(card_drive().gains);
   PositionController direct(without_delay());
-  const int n = delayed.gains().delay_steps;
+  const int n = delayed.gains().delay_periods;
   ASSERT_EQ(n, 3);
   delayed.reset(0.0);
   direct.reset(0.0);
@@ -201,7 +203,7 @@ TEST(Controller, SaturatesAtDirectionalLimitsWithoutWindup) {
 }
 
 TEST(Controller, InvalidStepLeavesStateAlone) {
-  PositionController c;
+  PositionController c(card_drive().gains);
   c.reset(0.0);
   EXPECT_EQ(c.update(KinematicState{1.0, 0, 0, 0}, 0.0, 1e-4, 1, 1, 0.0), 0.0);
   EXPECT_EQ(c.update(KinematicState{NAN, 0, 0, 0}, 0.0, 1e-4, 1, 1, 1e-4), 0.0);
@@ -209,7 +211,7 @@ TEST(Controller, InvalidStepLeavesStateAlone) {
 }
 
 TEST(Controller, VelocityEstimateFollowsQuantisedEncoder) {
-  PositionController c;
+  PositionController c(card_drive().gains);
   c.reset(0.0);
   // Constant 10 rad/s through the quantised encoder: the estimate converges to it.
   const double count = 2.0 * kPi / static_cast<double>(kInternalCountsPerRev);

@@ -253,7 +253,7 @@ TEST(FirmwareUpdate, FailedUpdateStaysInBootModeAcrossPowerCycles_9) {
   r.power_cycle();
   EXPECT_TRUE(r.dev.in_boot_mode());
   EXPECT_EQ(r.read_u(17343, 0), 2);
-  const Device restored(r.dev.save_nvm());
+  const Device restored(card_drive(), r.dev.save_nvm());
   EXPECT_TRUE(restored.in_boot_mode());
   EXPECT_EQ(r.dev.firmware_update(Device::firmware_image("2.0.1")), 0);
   r.power_cycle();
@@ -287,7 +287,7 @@ TEST(Persistence, ConfigurationSurvivesPowerCycleAndMemoryImage_6_2) {
   ASSERT_TRUE(r.write_u(82, 0, 1).ok());
   r.power_cycle();
   EXPECT_EQ(r.read_u(67, 4), 5000);
-  Device copy(r.dev.save_nvm());
+  Device copy(card_drive(), r.dev.save_nvm());
   EXPECT_EQ(copy.isdu_read(67, 4).data, r.dev.isdu_read(67, 4).data);
   EXPECT_EQ(copy.isdu_read(82, 0).data, r.dev.isdu_read(82, 0).data);
 }
@@ -297,7 +297,7 @@ TEST(Persistence, CorruptMemoryImageIsDeviceError_7_2_114_1) {
   Rig r;
   auto image = r.dev.save_nvm();
   image[image.size() / 2] ^= 0x5A;
-  Device d(image);
+  Device d(card_drive(), image);
   const auto in = decode_in(*d.exchange(encode(ProcessDataOut{})));
   EXPECT_EQ(in.error_code, 1u << 7);
   EXPECT_EQ(d.isdu_read(114, 1).data, std::vector<uint8_t>{1});

@@ -12,8 +12,12 @@
 #include "device_logic/motor_model.hpp"
 #include "device_logic/parameter_table.hpp"
 #include "device_logic/units.hpp"
+#include "twin/module_model.hpp"
 
 namespace sreh::test {
+
+// The module's drive as its model card gives it (models/sreh50-model.yaml).
+inline const DriveModel& card_drive() { return default_module_model().drive; }
 
 inline constexpr double kDt = 1e-4;
 inline constexpr int kStepsPerCycle = 20; // 2 ms IO-Link cycle
@@ -27,7 +31,7 @@ inline State state_of(const ProcessDataIn& in) {
 }
 
 struct Rig {
-  Device dev;
+  Device dev{card_drive()};
   ProcessDataOut pd{};
   ProcessDataIn in{};
   double angle_rad = 0;
@@ -40,7 +44,7 @@ struct Rig {
   bool link_up = true;
   bool outputs_valid = true;
   bool answered = false; // did the last exchange get an answer
-  MotorModel motor;
+  MotorModel motor = card_drive().motor;
 
   SensorReadings sensors() const {
     return {static_cast<int64_t>(std::llround(angle_rad * kInternalCountsPerRev / (2 * kPi))), supply_V, temperature_C};

@@ -10,6 +10,7 @@
 #include "tests/device_logic/device_rig.hpp"
 
 namespace sreh {
+using sreh::test::card_drive;
 namespace {
 
 using test::Rig;
@@ -129,7 +130,7 @@ TEST_P(SnapshotRestore, RestoredDeviceContinuesBitIdentically) {
 
   // A fresh device that has lived a different life, then restored.
   Rig b = plant_at_snapshot;
-  b.dev = Device();
+  b.dev = Device(card_drive());
   b.dev.power_off();
   EXPECT_FALSE(b.dev.snapshot() == snap);
   b.dev.restore(snap);
@@ -183,7 +184,7 @@ TEST(Snapshot, ScenarioCoversMovesSettlingAndFaults) {
 }
 
 TEST(Snapshot, EqualityNoticesEveryPart) {
-  Device d;
+  Device d{card_drive()};
   d.tick(1e-4, {}); // the first step records the maximum temperature (98, 99)
   const DeviceSnapshot s0 = d.snapshot();
   EXPECT_TRUE(d.snapshot() == s0);
@@ -191,13 +192,13 @@ TEST(Snapshot, EqualityNoticesEveryPart) {
   EXPECT_FALSE(d.snapshot() == s0);
   EXPECT_TRUE(d.snapshot().configuration == s0.configuration);
 
-  Device e;
+  Device e{card_drive()};
   e.tick(1e-4, {});
   const std::vector<uint8_t> inactive{0};
   ASSERT_TRUE(e.isdu_write(param::kTrackingErrorActive.index, param::kTrackingErrorActive.subindex, inactive).ok());
   EXPECT_FALSE(e.snapshot().configuration == s0.configuration); // configuration
 
-  Device f;
+  Device f{card_drive()};
   f.tick(1e-4, {});
   f.set_master_cycle_time(0.032); // the link watchdog: a monitor
   EXPECT_FALSE(f.snapshot().monitors == s0.monitors);
@@ -206,7 +207,7 @@ TEST(Snapshot, EqualityNoticesEveryPart) {
 
 TEST(Snapshot, TickTakesIntegerNanoseconds) {
   // tick(dt_s) converts once to ns, rounded: 0.1 ms is 100'000 ns exactly.
-  Device a, b;
+  Device a{card_drive()}, b{card_drive()};
   const SensorReadings s{1000, 24.0, 25.0};
   for (int i = 0; i < 1000; ++i) {
     a.tick(1e-4, s);
@@ -214,7 +215,7 @@ TEST(Snapshot, TickTakesIntegerNanoseconds) {
   }
   EXPECT_TRUE(a.snapshot() == b.snapshot());
   EXPECT_EQ(a.snapshot().state.time_ns, 100'000'000);
-  Device c;
+  Device c{card_drive()};
   c.tick(1e-4 + 4e-10, s); // rounds to the nearest ns
   EXPECT_EQ(c.snapshot().state.time_ns, 100'000);
   c.tick(-1.0, s);         // negative: no time passes

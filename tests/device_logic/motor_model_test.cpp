@@ -9,6 +9,7 @@
 #include "device_logic/motor_model.hpp"
 #include "device_logic/planner.hpp"
 #include "device_logic/units.hpp"
+#include "twin/module_model.hpp"
 
 namespace sreh {
 namespace {
@@ -42,14 +43,14 @@ double min_margin_Nm(const MotorModel& m, double speed_dps, double load_gcm2, do
 
 TEST(MotorModel, PeakTorqueAboveRatedTorque) {
   // manual 3.5.4: alpha100% needs M = 0.485 N m; the stage keeps headroom for control.
-  const MotorModel m;
+  const MotorModel m = default_module_model().drive.motor; // the model card's
   EXPECT_NEAR(m.peak_torque_Nm(), 0.60, 1e-12);
   EXPECT_GT(m.peak_torque_Nm(), kMotorTorque_Nm * 1.2);
 }
 
 TEST(MotorModel, NoLoadSpeedProportionalToVoltage) {
   // manual 3.5.3: the maximum possible speed decreases in proportion to the voltage.
-  const MotorModel m;
+  const MotorModel m = default_module_model().drive.motor; // the model card's
   const double at24 = speed_with_torque_dps(m, 1e-9, 24.0);
   EXPECT_NEAR(speed_with_torque_dps(m, 1e-9, 19.0) / at24, 19.0 / 24.0, 1e-6);
   EXPECT_NEAR(speed_with_torque_dps(m, 1e-9, 12.0) / at24, 12.0 / 24.0, 1e-6);
@@ -58,7 +59,7 @@ TEST(MotorModel, NoLoadSpeedProportionalToVoltage) {
 }
 
 TEST(MotorModel, TorqueNearMaxSpeedAt24V_A_MOTOR_2) {
-  const MotorModel m;
+  const MotorModel m = default_module_model().drive.motor; // the model card's
   // Full peak torque up to ~4200 deg/s, half of it still at 4300 deg/s: the
   // end of the S-curve's acceleration phase needs little torque (A-MOTOR-2).
   EXPECT_NEAR(speed_with_torque_dps(m, m.peak_torque_Nm(), 24.0), 4208.0, 5.0);
@@ -71,7 +72,7 @@ TEST(MotorModel, TorqueNearMaxSpeedAt24V_A_MOTOR_2) {
 }
 
 TEST(MotorModel, BrakingAlwaysHasPeakTorque) {
-  const MotorModel m;
+  const MotorModel m = default_module_model().drive.motor; // the model card's
   for (double v : {0.0, 10.0, 75.0, 200.0}) {
     EXPECT_EQ(m.max_torque_Nm(v, 19.0, -1.0), m.peak_torque_Nm());
     EXPECT_EQ(m.max_torque_Nm(-v, 19.0, 1.0), m.peak_torque_Nm());
@@ -79,7 +80,7 @@ TEST(MotorModel, BrakingAlwaysHasPeakTorque) {
 }
 
 TEST(MotorModel, SaturateClampsPerDirection) {
-  const MotorModel m;
+  const MotorModel m = default_module_model().drive.motor; // the model card's
   EXPECT_EQ(m.saturate(5.0, 0.0, 24.0), m.peak_torque_Nm());
   EXPECT_EQ(m.saturate(-5.0, 0.0, 24.0), -m.peak_torque_Nm());
   EXPECT_EQ(m.saturate(0.1, 0.0, 24.0), 0.1);
@@ -91,7 +92,7 @@ TEST(MotorModel, SaturateClampsPerDirection) {
 TEST(MotorModel, DefaultSetsFeasibleAt24VAcrossLoadRange) {
   // Parameter sets 1..7 default to 3000 deg/s, 100 %, 100 % (manual 6.2);
   // with the load configured right they need M plus friction at most.
-  const MotorModel m;
+  const MotorModel m = default_module_model().drive.motor; // the model card's
   for (double load = 0.0; load <= 15000.0; load += 1500.0) {
     EXPECT_GT(min_margin_Nm(m, 3000.0, load, 24.0), 0.09) << load;
     EXPECT_GT(min_margin_Nm(m, 4300.0, load, 24.0), 0.07) << load; // max setting too (A-MOTOR-2)
@@ -99,7 +100,7 @@ TEST(MotorModel, DefaultSetsFeasibleAt24VAcrossLoadRange) {
 }
 
 TEST(MotorModel, MaxSpeedInfeasibleAt19V) {
-  const MotorModel m;
+  const MotorModel m = default_module_model().drive.motor; // the model card's
   for (double load : {0.0, 15000.0}) {
     EXPECT_LT(min_margin_Nm(m, 4300.0, load, 19.0), 0.0) << load;
     EXPECT_GT(min_margin_Nm(m, 3300.0, load, 19.0), 0.0) << load; // ~4300 x 19/24 still works

@@ -10,9 +10,10 @@
 #include <vector>
 
 #include "device_logic/device.hpp"
+#include "twin/module_model.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  sreh::Device device;
+  sreh::Device device{sreh::default_module_model().drive};
   const sreh::SensorReadings sensors{};
   std::size_t i = 0;
   int requests = 0;

@@ -50,3 +50,28 @@ def test_bad_arguments(kwargs, message):
 def test_only_keywords():
     with pytest.raises(TypeError):
         sreh_twin.Twin(2000)
+
+
+def test_model_card_and_a_model_file(tmp_path):
+    """Issue 25: model_card() is `model show --json`; Twin(model=...) takes a
+    model file that overrides constants of the card (here the bearing
+    friction: three times the card's holds the free flange against a torque
+    that turns the card's module, manual 3.1)."""
+    card = sreh_twin.model_card()["constants"]
+    assert card["coulomb_friction"]["unit"] == "N m"
+    lo, hi = card["coulomb_friction"]["range"]
+    assert lo <= card["coulomb_friction"]["value"] <= hi
+    stiff = tmp_path / "stiff_bearing.yaml"
+    stiff.write_text("constants:\n  coulomb_friction: 0.012\n")
+    assert sreh_twin.model_card(stiff)["constants"]["coulomb_friction"]["value"] == 0.012
+    turned = {}
+    for name, model in (("card", None), ("stiff", stiff)):
+        twin = sreh_twin.Twin(model=model)
+        twin.external_torque(0.009)
+        twin.run_cycles(50)
+        turned[name] = abs(twin.state()["position_deg"])
+    assert turned["card"] > 1.0 and turned["stiff"] < 0.01
+    typo = tmp_path / "typo.yaml"
+    typo.write_text("constants:\n  coulomb_frition: 0.012\n")
+    with pytest.raises(sreh_twin.InputError, match="typo.yaml:2:3: unknown constant 'coulomb_frition'"):
+        sreh_twin.Twin(model=typo)

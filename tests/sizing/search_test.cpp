@@ -172,7 +172,7 @@ TEST(Utilisation, FiguresAreConsistent) {
   EXPECT_LT(e.continuous_torque_Nm, e.torque_capability_Nm);
   EXPECT_FALSE(e.binding_limit.empty());
   // Hotter ambient, less continuous torque.
-  EXPECT_LT(continuous_torque_Nm(45.0, 5.0), continuous_torque_Nm(25.0, 5.0));
+  EXPECT_LT(continuous_torque_Nm(45.0, 5.0, default_module_model()), continuous_torque_Nm(25.0, 5.0, default_module_model()));
 }
 
 } // namespace

@@ -72,7 +72,7 @@ TEST(Size, SettlingAndPositioningFromSimulationAreConsistent_Manual3_5_2) {
   EXPECT_GT(e.peak_torque_Nm, 0.0);
   EXPECT_GT(e.rms_torque_Nm, 0.0);
   EXPECT_LE(e.rms_torque_Nm, e.peak_torque_Nm);
-  EXPECT_EQ(e.torque_capability_Nm, MotorModel{}.peak_torque_Nm());
+  EXPECT_EQ(e.torque_capability_Nm, default_module_model().drive.motor.peak_torque_Nm());
   EXPECT_GT(e.steady_temperature_C, 25.0);
 }
 
@@ -250,12 +250,12 @@ TEST(ParameterSet, TopSpeedFallsWithVoltage_Manual3_5_3) {
 // Manual 7.3 115.1: warning at 70 degC; the steady state of the twin's
 // lumped model (A-TWIN-THERMAL-1: 58 K/W in series).
 TEST(Thermal, SteadyStateAndTimeToWarning_Manual7_3) {
-  const ThermalEstimate cool = estimate_thermal(0.5, 25.0);
+  const ThermalEstimate cool = estimate_thermal(0.5, 25.0, default_module_model().thermal);
   EXPECT_NEAR(cool.steady_C, 25.0 + 0.5 * 58.0, 1e-9);
   EXPECT_FALSE(cool.time_to_warning_s.has_value());
-  const ThermalEstimate hot = estimate_thermal(1.06, 25.0);
+  const ThermalEstimate hot = estimate_thermal(1.06, 25.0, default_module_model().thermal);
   ASSERT_TRUE(hot.time_to_warning_s.has_value());
-  const ThermalEstimate hotter = estimate_thermal(1.5, 25.0);
+  const ThermalEstimate hotter = estimate_thermal(1.5, 25.0, default_module_model().thermal);
   ASSERT_TRUE(hotter.time_to_warning_s.has_value());
   EXPECT_LT(*hotter.time_to_warning_s, *hot.time_to_warning_s);
   EXPECT_GT(*hot.time_to_warning_s, 60.0); // minutes, not seconds: the housing stores heat

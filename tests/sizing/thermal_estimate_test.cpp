@@ -11,14 +11,14 @@ namespace {
 
 // The sensed temperature after t seconds of the loss, integrated finely.
 double temperature_after(double loss_W, double ambient_C, double t_s) {
-  Thermal th(ThermalSpec{ambient_C, 1.0});
+  Thermal th(ThermalSpec{ambient_C, 1.0}, default_module_model().thermal);
   const int n = static_cast<int>(t_s / 0.01);
   for (int i = 0; i < n; ++i) th.step(0.01, loss_W);
   return th.sensor_C();
 }
 
 TEST(ThermalEstimate, TripFollowsWarningWhenTheSteadyStateIsAbove75_Manual7_2) {
-  const ThermalEstimate e = estimate_thermal(1.2, 25.0); // steady 25 + 1.2 x 58 K/W = 94.6 degC
+  const ThermalEstimate e = estimate_thermal(1.2, 25.0, default_module_model().thermal); // steady 25 + 1.2 x 58 K/W = 94.6 degC
   EXPECT_NEAR(e.steady_C, 25.0 + 1.2 * 58.0, 1e-9);
   ASSERT_TRUE(e.time_to_warning_s);
   ASSERT_TRUE(e.time_to_trip_s);
@@ -31,16 +31,16 @@ TEST(ThermalEstimate, TripFollowsWarningWhenTheSteadyStateIsAbove75_Manual7_2) {
 }
 
 TEST(ThermalEstimate, NoTripWhenTheSteadyStateStaysBelow75) {
-  const ThermalEstimate warm = estimate_thermal(0.8, 25.0); // steady 71.4 degC: warning only
+  const ThermalEstimate warm = estimate_thermal(0.8, 25.0, default_module_model().thermal); // steady 71.4 degC: warning only
   EXPECT_TRUE(warm.time_to_warning_s);
   EXPECT_FALSE(warm.time_to_trip_s);
-  const ThermalEstimate cool = estimate_thermal(0.1, 25.0);
+  const ThermalEstimate cool = estimate_thermal(0.1, 25.0, default_module_model().thermal);
   EXPECT_FALSE(cool.time_to_warning_s);
   EXPECT_FALSE(cool.time_to_trip_s);
 }
 
 TEST(ThermalEstimate, CurveStartsAtAmbientAndRisesTowardsTheSteadyState) {
-  const std::vector<TemperaturePoint> c = temperature_curve(0.5, 30.0, 600.0, 1.0);
+  const std::vector<TemperaturePoint> c = temperature_curve(0.5, 30.0, 600.0, 1.0, default_module_model().thermal);
   ASSERT_EQ(c.size(), 601u);
   EXPECT_EQ(c.front().C, 30.0);
   for (std::size_t i = 1; i < c.size(); ++i) EXPECT_GE(c[i].C, c[i - 1].C);

@@ -12,7 +12,7 @@ namespace sreh {
 namespace {
 
 TEST(Supply, IdealSourceHoldsItsVoltage) {
-  Supply s(SupplySpec{});
+  Supply s(SupplySpec{}, default_module_model().supply);
   s.step(1e-4, 50.0);
   EXPECT_EQ(s.bus_voltage_V(), 24.0);
   s.step(1e-4, -50.0);
@@ -22,7 +22,7 @@ TEST(Supply, IdealSourceHoldsItsVoltage) {
 }
 
 TEST(Supply, SourceResistanceSagsUnderLoad) {
-  Supply s(SupplySpec{24.0, 0.5, 0.0});
+  Supply s(SupplySpec{24.0, 0.5, 0.0}, default_module_model().supply);
   s.step(1e-4, 20.0);
   const double u = s.bus_voltage_V();
   EXPECT_LT(u, 24.0);
@@ -30,7 +30,7 @@ TEST(Supply, SourceResistanceSagsUnderLoad) {
 }
 
 TEST(Supply, BusCapacitorSagsThenRecovers) {
-  Supply s(SupplySpec{24.0, 0.5, 1e-3});
+  Supply s(SupplySpec{24.0, 0.5, 1e-3}, default_module_model().supply);
   for (int i = 0; i < 1000; ++i) s.step(1e-4, 30.0);
   EXPECT_LT(s.bus_voltage_V(), 23.5);
   for (int i = 0; i < 1000; ++i) s.step(1e-4, 0.0);
@@ -38,7 +38,7 @@ TEST(Supply, BusCapacitorSagsThenRecovers) {
 }
 
 TEST(Supply, RegenerationChargesTheCapacitorAboveTheSource) {
-  Supply s(SupplySpec{24.0, 0.5, 1e-3});
+  Supply s(SupplySpec{24.0, 0.5, 1e-3}, default_module_model().supply);
   for (int i = 0; i < 100; ++i) s.step(1e-4, -20.0); // 0.2 J back into the bus
   EXPECT_GT(s.bus_voltage_V(), 24.0);
   EXPECT_EQ(s.source_current_A(), 0.0); // a power supply cannot sink current

@@ -8,13 +8,13 @@ namespace sreh {
 namespace {
 
 TEST(Thermal, StartsAtAmbient) {
-  Thermal t(ThermalSpec{31.0, 1.0});
+  Thermal t(ThermalSpec{31.0, 1.0}, default_module_model().thermal);
   EXPECT_EQ(t.sensor_C(), 31.0);
   EXPECT_EQ(t.housing_C(), 31.0);
 }
 
 TEST(Thermal, RisesWithLossAndSettlesAtAmbientPlusPRth) {
-  Thermal t(ThermalSpec{25.0, 1.0});
+  Thermal t(ThermalSpec{25.0, 1.0}, default_module_model().thermal);
   const double loss_W = 1.0;
   double prev = t.sensor_C();
   for (int i = 0; i < 200; ++i) {
@@ -30,7 +30,7 @@ TEST(Thermal, RisesWithLossAndSettlesAtAmbientPlusPRth) {
 }
 
 TEST(Thermal, CoolsBackToAmbient) {
-  Thermal t(ThermalSpec{25.0, 1.0});
+  Thermal t(ThermalSpec{25.0, 1.0}, default_module_model().thermal);
   for (int i = 0; i < 600; ++i) t.step(1.0, 1.0);
   EXPECT_GT(t.sensor_C(), 50.0);
   for (int i = 0; i < 40000; ++i) t.step(1.0, 0.0);
@@ -38,8 +38,8 @@ TEST(Thermal, CoolsBackToAmbient) {
 }
 
 TEST(Thermal, TimeScaleMultipliesRates) {
-  Thermal slow(ThermalSpec{25.0, 1.0});
-  Thermal fast(ThermalSpec{25.0, 100.0});
+  Thermal slow(ThermalSpec{25.0, 1.0}, default_module_model().thermal);
+  Thermal fast(ThermalSpec{25.0, 100.0}, default_module_model().thermal);
   for (int i = 0; i < 100; ++i) slow.step(1.0, 10.0);
   for (int i = 0; i < 100; ++i) fast.step(0.01, 10.0);
   EXPECT_NEAR(fast.sensor_C(), slow.sensor_C(), 1e-9);
@@ -49,7 +49,7 @@ TEST(Thermal, TimeScaleMultipliesRates) {
 // 180 deg moves with 15000 g cm^2 and no dwell, plus speed loss) crosses 70
 // and 75 degC within minutes; normal duty (~0.15 W) stays far below.
 TEST(Thermal, HeavyDutyReachesWarningAndErrorInMinutesNormalDutyDoesNot) {
-  Thermal heavy(ThermalSpec{25.0, 1.0});
+  Thermal heavy(ThermalSpec{25.0, 1.0}, default_module_model().thermal);
   int warn_s = -1, error_s = -1;
   for (int s = 1; s <= 1800; ++s) {
     heavy.step(1.0, 1.2);
@@ -60,7 +60,7 @@ TEST(Thermal, HeavyDutyReachesWarningAndErrorInMinutesNormalDutyDoesNot) {
   EXPECT_LT(warn_s, 600);
   EXPECT_GT(error_s, warn_s);
   EXPECT_LT(error_s, 900);
-  Thermal normal(ThermalSpec{25.0, 1.0});
+  Thermal normal(ThermalSpec{25.0, 1.0}, default_module_model().thermal);
   EXPECT_LT(normal.steady_winding_C(0.15), 40.0);
 }
 

@@ -8,7 +8,7 @@
 #include "twin/twin.hpp"
 
 int main() {
-  sreh::Device bare; // the firmware alone links too
+  sreh::Device bare(sreh::default_module_model().drive); // the firmware with the card's drive
   if (bare.telemetry().state != sreh::State::MotorOff) return 1;
 
   sreh::TwinConfig config;
