@@ -55,6 +55,7 @@ Hub::Hub(const std::vector<TwinConfig>& configs, const HubOptions& options)
     tc.cycle_s = options.cycle_s;
     tc.record_trace = false; // a server runs for hours: no unbounded trace
     ports_.push_back(std::make_unique<Port>(tc));
+    persist_mutex_.push_back(std::make_unique<std::mutex>());
     Port& p = *ports_.back();
     p.faults.supply_V = tc.supply.voltage_V;
     p.faults.ambient_C = tc.thermal.ambient_C;
@@ -209,6 +210,7 @@ void Hub::stop() {
 
 void Hub::persist(int p) {
   if (state_ == nullptr) return;
+  std::lock_guard order(*persist_mutex_.at(static_cast<std::size_t>(p - 1)));
   std::vector<uint8_t> nvm;
   double flange_deg = 0;
   with_port(p, [&](Port& port) {

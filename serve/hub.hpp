@@ -160,6 +160,9 @@ class Hub {
   std::chrono::steady_clock::time_point stats_start_;
   uint64_t stats_cycle0_ = 0;
   StateDir* state_ = nullptr;
+  // One persist() per port at a time, capture and write together: two
+  // requests answered in order are written in that order (the later image last).
+  std::vector<std::unique_ptr<std::mutex>> persist_mutex_;
   std::thread saver_;
   std::mutex saver_mutex_;
   std::condition_variable saver_cv_;
