@@ -18,6 +18,7 @@ packages=(
   clang libclang-rt-14-dev                                # libFuzzer harnesses (tests/fuzz)
   libxml2-utils                                           # xmllint: checks the IODD-like export against our XSD
   libmodbus-dev libcpp-httplib-dev libmosquitto-dev       # serve: Modbus TCP, HTTP/JSON, MQTT
+  libssl-dev                                              # serve: HMAC of signed MQTT commands
   mosquitto mbpoll curl python3-pymodbus                  # serve's tests: broker and real PLC-style clients
   python3-serial-asyncio                                  # pymodbus' client package imports it even for TCP (only Recommended)
   python3-yaml                                            # serve's OpenAPI test reads docs/api/openapi.yaml

@@ -4,7 +4,7 @@
 // cycle against the wall clock.
 //   BM_Pacing/N/P           N ports for 10 s, pacing thread SCHED_FIFO priority P (0: normal): cycle-start lateness p50/p99/max,
 //                           late cycles (> 1 cycle behind), sim/wall ratio
-//   BM_ModbusRoundTrip      FC3 read of PD in (4 registers), libmodbus client, loopback
+//   BM_ModbusRoundTrip/C    FC3 read of PD in (4 registers), libmodbus client, loopback, C clients reading at once
 //   BM_HttpRoundTrip        GET /v1/ports/1/processdata, cpp-httplib client, keep-alive
 #include <benchmark/benchmark.h>
 #include <httplib.h>
@@ -105,12 +105,26 @@ void percentiles(benchmark::State& state, std::vector<double>& us) {
   state.counters["max_us"] = us.back();
 }
 
+// Arg: clients reading at once (this one measured, the others as fast as they can).
 void BM_ModbusRoundTrip(benchmark::State& state) {
   Hub hub(ports(1), HubOptions{});
   Plc plc(hub);
-  ModbusServer server(hub, ModbusOptions{"127.0.0.1", 0, true});
+  ModbusOptions mo;
+  mo.port = 0;
+  ModbusServer server(hub, mo);
   hub.start();
   server.start();
+  std::atomic<bool> others_run{true};
+  std::vector<std::thread> others;
+  for (int k = 1; k < state.range(0); ++k)
+    others.emplace_back([&] {
+      modbus_t* o = modbus_new_tcp("127.0.0.1", server.bound_port());
+      uint16_t r[4];
+      if (modbus_connect(o) == 0)
+        while (others_run.load()) modbus_read_registers(o, 1001, 4, r);
+      modbus_close(o);
+      modbus_free(o);
+    });
   modbus_t* c = modbus_new_tcp("127.0.0.1", server.bound_port());
   if (modbus_connect(c) != 0) state.SkipWithError("modbus connect");
   std::vector<double> us;
@@ -124,11 +138,13 @@ void BM_ModbusRoundTrip(benchmark::State& state) {
   }
   modbus_close(c);
   modbus_free(c);
+  others_run.store(false);
+  for (auto& t : others) t.join();
   server.stop();
   hub.stop();
   percentiles(state, us);
 }
-BENCHMARK(BM_ModbusRoundTrip)->Iterations(5000)->UseManualTime()->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_ModbusRoundTrip)->Arg(1)->Arg(4)->Iterations(5000)->UseManualTime()->Unit(benchmark::kMicrosecond);
 
 void BM_HttpRoundTrip(benchmark::State& state) {
   Hub hub(ports(1), HubOptions{});

@@ -44,6 +44,7 @@ struct Bounder {
             // down for down_s, then one cycle for the master's first exchange; `link: down` alone takes none
             b.sim_s = a.mode == LinkStep::Mode::Down ? 0.0 : cycles_s(a.down_s) + cycle_s;
           } else if constexpr (std::is_same_v<T, PowerCycleStep>) b.sim_s = cycles_s(a.off_s);
+          else if constexpr (std::is_same_v<T, ReplaceDeviceStep>) { b.sim_s = 8 * cycle_s; b.checks = a.restore ? 1 : 0; } // start-up, then the download
           else if constexpr (std::is_same_v<T, FirmwareStep>) {
             // The transfer over ISDU takes cycles per chunk (twin/firmware_transfer.hpp).
             const std::vector<uint8_t> image = Device::firmware_image(a.version, a.size_B);

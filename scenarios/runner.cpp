@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "scenarios/data_storage_master.hpp"
 #include "scenarios/isdu_value.hpp"
 #include "twin/firmware_transfer.hpp"
 #include "scenarios/snapshot.hpp"
@@ -54,6 +55,8 @@ class ScenarioRun {
       for (std::size_t i = 0; i < s_.device.isdu.size(); ++i) {
         isdu_write(s_.device.isdu[i], fmt::format("device.isdu[{}]", i + 1));
       }
+      data_storage_ = uses_replace(s_.steps);
+      if (data_storage_) ds_backup_ = ds_upload(*twin_); // the master's first upload (manual 8)
       run_steps(s_.steps);
     } catch (const StopRun&) {
       r_.stopped_early = true;
@@ -77,6 +80,9 @@ class ScenarioRun {
                                                                 "with --max-sim-s", o_.limits.max_sim_s));
     }
     twin_->run_cycle();
+    // The master serves the device's Data Storage upload request (3.2 bit 7).
+    if (data_storage_ && twin_->powered() && ds_upload_requested(*twin_))
+      if (auto b = ds_upload(*twin_)) ds_backup_ = std::move(b);
     const Telemetry t = twin_->telemetry();
     r_.max_temperature_C = std::max(r_.max_temperature_C, t.temperature_C);
     r_.min_supply_V = std::min(r_.min_supply_V, t.supply_V);
@@ -271,6 +277,25 @@ class ScenarioRun {
     twin_->power_on();
   }
 
+  // Manual 8: a new module; with `restore` the master downloads its backup in
+  // the new module's first OPERATE cycle (a refusal is a failed check).
+  void execute(const Step&, const std::string& id, const ReplaceDeviceStep& a) {
+    twin_->replace_device();
+    if (!a.restore) return;
+    for (int i = 0; i < 8 && twin_->iolink_led() != IoLinkLedMode::Operate; ++i) cycle();
+    const uint16_t e = ds_backup_ ? ds_download(*twin_, *ds_backup_) : kIsduIndexNotAvailable;
+    record(id, a.loc, "replace_device: the master restores its Data Storage backup", e == 0,
+           e == 0 ? "restored" : fmt::format("0x{:04X}", e), ds_backup_ ? "the new module refused it" : "no backup");
+  }
+
+  static bool uses_replace(const std::vector<Step>& steps) {
+    for (const Step& st : steps) {
+      if (std::holds_alternative<ReplaceDeviceStep>(st.action)) return true;
+      if (const auto* r = std::get_if<RepeatStep>(&st.action); r != nullptr && uses_replace(r->steps)) return true;
+    }
+    return false;
+  }
+
   void execute(const Step&, const std::string&, const SetStep& a) {
     if (a.ambient_C) twin_->set_ambient_C(*a.ambient_C);
     if (a.master_cycle_s) twin_->set_master_cycle_s(*a.master_cycle_s); // checked by the parser
@@ -403,6 +428,8 @@ class ScenarioRun {
   const Scenario& s_;
   const RunOptions& o_;
   std::unique_ptr<Twin> twin_;
+  bool data_storage_ = false;          // the scenario replaces the device: the master keeps a backup
+  std::optional<DsBackup> ds_backup_;
   ProcessDataOut pd_{}; // the PLC's outputs; kept across power cycles like a real PLC's
   RunResult r_;
   MoveStats finished_stats_; // of the records handed over by the twin

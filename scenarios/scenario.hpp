@@ -106,6 +106,11 @@ struct LinkStep {
 struct PdValidStep { bool valid = true; };
 // `power: cycle` (off_s 0) or `power: {off_s, turn_deg}` (manual 4.1).
 struct PowerCycleStep { double off_s = 0; double turn_deg = 0; };
+// `replace_device: restore | none` (manual 8): a factory-new module in this
+// one's place; `restore`: the master downloads its Data Storage backup once
+// the new module is up (the runner keeps that backup as a master does:
+// uploaded at the start and whenever the device asks).
+struct ReplaceDeviceStep { bool restore = true; SourceLoc loc; };
 // `set:`: rig settings that change mid-run.
 struct SetStep {
   std::optional<double> ambient_C;
@@ -133,7 +138,7 @@ struct RepeatStep {
 
 using StepAction = std::variant<PdStep, WaitStep, WaitUntilStep, ExpectStep, IsduReadStep, IsduWriteStep,
                                 TorqueStep, SupplyStep, LinkStep, PdValidStep, PowerCycleStep, CommentStep,
-                                FirmwareStep, RepeatStep, SetStep, SaveStep, LoadStep>;
+                                FirmwareStep, RepeatStep, SetStep, SaveStep, LoadStep, ReplaceDeviceStep>;
 
 struct Step {
   std::string number; // "3", or "5.2" inside a repeat

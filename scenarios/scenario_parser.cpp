@@ -47,7 +47,7 @@ const std::vector<std::string_view> kConditionKeys = {
 
 const std::vector<std::string_view> kStepKinds = {
     "pd", "wait_s", "wait_until", "expect", "isdu_read", "isdu_write", "torque", "supply",
-    "link", "pd_valid", "power", "comment", "firmware", "repeat", "set", "save", "load"};
+    "link", "pd_valid", "power", "comment", "firmware", "repeat", "set", "save", "load", "replace_device"};
 
 std::optional<State> state_from_name(const std::string& s) {
   for (State st : {State::MotorOff, State::Ready, State::Busy, State::Done, State::ErrorOn, State::ErrorOff}) {
@@ -317,7 +317,12 @@ class Parser {
       step.action = detail::parse_link(r_, v, kw);
     } else if (k == "pd_valid") step.action = PdValidStep{r_.boolean(v, kw)};
     else if (k == "power") step.action = detail::parse_power(r_, v, kw); else if (k == "comment") step.action = CommentStep{r_.text(v, kw)};
-    else if (k == "firmware") {
+    else if (k == "replace_device") {
+      const std::string how = r_.text(v, kw);
+      if (how != "restore" && how != "none")
+        r_.fail(v, fmt::format("{}: expected restore (the master's Data Storage backup) or none, got '{}'", kw, how));
+      step.action = ReplaceDeviceStep{how == "restore", step.loc};
+    } else if (k == "firmware") {
       FirmwareStep f = detail::parse_firmware(r_, v, kw);
       f.loc = step.loc;
       step.action = f;

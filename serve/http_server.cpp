@@ -2,20 +2,30 @@
 
 #include <httplib.h>
 
+#include <sys/socket.h>
+
 #include <atomic>
+#include <chrono>
+#include <cerrno>
+#include <cstring>
+#include <regex>
 #include <thread>
 
 #include <fmt/format.h>
 
 #include "io/html_page.hpp"
 #include "serve/front_impl.hpp"
+#include "serve/http_auth.hpp"
+#include "serve/http_workers.hpp"
 #include "serve/port_api.hpp"
 #include "serve/web_assets.hpp"
 
 namespace sreh::serve {
 namespace {
 
-constexpr int kMaxStreams = 8;        // concurrent event streams; more get 503
+constexpr int kMaxStreams = 16;       // concurrent event streams; more get 503 at once
+constexpr std::size_t kMaxThreads = 256; // connection threads (http_workers.hpp); plain requests keep > 200
+constexpr int kListenBacklog = 256;
 constexpr const char* kJsonType = "application/json";
 
 struct Route {
@@ -88,8 +98,19 @@ struct Front<HttpOptions>::Impl {
   std::atomic<bool> stopping{false};
   std::atomic<int> streams{0};
 
+  std::vector<std::regex> route_patterns; // kRoutes[i].pattern, for 405
+  int listen_fd = -1;                     // cpp-httplib's listening socket (owned by it)
+
   Impl(Hub& h, const HttpOptions& o) : hub(h), options(o) {
-    server.new_task_queue = [] { return new httplib::ThreadPool(12); };
+    for (const auto& r : kRoutes) route_patterns.emplace_back(r.pattern);
+    server.new_task_queue = [] { return new ConnectionThreads(kMaxThreads); };
+    // SO_REUSEADDR only: cpp-httplib's default adds SO_REUSEPORT, which let a
+    // second serve share the port silently (issue 27).
+    server.set_socket_options([this](socket_t sock) {
+      const int yes = 1;
+      setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+      listen_fd = sock;
+    });
     server.set_payload_max_length(o.max_body_bytes); // larger bodies: 413
     server.set_read_timeout(2, 0);
     server.set_write_timeout(2, 0);
@@ -105,15 +126,39 @@ struct Front<HttpOptions>::Impl {
       }
       send_error(res, 500, what);
     });
-    server.set_error_handler([](const httplib::Request& req, httplib::Response& res) {
+    server.set_error_handler([this](const httplib::Request& req, httplib::Response& res) {
       if (!res.body.empty()) return;
-      if (res.status == 404) send_error(res, 404, fmt::format("no route {} {}", req.method, req.path));
+      if (res.status == 404) {
+        const std::string allow = allowed_methods(req.path);
+        if (!allow.empty()) {
+          res.set_header("Allow", allow);
+          return send_error(res, 405, fmt::format("{} {}: method not allowed (allowed: {})", req.method, req.path, allow));
+        }
+        send_error(res, 404, fmt::format("no route {} {}", req.method, req.path));
+      }
       else if (res.status == 413) send_error(res, 413, "request body too large");
       else send_error(res, res.status, fmt::format("HTTP {}", res.status));
     });
     register_routes();
+    errno = 0;
     bound = o.port == 0 ? server.bind_to_any_port(o.host) : (server.bind_to_port(o.host, o.port) ? o.port : -1);
-    if (bound < 0) throw std::runtime_error(fmt::format("http: cannot listen on {}:{}", o.host, o.port));
+    if (bound < 0)
+      throw std::runtime_error(fmt::format("http: cannot listen on {}:{}: {}", o.host, o.port,
+                                           errno == EADDRINUSE ? "address in use"
+                                           : errno != 0       ? std::strerror(errno)
+                                                              : "cannot bind"));
+    // cpp-httplib listens with a backlog of 5: a burst of clients then waits
+    // for SYN retries (1 s, 2 s, ...). listen() again only enlarges it.
+    if (listen_fd >= 0) ::listen(listen_fd, kListenBacklog);
+  }
+
+  // "GET, PUT" for a path some route serves with other methods; "" if none does.
+  std::string allowed_methods(const std::string& path) const {
+    std::string allow;
+    for (std::size_t i = 0; i < route_patterns.size(); ++i)
+      if (std::regex_match(path, route_patterns[i]) && allow.find(kRoutes[i].method) == std::string::npos)
+        allow += fmt::format("{}{}", allow.empty() ? "" : ", ", kRoutes[i].method);
+    return allow;
   }
 
   // The port number from the path, or a 404 answer.
@@ -126,7 +171,8 @@ struct Front<HttpOptions>::Impl {
     return p;
   }
 
-  // Writes need "Authorization: Bearer <token>" when a token is configured.
+  // Writes need "Authorization: Bearer <token>" when a token is configured
+  // (the scheme name is case-insensitive, RFC 7235).
   bool authorised(const httplib::Request& req, httplib::Response& res) {
     if (options.token.empty()) return true;
     const std::string auth = req.get_header_value("Authorization");
@@ -135,7 +181,7 @@ struct Front<HttpOptions>::Impl {
       send_error(res, 401, "this server requires a bearer token for writes");
       return false;
     }
-    if (auth != "Bearer " + options.token) {
+    if (!bearer_matches(auth, options.token)) {
       send_error(res, 403, "wrong bearer token");
       return false;
     }
@@ -217,6 +263,7 @@ struct Front<HttpOptions>::Impl {
         if (method == "GET") return read_parameter(port, index, sub);
         return write_parameter(port, index, sub, body);
       });
+      if (write) hub.persist(p); // before the answer: an answered write survives a kill
       send_json(res, 200, out);
     });
   }
@@ -225,6 +272,8 @@ struct Front<HttpOptions>::Impl {
   void stream_events(int p, const httplib::Request& req, httplib::Response& res) {
     if (streams.fetch_add(1) >= kMaxStreams) {
       streams.fetch_sub(1);
+      res.set_header("Connection", "close"); // the surplus client gives its thread back at once
+      res.set_header("Retry-After", "1");
       return send_error(res, 503, fmt::format("at most {} event streams at a time", kMaxStreams));
     }
     uint64_t after = hub.latest_seq(p);
@@ -273,6 +322,10 @@ struct Front<HttpOptions>::Impl {
   int port() const { return bound; }
   void start() {
     thread = std::thread([this] { server.listen_after_bind(); });
+    // cpp-httplib's stop() does nothing until the listening loop runs: a stop
+    // right after start (a signal during start-up) would leave it in accept()
+    // for good. Return only once it runs.
+    for (int i = 0; i < 5000 && !server.is_running(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
   void stop() {
     stopping.store(true);

@@ -26,6 +26,7 @@ struct RouteInfo {
 std::vector<RouteInfo> http_routes();
 
 using HttpServer = Front<HttpOptions>;
-extern template class Front<HttpOptions>;
+// Instantiated in the .cpp (with its Impl); front.hpp declares the members only, so
+// no other file instantiates them (clang refuses an extern template before Impl).
 
 } // namespace sreh::serve

@@ -2,6 +2,8 @@
 
 #include "device_logic/parameter_ids.hpp"
 
+#include "device_logic/units.hpp"
+#include "serve/state_dir.hpp"
 #include "twin/plant.hpp"
 
 #include <pthread.h>
@@ -10,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <set>
 
 #include <fmt/format.h>
@@ -21,16 +24,21 @@ namespace {
 using Clock = std::chrono::steady_clock;
 constexpr std::size_t kEventRing = 2048;      // per port; a slow subscriber skips older ones
 constexpr std::size_t kJitterBuckets = 100000; // 1 us each, up to 100 ms
+constexpr std::size_t kJitterOverMax = 100000;  // exact values beyond that (a stall over 1 s re-anchors)
 
-double percentile(const std::vector<uint32_t>& hist, uint64_t total, double q) {
+// q-quantile of the 1 us histogram plus the exact values beyond it (no cap:
+// issue 27 found p99 stuck at 99999 us).
+double percentile(const std::vector<uint32_t>& hist, std::vector<double> over, uint64_t total, double q) {
   if (total == 0) return 0;
-  const auto want = static_cast<uint64_t>(std::ceil(q * static_cast<double>(total)));
+  const auto want = std::max<uint64_t>(1, static_cast<uint64_t>(std::ceil(q * static_cast<double>(total))));
   uint64_t seen = 0;
   for (std::size_t i = 0; i < hist.size(); ++i) {
     seen += hist[i];
     if (seen >= want) return static_cast<double>(i);
   }
-  return static_cast<double>(hist.size());
+  if (over.empty()) return static_cast<double>(hist.size());
+  std::sort(over.begin(), over.end());
+  return over[std::min<std::size_t>(over.size() - 1, static_cast<std::size_t>(want - seen - 1))];
 }
 
 std::string hex16(unsigned v) { return fmt::format("0x{:04X}", v); }
@@ -47,6 +55,7 @@ Hub::Hub(const std::vector<TwinConfig>& configs, const HubOptions& options)
     tc.cycle_s = options.cycle_s;
     tc.record_trace = false; // a server runs for hours: no unbounded trace
     ports_.push_back(std::make_unique<Port>(tc));
+    persist_mutex_.push_back(std::make_unique<std::mutex>());
     Port& p = *ports_.back();
     p.faults.supply_V = tc.supply.voltage_V;
     p.faults.ambient_C = tc.thermal.ambient_C;
@@ -139,6 +148,17 @@ void Hub::run_port_cycle(Port& port) {
   if (!port.failure.empty()) return;
   try {
     port.twin.run_cycle();
+    // A replacement module got through start-up: the master restores its backup.
+    if (port.ds_download_pending && port.twin.iolink_led() == IoLinkLedMode::Operate) {
+      port.ds_download_pending = false;
+      port.ds_last_error = port.ds_backup ? ds_download(port.twin, *port.ds_backup) : 0;
+      push_event(port, "data_storage",
+                 nlohmann::json{{"t_s", port.twin.time_s()},
+                                {"action", port.ds_backup ? "download" : "none (no backup)"},
+                                {"iolink_error", port.ds_last_error == 0 ? nlohmann::json(nullptr)
+                                                                         : nlohmann::json(hex16(port.ds_last_error))}}
+                     .dump());
+    }
     after_cycle(port);
   } catch (const std::exception& e) {
     port.failure = e.what();
@@ -157,20 +177,86 @@ void Hub::start() {
   if (running_.exchange(true)) return;
   reset_stats();
   thread_ = std::thread([this] { pace(); });
+  saver_ = std::thread([this] { save_loop(); });
+}
+
+void Hub::ds_startup() {
+  for (auto& p : ports_) {
+    std::lock_guard lock(p->mutex);
+    if (!p->ds_backup || p->ds_backup->checksum != ds_checksum(p->twin) || ds_upload_requested(p->twin)) {
+      if (auto b = ds_upload(p->twin)) {
+        p->ds_backup = std::move(b);
+        ++p->ds_generation;
+      }
+    }
+  }
 }
 
 void Hub::stop() {
   running_.store(false);
   if (thread_.joinable()) thread_.join();
+  {
+    std::lock_guard lock(saver_mutex_);
+    saver_cv_.notify_all();
+  }
+  if (saver_.joinable()) saver_.join();
+  if (state_ != nullptr)
+    for (int p = 1; p <= port_count(); ++p) persist(p); // the last word: what the module holds at power-off
   for (auto& p : ports_) {
     std::lock_guard lock(p->mutex);
     p->event_cv.notify_all();
   }
 }
 
+void Hub::persist(int p) {
+  if (state_ == nullptr) return;
+  std::lock_guard order(*persist_mutex_.at(static_cast<std::size_t>(p - 1)));
+  std::vector<uint8_t> nvm;
+  double flange_deg = 0;
+  with_port(p, [&](Port& port) {
+    nvm = port.twin.save_nvm();
+    flange_deg = rad_to_deg(port.twin.plant().angle_rad());
+  });
+  std::optional<DsBackup> ds;
+  uint64_t ds_generation = 0;
+  with_port(p, [&](Port& port) {
+    ds_generation = port.ds_generation;
+    if (port.ds_backup) ds = port.ds_backup;
+  });
+  try {
+    state_->save(p, nvm, flange_deg); // outside the port lock: the clock goes on while the file is written
+    if (ds) state_->save_ds(p, *ds, ds_generation);
+  } catch (const std::exception& e) {
+    static std::atomic<bool> told{false}; // a full disk: say it once, keep serving
+    if (!told.exchange(true)) std::cerr << "sreh-twin serve: warning: " << e.what() << "\n";
+  }
+}
+
+// Counters and a moving flange change without a request: checked every kPersistEvery.
+void Hub::save_loop() {
+  std::unique_lock lock(saver_mutex_);
+  while (running_.load()) {
+    saver_cv_.wait_for(lock, kPersistEvery, [this] { return !running_.load(); });
+    if (!running_.load()) break;
+    lock.unlock();
+    for (int p = 1; p <= port_count(); ++p) {
+      with_port(p, [](Port& port) { // the device asks the master to back its set up (manual 8)
+        if (port.failure.empty() && port.twin.powered() && ds_upload_requested(port.twin))
+          if (auto b = ds_upload(port.twin)) {
+            port.ds_backup = std::move(b);
+            ++port.ds_generation;
+          }
+      });
+      persist(p);
+    }
+    lock.lock();
+  }
+}
+
 void Hub::reset_stats() {
   std::lock_guard lock(stats_mutex_);
   std::fill(jitter_hist_.begin(), jitter_hist_.end(), 0);
+  jitter_over_us_.clear();
   cycles_ = late_ = 0;
   jitter_max_us_ = 0;
   busy_s_ = 0;
@@ -182,8 +268,8 @@ PacingStats Hub::stats() const {
   PacingStats s;
   s.cycles = cycles_;
   s.late_cycles = late_;
-  s.jitter_p50_us = percentile(jitter_hist_, cycles_, 0.50);
-  s.jitter_p99_us = percentile(jitter_hist_, cycles_, 0.99);
+  s.jitter_p50_us = percentile(jitter_hist_, jitter_over_us_, cycles_, 0.50);
+  s.jitter_p99_us = percentile(jitter_hist_, jitter_over_us_, cycles_, 0.99);
   s.jitter_max_us = jitter_max_us_;
   s.sim_time_s = static_cast<double>(cycles_) * options_.cycle_s;
   s.wall_time_s = std::chrono::duration<double>(Clock::now() - stats_start_).count();
@@ -220,7 +306,8 @@ void Hub::pace() {
     {
       std::lock_guard lock(stats_mutex_);
       const double us = std::max(0.0, late_s * 1e6);
-      jitter_hist_[std::min<std::size_t>(static_cast<std::size_t>(us), kJitterBuckets - 1)]++;
+      if (us < static_cast<double>(kJitterBuckets)) jitter_hist_[static_cast<std::size_t>(us)]++;
+      else if (jitter_over_us_.size() < kJitterOverMax) jitter_over_us_.push_back(us);
       jitter_max_us_ = std::max(jitter_max_us_, us);
       ++cycles_;
       if (late_s > period_s) ++late_;

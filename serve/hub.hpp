@@ -10,13 +10,17 @@
 #include <deque>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "scenarios/data_storage_master.hpp"
 #include "twin/twin.hpp"
 
 namespace sreh::serve {
+
+class StateDir; // serve/state_dir.hpp
 
 // What a port shows beyond the twin itself: the faults injected so far.
 struct FaultState {
@@ -26,6 +30,7 @@ struct FaultState {
   bool flange_blocked = false;
   double ambient_C = 25.0;
   uint32_t power_cycles = 0;
+  uint32_t device_replacements = 0;
 };
 
 // One entry of a port's event stream (SSE, MQTT): `type` is "state",
@@ -76,6 +81,13 @@ class Hub {
     std::vector<uint8_t> last_detailed_status; // index 37
     bool first = true;
     std::string failure; // the plant failed (MuJoCo instability): the port stops, the server goes on
+    // Data Storage at the master (scenarios/data_storage_master.hpp): the backup, whether it
+    // changed since it was written, and a download owed to a replacement
+    // module (made in its first cycle in OPERATE).
+    std::optional<DsBackup> ds_backup;
+    uint64_t ds_generation = 0;
+    bool ds_download_pending = false;
+    uint16_t ds_last_error = 0; // IO-Link code of the last refused download, 0 if none
   };
 
   Hub(const std::vector<TwinConfig>& configs, const HubOptions& options);
@@ -111,23 +123,49 @@ class Hub {
   // Runs one cycle of every port now (tests, without the pacing thread).
   void step_all();
 
+  // --state-dir (issue 27): set before start(). persist(p) writes port p's
+  // memory image and flange angle if they changed since the last write; the
+  // fronts call it after every request that may have changed them, before
+  // they answer, so an answered write survives a SIGKILL. A saver thread
+  // also calls it every kPersistEvery (counters, a flange that moved) and
+  // stop() once more for every port.
+  void set_state_dir(StateDir* state) { state_ = state; }
+  void persist(int p);
+  // The master's Data Storage start-up for every port (before start()): a
+  // backup read from the state folder is kept; without one, or when the
+  // module's set differs (serve restarted: the same module, its memory
+  // kept), the master uploads. While running, an upload request of the
+  // device (3.2 bit 7, e.g. after ParamDownloadStore) is served within
+  // kPersistEvery.
+  void ds_startup();
+  static constexpr std::chrono::milliseconds kPersistEvery{200};
+
  private:
   void pace();
   void after_cycle(Port& port);
   void run_port_cycle(Port& port);
+  void save_loop();
 
   HubOptions options_;
   std::vector<std::unique_ptr<Port>> ports_;
   std::atomic<bool> running_{false};
   std::thread thread_;
   mutable std::mutex stats_mutex_;
-  std::vector<uint32_t> jitter_hist_; // 1 us buckets, last one open-ended
+  std::vector<uint32_t> jitter_hist_; // 1 us buckets up to 100 ms
+  std::vector<double> jitter_over_us_; // the rare cycles later than that, exactly (bounded)
   uint64_t cycles_ = 0, late_ = 0;
   double jitter_max_us_ = 0;
   double busy_s_ = 0;
   std::atomic<bool> realtime_{false};
   std::chrono::steady_clock::time_point stats_start_;
   uint64_t stats_cycle0_ = 0;
+  StateDir* state_ = nullptr;
+  // One persist() per port at a time, capture and write together: two
+  // requests answered in order are written in that order (the later image last).
+  std::vector<std::unique_ptr<std::mutex>> persist_mutex_;
+  std::thread saver_;
+  std::mutex saver_mutex_;
+  std::condition_variable saver_cv_;
 };
 
 } // namespace sreh::serve

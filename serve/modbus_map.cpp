@@ -33,7 +33,7 @@ void fill_global(uint16_t* regs, int ports, double cycle_s) {
   regs[kCycle100us] = static_cast<uint16_t>(cycle_s * 1e4 + 0.5);
 }
 
-void fill_port(uint16_t* block, Hub::Port& port, PortRegisters& regs) {
+void fill_port(uint16_t* block, Hub::Port& port, const PortRegisters& regs, EventTracker& events) {
   Twin& twin = port.twin;
   const bool in_valid = port.faults.link_up && twin.device().powered();
   block[kStatus] = static_cast<uint16_t>((in_valid ? 1 : 0) | (port.outputs_valid ? 2 : 0) | (port.failure.empty() ? 0 : 4));
@@ -51,9 +51,9 @@ void fill_port(uint16_t* block, Hub::Port& port, PortRegisters& regs) {
   block[kDeviceStatus] = status.ok() && !status.data.empty() ? status.data[0] : 0;
   const IsduResult detailed = twin.isdu_read(param::kDetailedDeviceStatus.index, param::kDetailedDeviceStatus.subindex);
   const std::vector<uint8_t> ev = detailed.ok() ? detailed.data : std::vector<uint8_t>{};
-  if (ev != regs.last_events) {
-    ++regs.event_changes;
-    regs.last_events = ev;
+  if (ev != events.last_events) {
+    ++events.event_changes;
+    events.last_events = ev;
   }
   int n = 0;
   std::fill(block + kEvents, block + kEvents + 2 * kEventSlots, 0);
@@ -64,7 +64,7 @@ void fill_port(uint16_t* block, Hub::Port& port, PortRegisters& regs) {
     ++n;
   }
   block[kEventCount] = static_cast<uint16_t>(n);
-  block[kEventChanges] = regs.event_changes;
+  block[kEventChanges] = events.event_changes;
 }
 
 bool writable(int offset, int count) {
@@ -72,6 +72,13 @@ bool writable(int offset, int count) {
   const bool in_pd = offset >= kPdOut && end <= kPdOutValid + 1;
   const bool in_isdu = offset >= kIsduCommand && end <= kIsduData + kIsduDataCount;
   return count > 0 && (in_pd || in_isdu);
+}
+
+bool read_only_request(int offset, const std::vector<uint16_t>& values) {
+  const int count = static_cast<int>(values.size());
+  if (offset < kIsduCommand || offset + count > kIsduData + kIsduDataCount) return false;
+  if (!overlaps(offset, count, kIsduCommand, 1)) return true; // filling in the window runs nothing
+  return values[static_cast<std::size_t>(kIsduCommand - offset)] == 1;
 }
 
 std::string check_write(int offset, const std::vector<uint16_t>& values, const uint16_t* block) {
@@ -132,7 +139,8 @@ Json map_json(int ports) {
   j["byte_order"] = "big-endian within a register (high byte first), as the manual's process data octets";
   j["addressing"] = "0-based register numbers (PDU addresses)";
   j["read_function_codes"] = {3};
-  j["write_function_codes"] = {6, 16};
+  j["write_function_codes"] = {6, 16, 23};
+  j["read_write_function_codes"] = {23};
   j["unit_id"] = "any";
   j["global"] = Json{{"map_version", reg(kMapVersion, 1, "r", "layout version (1)")},
                      {"port_count", reg(kPortCount, 1, "r", "number of ports")},

@@ -51,21 +51,29 @@ inline constexpr int kPortUsed = kEvents + 2 * kEventSlots; // registers after t
 inline int port_base(int p) { return p * kPortBlock; }
 inline int register_count(int ports) { return (ports + 1) * kPortBlock; }
 
-// What the map keeps per port besides the twin: the last ISDU answer.
+// A client connection's ISDU window on one port (issue 27: per connection,
+// so two PLCs on one port never see each other's requests or answers).
 struct PortRegisters {
   std::vector<uint16_t> request = std::vector<uint16_t>(kIsduRequestCount, 0);
   std::vector<uint16_t> response = std::vector<uint16_t>(kRespCount, 0);
+};
+
+// What the map keeps per port for every client: the pending events last seen.
+struct EventTracker {
   std::vector<uint8_t> last_events; // index 37 as last seen
   uint16_t event_changes = 0;
 };
 
-// Fills a port's block (kPortBlock registers at `block`) from the twin; the
-// caller holds the port lock.
-void fill_port(uint16_t* block, Hub::Port& port, PortRegisters& regs);
+// Fills a port's block (kPortBlock registers at `block`) from the twin and
+// the connection's ISDU window; the caller holds the port lock.
+void fill_port(uint16_t* block, Hub::Port& port, const PortRegisters& regs, EventTracker& events);
 void fill_global(uint16_t* regs, int ports, double cycle_s);
 
 // Whether [offset, offset + count) of a port block may be written.
 bool writable(int offset, int count);
+// Whether a write only touches the connection's own ISDU window and runs no
+// ISDU write (allowed without write rights: an ISDU read is a read).
+bool read_only_request(int offset, const std::vector<uint16_t>& values);
 // Validates a write before it is applied: "" if fine, else why not (the
 // server answers exception 03, illegal data value).
 std::string check_write(int offset, const std::vector<uint16_t>& values, const uint16_t* block);

@@ -1,26 +1,36 @@
 #include "serve/modbus_server.hpp"
 
 #include <arpa/inet.h>
-#include <modbus/modbus.h>
+#include <fcntl.h>
+#include <netdb.h>
 #include <netinet/in.h>
-#include <sys/select.h>
+#include <netinet/tcp.h>
+#include <poll.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cstring>
+#include <list>
 #include <stdexcept>
-#include <vector>
+#include <thread>
 
 #include <fmt/format.h>
 
 #include "serve/front_impl.hpp"
-#include "serve/modbus_map.hpp"
+#include "serve/modbus_frame.hpp"
+#include "serve/modbus_handler.hpp"
 
 namespace sreh::serve {
 namespace {
-constexpr int kMaxClients = 32;
-constexpr int kHeader = 7; // MBAP header: transaction, protocol, length, unit id
+
+using Clock = std::chrono::steady_clock;
+constexpr auto kFrameDeadline = std::chrono::milliseconds(1000); // a started frame must be in by then
+constexpr int kFramesPerTurn = 8;         // then the next client gets its turn
+constexpr std::size_t kMaxPendingOut = 64 * 1024; // a client that does not read its answers is dropped
+constexpr int kPollMs = 20;
 
 int fd_port(int fd) {
   sockaddr_storage addr{};
@@ -30,142 +40,203 @@ int fd_port(int fd) {
   if (addr.ss_family == AF_INET6) return ntohs(reinterpret_cast<sockaddr_in6*>(&addr)->sin6_port);
   return -1;
 }
+
+std::string peer_address(int fd) {
+  sockaddr_storage addr{};
+  socklen_t len = sizeof addr;
+  if (getpeername(fd, reinterpret_cast<sockaddr*>(&addr), &len) != 0) return "";
+  char text[INET6_ADDRSTRLEN] = {};
+  if (addr.ss_family == AF_INET)
+    inet_ntop(AF_INET, &reinterpret_cast<sockaddr_in*>(&addr)->sin_addr, text, sizeof text);
+  else if (addr.ss_family == AF_INET6)
+    inet_ntop(AF_INET6, &reinterpret_cast<sockaddr_in6*>(&addr)->sin6_addr, text, sizeof text);
+  return text;
+}
+
+// Bound and listening, SO_REUSEADDR only (no SO_REUSEPORT: a second server
+// on the same port must fail, issue 27).
+int listen_on(const std::string& host, int port) {
+  addrinfo hints{};
+  hints.ai_family = AF_UNSPEC;
+  hints.ai_socktype = SOCK_STREAM;
+  hints.ai_flags = AI_PASSIVE | AI_NUMERICSERV;
+  addrinfo* res = nullptr;
+  const std::string service = std::to_string(port);
+  if (const int rc = getaddrinfo(host.c_str(), service.c_str(), &hints, &res); rc != 0)
+    throw std::runtime_error(fmt::format("modbus: cannot listen on {}:{}: {}", host, port, gai_strerror(rc)));
+  int err = 0;
+  int fd = -1;
+  for (addrinfo* a = res; a != nullptr && fd < 0; a = a->ai_next) {
+    fd = socket(a->ai_family, a->ai_socktype | SOCK_CLOEXEC | SOCK_NONBLOCK, a->ai_protocol);
+    if (fd < 0) {
+      err = errno;
+      continue;
+    }
+    const int yes = 1;
+    setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes); // restart while old connections linger in TIME_WAIT
+    if (bind(fd, a->ai_addr, a->ai_addrlen) != 0 || listen(fd, 64) != 0) {
+      err = errno;
+      close(fd);
+      fd = -1;
+    }
+  }
+  freeaddrinfo(res);
+  if (fd < 0)
+    throw std::runtime_error(fmt::format("modbus: cannot listen on {}:{}: {}", host, port,
+                                         err == EADDRINUSE ? "address in use" : std::strerror(err)));
+  return fd;
+}
+
+struct Client {
+  Client(int fd_, int ports) : fd(fd_), session(ports), last_activity(Clock::now()) {}
+  int fd;
+  modbus::Session session;
+  std::vector<uint8_t> in, out;
+  Clock::time_point last_activity;
+  Clock::time_point frame_start; // when the first octet of the unfinished frame came
+  bool eof = false;      // the client closed its side: answer what is in, then close
+  bool closing = false;  // close now, without answering more
+};
+
 } // namespace
 
 template <>
 struct Front<ModbusOptions>::Impl {
   Hub& hub;
   ModbusOptions options;
-  modbus_t* ctx = nullptr;
-  modbus_mapping_t* mapping = nullptr;
   int listen_fd = -1;
-  std::vector<int> clients;
-  std::vector<modbus::PortRegisters> regs;
+  std::list<Client> clients;
+  modbus::EventTrackers events;
   std::atomic<bool> running{false};
   std::thread thread;
 
-  Impl(Hub& h, const ModbusOptions& o) : hub(h), options(o), regs(static_cast<std::size_t>(h.port_count())) {
-    const std::string service = std::to_string(o.port);
-    ctx = modbus_new_tcp_pi(o.host.c_str(), service.c_str());
-    if (ctx == nullptr) throw std::runtime_error(fmt::format("modbus: cannot use {}:{}", o.host, o.port));
-    // A client that stops in the middle of a frame costs at most 200 ms.
-    modbus_set_byte_timeout(ctx, 0, 200000);
-    modbus_set_indication_timeout(ctx, 0, 200000);
-    listen_fd = modbus_tcp_pi_listen(ctx, 16);
-    if (listen_fd < 0) {
-      const std::string why = modbus_strerror(errno);
-      modbus_free(ctx);
-      throw std::runtime_error(fmt::format("modbus: cannot listen on {}:{}: {}", o.host, o.port, why));
-    }
-    mapping = modbus_mapping_new_start_address(0, 0, 0, 0, 0,
-                                               static_cast<unsigned>(modbus::register_count(h.port_count())), 0, 0);
-    if (mapping == nullptr) throw std::runtime_error("modbus: out of memory for the register map");
+  Impl(Hub& h, const ModbusOptions& o) : hub(h), options(o), events(static_cast<std::size_t>(h.port_count())) {
+    listen_fd = listen_on(o.host, o.port);
   }
 
   ~Impl() {
-    for (int fd : clients) close(fd);
+    stop();
+    for (auto& c : clients) close(c.fd);
     if (listen_fd >= 0) close(listen_fd);
-    if (mapping != nullptr) modbus_mapping_free(mapping);
-    if (ctx != nullptr) modbus_free(ctx);
   }
 
-  void exception(const uint8_t* query, unsigned code) { modbus_reply_exception(ctx, query, code); }
-
-  // Reads: refresh every port block the range touches, then reply.
-  void handle_read(const uint8_t* q, int len) {
-    const int addr = (q[kHeader + 1] << 8) | q[kHeader + 2];
-    const int count = (q[kHeader + 3] << 8) | q[kHeader + 4];
-    if (count < 1 || count > MODBUS_MAX_READ_REGISTERS) return exception(q, MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE);
-    if (addr + count > modbus::register_count(hub.port_count()))
-      return exception(q, MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS);
-    uint16_t* r = mapping->tab_registers;
-    if (addr < modbus::kPortBlock) modbus::fill_global(r, hub.port_count(), hub.options().cycle_s);
-    for (int p = std::max(1, addr / modbus::kPortBlock); p <= (addr + count - 1) / modbus::kPortBlock; ++p) {
-      hub.with_port(p, [&](Hub::Port& port) {
-        modbus::fill_port(r + modbus::port_base(p), port, regs[static_cast<std::size_t>(p - 1)]);
-      });
+  void accept_clients() {
+    for (;;) {
+      const int fd = accept4(listen_fd, nullptr, nullptr, SOCK_NONBLOCK | SOCK_CLOEXEC);
+      if (fd < 0) return; // EAGAIN: no more for now
+      const int yes = 1;
+      setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &yes, sizeof yes);
+      if (static_cast<int>(clients.size()) >= options.max_clients && !evict_one()) {
+        close(fd); // every slot is in the middle of a frame: the newest waits its turn
+        continue;
+      }
+      Client& c = clients.emplace_back(fd, hub.port_count());
+      c.session.may_write = !options.token_set ||
+                            std::find(options.writers.begin(), options.writers.end(), peer_address(fd)) != options.writers.end();
     }
-    modbus_reply(ctx, q, len, mapping);
   }
 
-  void handle_write(const uint8_t* q, int len, bool multiple) {
-    if (!options.writes_allowed) return exception(q, MODBUS_EXCEPTION_ILLEGAL_FUNCTION);
-    const int addr = (q[kHeader + 1] << 8) | q[kHeader + 2];
-    std::vector<uint16_t> values;
-    if (multiple) {
-      const int count = (q[kHeader + 3] << 8) | q[kHeader + 4];
-      const int bytes = q[kHeader + 5];
-      if (count < 1 || count > MODBUS_MAX_WRITE_REGISTERS || bytes != 2 * count || len < kHeader + 6 + bytes)
-        return exception(q, MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE);
-      for (int i = 0; i < count; ++i)
-        values.push_back(static_cast<uint16_t>((q[kHeader + 6 + 2 * i] << 8) | q[kHeader + 7 + 2 * i]));
-    } else {
-      values.push_back(static_cast<uint16_t>((q[kHeader + 3] << 8) | q[kHeader + 4]));
-    }
-    const int count = static_cast<int>(values.size());
-    const int p = addr / modbus::kPortBlock, offset = addr % modbus::kPortBlock;
-    if (!hub.valid_port(p) || !modbus::writable(offset, count))
-      return exception(q, MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS);
-    uint16_t* block = mapping->tab_registers + modbus::port_base(p);
-    std::string refused;
-    hub.with_port(p, [&](Hub::Port& port) {
-      auto& port_regs = regs[static_cast<std::size_t>(p - 1)];
-      modbus::fill_port(block, port, port_regs);
-      refused = modbus::check_write(offset, values, block);
-      if (!refused.empty()) return;
-      std::copy(values.begin(), values.end(), block + offset);
-      modbus::apply_write(block, offset, count, port, port_regs);
-    });
-    if (!refused.empty()) return exception(q, MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE);
-    modbus_reply(ctx, q, len, mapping); // echoes the request (values already in place)
-  }
-
-  // false: drop the client (malformed frame or closed connection).
-  bool serve_client(int fd) {
-    modbus_set_socket(ctx, fd);
-    uint8_t q[MODBUS_TCP_MAX_ADU_LENGTH];
-    const int len = modbus_receive(ctx, q);
-    if (len <= 0) return false;
-    switch (q[kHeader]) {
-      case MODBUS_FC_READ_HOLDING_REGISTERS: handle_read(q, len); break;
-      case MODBUS_FC_WRITE_SINGLE_REGISTER: handle_write(q, len, false); break;
-      case MODBUS_FC_WRITE_MULTIPLE_REGISTERS: handle_write(q, len, true); break;
-      default: exception(q, MODBUS_EXCEPTION_ILLEGAL_FUNCTION); break;
-    }
+  // The limit is reached: the connection idle the longest makes room.
+  bool evict_one() {
+    auto oldest = clients.end();
+    for (auto it = clients.begin(); it != clients.end(); ++it)
+      if (it->in.empty() && it->out.empty() && (oldest == clients.end() || it->last_activity < oldest->last_activity))
+        oldest = it;
+    if (oldest == clients.end()) return false;
+    close(oldest->fd);
+    clients.erase(oldest);
     return true;
   }
 
+  void receive(Client& c) {
+    uint8_t buf[4096];
+    for (;;) {
+      const ssize_t n = recv(c.fd, buf, sizeof buf, 0);
+      if (n > 0) {
+        if (c.in.empty()) c.frame_start = Clock::now();
+        c.in.insert(c.in.end(), buf, buf + n);
+        c.last_activity = Clock::now();
+        if (c.in.size() > 16 * 1024) break; // served before more is read
+        continue;
+      }
+      if (n < 0 && errno == EINTR) continue;
+      if (n == 0) c.eof = true;
+      else if (errno != EAGAIN && errno != EWOULDBLOCK) c.closing = true;
+      return;
+    }
+  }
+
+  void serve_frames(Client& c) {
+    for (int k = 0; k < kFramesPerTurn && !c.closing && c.out.size() < kMaxPendingOut; ++k) {
+      const modbus::Frame f = modbus::next_frame(c.in);
+      if (f.status == modbus::Frame::Status::Bad) {
+        c.closing = true; // not Modbus TCP: no answer
+        return;
+      }
+      if (f.status == modbus::Frame::Status::NeedMore) return;
+      const modbus::Request r = modbus::split(std::span<const uint8_t>(c.in.data(), f.size));
+      if (!modbus::pdu_length_matches(r.pdu)) {
+        c.closing = true;
+        return;
+      }
+      const modbus::Outcome o = modbus::handle(hub, c.session, events, r.pdu);
+      for (int p : o.ports_written) hub.persist(p); // before the answer: an answered write survives a kill
+      const auto adu = modbus::answer(r, o.pdu);
+      c.out.insert(c.out.end(), adu.begin(), adu.end());
+      c.in.erase(c.in.begin(), c.in.begin() + static_cast<std::ptrdiff_t>(f.size));
+      if (!c.in.empty()) c.frame_start = Clock::now();
+    }
+  }
+
+  void send_pending(Client& c) {
+    while (!c.out.empty()) {
+      const ssize_t n = send(c.fd, c.out.data(), c.out.size(), MSG_NOSIGNAL);
+      if (n > 0) {
+        c.out.erase(c.out.begin(), c.out.begin() + n);
+        continue;
+      }
+      if (n < 0 && errno == EINTR) continue;
+      if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) return;
+      c.closing = true;
+      return;
+    }
+  }
+
   void loop() {
+    const auto idle = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.idle_timeout_s));
+    std::vector<pollfd> fds;
+    bool backlog = false; // a client has whole frames waiting beyond its turn: do not sleep in poll()
     while (running.load()) {
-      fd_set set;
-      FD_ZERO(&set);
-      FD_SET(listen_fd, &set);
-      int max_fd = listen_fd;
-      for (int fd : clients) {
-        FD_SET(fd, &set);
-        max_fd = std::max(max_fd, fd);
+      fds.clear();
+      fds.push_back({listen_fd, POLLIN, 0});
+      for (auto& c : clients) {
+        short want = 0;
+        if (c.out.size() < kMaxPendingOut && !c.eof) want |= POLLIN;
+        if (!c.out.empty()) want |= POLLOUT;
+        fds.push_back({c.fd, want, 0});
       }
-      timeval tv{0, 100000}; // wake up to notice stop()
-      const int n = select(max_fd + 1, &set, nullptr, nullptr, &tv);
-      if (n < 0) {
-        if (errno == EINTR) continue;
-        break;
-      }
-      if (n == 0) continue;
-      if (FD_ISSET(listen_fd, &set)) {
-        const int fd = accept(listen_fd, nullptr, nullptr);
-        if (fd >= 0) {
-          if (static_cast<int>(clients.size()) >= kMaxClients || fd >= FD_SETSIZE) close(fd);
-          else clients.push_back(fd);
-        }
-      }
-      for (std::size_t i = 0; i < clients.size();) {
-        const int fd = clients[i];
-        if (FD_ISSET(fd, &set) && !serve_client(fd)) {
-          close(fd);
-          clients.erase(clients.begin() + static_cast<std::ptrdiff_t>(i));
+      const int n = poll(fds.data(), fds.size(), backlog ? 0 : kPollMs);
+      backlog = false;
+      if (n < 0 && errno != EINTR) break;
+      if (n > 0 && (fds[0].revents & POLLIN)) accept_clients();
+      std::size_t i = 1;
+      const auto now = Clock::now();
+      for (auto it = clients.begin(); it != clients.end();) {
+        Client& c = *it;
+        const short ev = i < fds.size() && fds[i].fd == c.fd ? fds[i].revents : 0;
+        ++i;
+        if ((ev & (POLLIN | POLLHUP | POLLERR)) && !c.eof) receive(c);
+        serve_frames(c);
+        send_pending(c);
+        if (!c.in.empty() && now - c.frame_start > kFrameDeadline) c.closing = true;    // a frame that never ends
+        if (c.in.empty() && c.out.empty() && now - c.last_activity > idle) c.closing = true; // idle timeout
+        if (c.eof && c.out.empty() && modbus::next_frame(c.in).status != modbus::Frame::Status::Ready) c.closing = true;
+        if (c.closing) {
+          close(c.fd);
+          it = clients.erase(it);
         } else {
-          ++i;
+          backlog = backlog || (c.out.size() < kMaxPendingOut && modbus::next_frame(c.in).status == modbus::Frame::Status::Ready);
+          ++it;
         }
       }
     }

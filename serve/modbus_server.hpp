@@ -1,11 +1,16 @@
-// Modbus TCP front (libmodbus): one thread, select() over the listening
-// socket and up to 32 clients; the register map is modbus_map.hpp. A client
-// that sends a malformed frame is disconnected; the server goes on.
+// Modbus TCP front (issue 18, isolation issue 27): one thread, poll() over
+// the listening socket and the clients, each with its own receive buffer
+// (a slow client only stalls itself), framing in modbus_frame.hpp, the
+// register map in modbus_handler.hpp / modbus_map.hpp.
+//  - a started frame must be complete within kFrameDeadline, else the
+//    connection closes; a client silent for idle_timeout_s is disconnected;
+//  - at most kMaxClients: one more evicts the longest-idle connection;
+//  - a bad MBAP header (protocol id, length) or a PDU whose length does not
+//    match its function closes the connection without an answer.
 #pragma once
-#include <atomic>
-#include <memory>
+#include <chrono>
 #include <string>
-#include <thread>
+#include <vector>
 
 #include "serve/front.hpp"
 #include "serve/hub.hpp"
@@ -14,11 +19,15 @@ namespace sreh::serve {
 
 struct ModbusOptions {
   std::string host = "127.0.0.1";
-  int port = 502;          // 0: the OS picks a free port (see bound_port())
-  bool writes_allowed = true; // false with a token: Modbus carries none, so it is read-only
+  int port = 502;               // 0: the OS picks a free port (see bound_port())
+  bool token_set = false;       // with a token, only `writers` may write; everyone may read (ISDU reads too)
+  std::vector<std::string> writers; // client IP addresses (as the OS reports them, e.g. 127.0.0.1)
+  double idle_timeout_s = 10;
+  int max_clients = 32;
 };
 
 using ModbusServer = Front<ModbusOptions>;
-extern template class Front<ModbusOptions>;
+// Instantiated in the .cpp (with its Impl); front.hpp declares the members only, so
+// no other file instantiates them (clang refuses an extern template before Impl).
 
 } // namespace sreh::serve

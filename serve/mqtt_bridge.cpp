@@ -4,22 +4,45 @@
 
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
+#include <cstring>
+#include <mutex>
 #include <regex>
+#include <set>
 #include <thread>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "serve/front_impl.hpp"
+#include "serve/mqtt_auth.hpp"
 #include "serve/port_api.hpp"
 
 namespace sreh::serve {
+
+namespace {
+constexpr int kMaxPorts = 16;  // serve's limit: retained topics of ports above --ports are cleared at start
+constexpr auto kFlushTimeout = std::chrono::seconds(2);
+
+// One connection per port whose only job is the port's last will: the broker
+// publishes "offline" (retained) on <prefix>/port/<p>/availability if serve
+// dies without saying goodbye (MQTT has one will per connection).
+struct WillClient {
+  mosquitto* m = nullptr;
+  std::string topic;
+};
+} // namespace
 
 template <>
 struct Front<MqttOptions>::Impl {
   Hub& hub;
   MqttOptions options;
   mosquitto* client = nullptr;
+  std::vector<WillClient> wills;
+  std::mutex flight_mutex;
+  std::condition_variable flight_cv;
+  std::set<int> in_flight; // message ids not yet acknowledged by the broker
+  int subscriptions = 0;   // command topics the broker has acknowledged
   std::atomic<bool> running{false};
   std::thread publisher;
   std::vector<std::string> last_published;
@@ -31,6 +54,20 @@ struct Front<MqttOptions>::Impl {
     mosquitto_lib_init();
     client = mosquitto_new(nullptr, true, this);
     if (client == nullptr) throw std::runtime_error("mqtt: cannot create a client");
+    const std::string bridge_will = options.prefix + "/availability";
+    mosquitto_will_set(client, bridge_will.c_str(), 7, "offline", 1, true);
+    mosquitto_subscribe_callback_set(client, [](mosquitto*, void* self, int, int, const int*) {
+      auto* impl = static_cast<Impl*>(self);
+      std::lock_guard lock(impl->flight_mutex);
+      ++impl->subscriptions;
+      impl->flight_cv.notify_all();
+    });
+    mosquitto_publish_callback_set(client, [](mosquitto*, void* self, int mid) {
+      auto* impl = static_cast<Impl*>(self);
+      std::lock_guard lock(impl->flight_mutex);
+      impl->in_flight.erase(mid);
+      impl->flight_cv.notify_all();
+    });
     mosquitto_connect_callback_set(client, [](mosquitto* m, void* self, int rc) {
       if (rc == 0) static_cast<Impl*>(self)->subscribe(m);
     });
@@ -44,17 +81,64 @@ struct Front<MqttOptions>::Impl {
       throw std::runtime_error(fmt::format("mqtt: cannot connect to the broker at {}:{}: {}", o.host, o.port,
                                            rc == MOSQ_ERR_ERRNO ? std::string(strerror(errno)) : mosquitto_strerror(rc)));
     }
+    try {
+      connect_wills();
+    } catch (...) {
+      for (auto& w : wills) mosquitto_destroy(w.m);
+      mosquitto_destroy(client);
+      mosquitto_lib_cleanup();
+      throw;
+    }
   }
 
   ~Impl() {
+    stop();
+    for (auto& w : wills) mosquitto_destroy(w.m);
     mosquitto_destroy(client);
     mosquitto_lib_cleanup();
   }
 
+  // The per-port will connections (see WillClient); "online" once connected.
+  void connect_wills() {
+    for (int p = 1; p <= hub.port_count(); ++p) {
+      WillClient w;
+      w.topic = topic(p, "availability");
+      w.m = mosquitto_new(nullptr, true, nullptr);
+      if (w.m == nullptr) throw std::runtime_error("mqtt: cannot create a client");
+      mosquitto_will_set(w.m, w.topic.c_str(), 7, "offline", 1, true);
+      const int rc = mosquitto_connect(w.m, options.host.c_str(), options.port, 10);
+      if (rc != MOSQ_ERR_SUCCESS) {
+        mosquitto_destroy(w.m);
+        throw std::runtime_error(fmt::format("mqtt: cannot connect to the broker at {}:{}: {}", options.host,
+                                             options.port, mosquitto_strerror(rc)));
+      }
+      wills.push_back(w);
+    }
+  }
+
+  // The token never leaves serve (issue 27): every payload is checked.
+  std::string redact(std::string payload) const {
+    if (options.token.empty()) return payload;
+    for (auto at = payload.find(options.token); at != std::string::npos; at = payload.find(options.token, at))
+      payload.replace(at, options.token.size(), "***");
+    return payload;
+  }
+
+  // Waits (bounded) until the broker has every message published so far.
+  void flush() {
+    std::unique_lock lock(flight_mutex);
+    flight_cv.wait_for(lock, kFlushTimeout, [this] { return in_flight.empty(); });
+  }
+
   std::string topic(int p, const char* what) const { return fmt::format("{}/port/{}/{}", options.prefix, p, what); }
 
-  void publish(const std::string& t, const std::string& payload, bool retain = false) {
-    mosquitto_publish(client, nullptr, t.c_str(), static_cast<int>(payload.size()), payload.data(), 1, retain);
+  void publish(const std::string& t, const std::string& text, bool retain = false) {
+    const std::string payload = redact(text);
+    int mid = 0;
+    std::lock_guard lock(flight_mutex); // the ack cannot overtake the insert
+    if (mosquitto_publish(client, &mid, t.c_str(), static_cast<int>(payload.size()), payload.data(), 1, retain) ==
+        MOSQ_ERR_SUCCESS)
+      in_flight.insert(mid);
   }
 
   void subscribe(mosquitto* m) {
@@ -80,19 +164,18 @@ struct Front<MqttOptions>::Impl {
     Json id = nullptr;
     try {
       body = parse_body(std::string(static_cast<const char*>(msg->payload), static_cast<std::size_t>(msg->payloadlen)));
-      if (!options.token.empty()) {
-        if (!body.contains("token") || body["token"] != options.token)
-          throw RequestError(403, "missing or wrong token");
-      }
+      if (what == "isdu/request") id = body.value("id", Json(nullptr)); // every answer carries it, refusals too
+      if (!options.token.empty()) authorise(t, msg, body);
       body.erase("token");
+      body.erase("auth");
       if (what == "processdata/out/set") {
         hub.with_port(p, [&](Hub::Port& port) { apply_pd_out(port, body); });
       } else if (what == "faults/set") {
         hub.with_port(p, [&](Hub::Port& port) { apply_faults(port, body); });
       } else {
-        id = body.value("id", Json(nullptr));
         isdu_request(p, body, id);
       }
+      hub.persist(p); // an ISDU write may have changed the memory image
     } catch (const RequestError& e) {
       if (what == "isdu/request") publish(topic(p, "isdu/response"), Json{{"id", id}, {"ok", false}, {"error", e.what()}}.dump());
       refuse(t, e.what());
@@ -100,6 +183,18 @@ struct Front<MqttOptions>::Impl {
       publish(topic(p, "isdu/response"),
               Json{{"id", id}, {"ok", false}, {"iolink_error", iolink_error_text(e.code)}, {"message", e.what()}}.dump());
     }
+  }
+
+  // With a token: "auth" (signed, the token never on the wire) or "token".
+  void authorise(const std::string& t, const mosquitto_message* msg, const Json& body) const {
+    if (body.contains("auth")) {
+      const std::string payload(static_cast<const char*>(msg->payload), static_cast<std::size_t>(msg->payloadlen));
+      if (!body["auth"].is_string() || !command_signed(options.token, t, payload, body["auth"].get<std::string>()))
+        throw RequestError(403, "wrong signature (auth)");
+      return;
+    }
+    if (!body.contains("token") || !body["token"].is_string() || body["token"].get<std::string>() != options.token)
+      throw RequestError(403, "missing or wrong token (or auth)");
   }
 
   void isdu_request(int p, Json body, const Json& id) {
@@ -157,11 +252,35 @@ struct Front<MqttOptions>::Impl {
     if (running.exchange(true)) return;
     for (int p = 1; p <= hub.port_count(); ++p) event_cursor[static_cast<std::size_t>(p - 1)] = hub.latest_seq(p);
     mosquitto_loop_start(client);
+    for (auto& w : wills) {
+      mosquitto_loop_start(w.m);
+      mosquitto_publish(w.m, nullptr, w.topic.c_str(), 6, "online", 1, true);
+    }
+    publish(options.prefix + "/availability", "online", true);
+    // A previous run with more ports left retained topics behind: clear them.
+    for (int p = hub.port_count() + 1; p <= kMaxPorts; ++p) {
+      publish(topic(p, "processdata"), "", true);
+      publish(topic(p, "availability"), "", true);
+    }
     publisher = std::thread([this] { publish_loop(); });
+    // Taking commands once start() returns (and serve prints its ready line).
+    std::unique_lock lock(flight_mutex);
+    flight_cv.wait_for(lock, kFlushTimeout, [this] { return subscriptions >= 3; });
   }
+  // Retained state says what is true after stop: no process data, offline.
   void stop() {
     if (!running.exchange(false)) return;
     if (publisher.joinable()) publisher.join();
+    for (int p = 1; p <= hub.port_count(); ++p) {
+      publish(topic(p, "processdata"), "", true); // an empty retained message deletes it
+      publish(topic(p, "availability"), "offline", true);
+    }
+    publish(options.prefix + "/availability", "offline", true);
+    flush();
+    for (auto& w : wills) {
+      mosquitto_disconnect(w.m); // a clean goodbye: the broker drops the will ("offline" is already there)
+      mosquitto_loop_stop(w.m, false);
+    }
     mosquitto_disconnect(client);
     mosquitto_loop_stop(client, false);
   }

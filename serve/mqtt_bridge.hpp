@@ -1,14 +1,17 @@
 // MQTT front (libmosquitto, optional): publishes each port's process data
 // and state on change and at a steady rate, device events as they come, and
-// takes commands on topics (docs/modbus-map.md has the topic list):
-//   <prefix>/port/<p>/processdata          (published, retained) processdata JSON
+// takes commands on topics (docs/serve.md has the topic list):
+//   <prefix>/availability                  (retained) "online" / "offline", the bridge's last will
+//   <prefix>/port/<p>/availability         (retained) "online" / "offline", a per-port connection's last will
+//   <prefix>/port/<p>/processdata          (published, retained; cleared on stop) processdata JSON
 //   <prefix>/port/<p>/events               (published) state / device_event
 //   <prefix>/port/<p>/processdata/out/set  (command) body as PUT processdata/out
 //   <prefix>/port/<p>/faults/set           (command) body as POST faults
 //   <prefix>/port/<p>/isdu/request         (command) {"id", "op": "read"|"write", "index", "subindex", "value"|"raw"}
 //   <prefix>/port/<p>/isdu/response        (published) {"id", "ok", ...} or {"id", "ok": false, "iolink_error", "message"}
 //   <prefix>/errors                        (published) refused commands: {"topic", "error"}
-// With a token, every command carries it as "token".
+// With a token, every command is signed ("auth", serve/mqtt_auth.hpp) or
+// carries it as "token"; nothing serve publishes ever contains it.
 #pragma once
 #include <memory>
 #include <string>
@@ -27,6 +30,7 @@ struct MqttOptions {
 };
 
 using MqttBridge = Front<MqttOptions>;
-extern template class Front<MqttOptions>;
+// Instantiated in the .cpp (with its Impl); front.hpp declares the members only, so
+// no other file instantiates them (clang refuses an extern template before Impl).
 
 } // namespace sreh::serve

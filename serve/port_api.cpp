@@ -311,13 +311,19 @@ Json faults_json(const Hub::Port& port) {
               {"external_torque_Nm", f.external_torque_Nm},
               {"flange_blocked", f.flange_blocked},
               {"ambient_C", f.ambient_C},
-              {"power_cycles", f.power_cycles}};
+              {"power_cycles", f.power_cycles},
+              {"device_replacements", f.device_replacements},
+              {"data_storage", port.ds_backup ? Json{{"backup", true}, {"checksum", port.ds_backup->checksum}}
+                                              : Json{{"backup", false}, {"checksum", nullptr}}},
+              {"data_storage_error", port.ds_last_error == 0 ? Json(nullptr) : Json(iolink_error_text(port.ds_last_error))}};
 }
 
 Json apply_faults(Hub::Port& port, const Json& body) {
   const std::string what = "faults";
   if (!body.is_object() || body.empty()) throw RequestError(400, what + ": expected a JSON object with at least one fault");
-  check_keys(body, {"link_up", "supply_V", "external_torque_Nm", "flange_blocked", "ambient_C", "power_cycle"}, what);
+  check_keys(body, {"link_up", "supply_V", "external_torque_Nm", "flange_blocked", "ambient_C", "power_cycle",
+                    "replace_device"},
+             what);
   FaultState f = port.faults;
   if (body.contains("link_up")) f.link_up = get_bool(body["link_up"], what + ".link_up");
   if (body.contains("supply_V")) f.supply_V = get_number(body["supply_V"], what + ".supply_V", 0.0, 60.0);
@@ -326,6 +332,7 @@ Json apply_faults(Hub::Port& port, const Json& body) {
   if (body.contains("flange_blocked")) f.flange_blocked = get_bool(body["flange_blocked"], what + ".flange_blocked");
   if (body.contains("ambient_C")) f.ambient_C = get_number(body["ambient_C"], what + ".ambient_C", -40.0, 150.0);
   const bool cycle = body.contains("power_cycle") && get_bool(body["power_cycle"], what + ".power_cycle");
+  const bool replace = body.contains("replace_device") && get_bool(body["replace_device"], what + ".replace_device");
   // All checked: apply.
   Twin& t = port.twin;
   if (f.link_up != port.faults.link_up) t.set_link_up(f.link_up);
@@ -337,6 +344,11 @@ Json apply_faults(Hub::Port& port, const Json& body) {
     t.power_cycle();
     ++f.power_cycles;
   }
+  if (replace) { // manual 8: a new module; the master restores its backup once it is up
+    t.replace_device();
+    ++f.device_replacements;
+    port.ds_download_pending = true;
+  }
   port.faults = f;
   return faults_json(port);
 }
@@ -345,8 +357,12 @@ Json parse_body(const std::string& body) {
   Json j;
   try {
     j = Json::parse(body);
-  } catch (const std::exception& e) {
-    throw RequestError(400, std::string("malformed JSON: ") + e.what());
+  } catch (const Json::parse_error& e) {
+    // Position only: the parser's own message quotes the input (a token in it
+    // would reach MQTT's errors topic, issue 27).
+    throw RequestError(400, fmt::format("malformed JSON at byte {}", e.byte));
+  } catch (const std::exception&) {
+    throw RequestError(400, "malformed JSON");
   }
   if (!j.is_object()) throw RequestError(400, "expected a JSON object");
   return j;

@@ -9,7 +9,9 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include "device_logic/units.hpp"
 #include "io/atomic_file.hpp"
+#include "io/interrupt.hpp"
 #include "twin/model_card.hpp"
 #include "scenarios/runner.hpp"
 #include "scenarios/scenario_parser.hpp"
@@ -18,6 +20,10 @@
 #include "serve/mqtt_bridge.hpp"
 #include "serve/port_api.hpp"
 #include "serve/shutdown.hpp"
+#include "serve/state_dir.hpp"
+#include "twin/plant.hpp"
+
+#include <sys/stat.h>
 
 namespace sreh::serve {
 namespace {
@@ -94,10 +100,22 @@ int run_serve(const ServeOptions& o, std::ostream& out, std::ostream& err) {
     throw std::invalid_argument(fmt::format("--save-nvm-dir '{}': folder does not exist", o.save_nvm_dir));
   std::string token;
   if (!o.token_file.empty()) {
+    struct stat st{};
+    if (::stat(o.token_file.c_str(), &st) == 0 && (st.st_mode & (S_IWGRP | S_IWOTH)) != 0)
+      throw std::invalid_argument(fmt::format("--token-file '{}': writable by group or others (mode {:03o}); "
+                                              "chmod go-w it", o.token_file, st.st_mode & 0777));
     token = trim(slurp(o.token_file, "--token-file"));
     if (token.empty()) throw std::invalid_argument(fmt::format("--token-file '{}': the file is empty", o.token_file));
     if (token.find_first_of(" \t\r\n") != std::string::npos)
       throw std::invalid_argument(fmt::format("--token-file '{}': the token contains whitespace", o.token_file));
+  }
+
+  // --state-dir: what each module kept through the last stop (a power cycle).
+  std::unique_ptr<StateDir> state;
+  std::vector<PortState> kept(static_cast<std::size_t>(o.ports));
+  if (!o.state_dir.empty()) {
+    state = std::make_unique<StateDir>(o.state_dir, o.ports);
+    for (int p = 1; p <= o.ports; ++p) kept[static_cast<std::size_t>(p - 1)] = state->load(p);
   }
 
   // Ports: factory-new without a load unless configured.
@@ -121,6 +139,7 @@ int run_serve(const ServeOptions& o, std::ostream& out, std::ostream& err) {
       c = make_twin_config(s);
     }
     c.cycle_s = o.master_cycle_ms * 1e-3;
+    if (const auto& nvm = kept[static_cast<std::size_t>(p - 1)].nvm) c.nvm_image = *nvm; // newer than a port config's
     configs.push_back(c);
   }
   HubOptions hub_options;
@@ -133,6 +152,17 @@ int run_serve(const ServeOptions& o, std::ostream& out, std::ostream& err) {
     hub = std::make_unique<Hub>(configs, hub_options);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(fmt::format("--master-cycle-ms {}: {}", o.master_cycle_ms, e.what()));
+  }
+  // A restart is a power cycle (manual 4.1): the flange is where it was and
+  // the device reads it from its multiturn encoder at power-on.
+  for (int p = 1; p <= o.ports; ++p) {
+    if (const auto angle = kept[static_cast<std::size_t>(p - 1)].flange_angle_deg) {
+      hub->with_port(p, [&](Hub::Port& port) {
+        port.twin.power_off();
+        port.twin.turn_flange(*angle - rad_to_deg(port.twin.plant().angle_rad()), 0.0);
+        port.twin.power_on();
+      });
+    }
   }
   // Start-up writes of the port configurations (device.isdu), as a master's parameter server would.
   for (int p = 1; p <= o.ports; ++p) {
@@ -147,8 +177,22 @@ int run_serve(const ServeOptions& o, std::ostream& out, std::ostream& err) {
     }
   }
 
+  // Data Storage at the master (manual 8): the backup kept, or a first upload.
+  for (int p = 1; p <= o.ports; ++p)
+    if (const auto& ds = kept[static_cast<std::size_t>(p - 1)].ds)
+      hub->with_port(p, [&](Hub::Port& port) { port.ds_backup = *ds; });
+  hub->ds_startup();
+
   block_shutdown_signals(); // before any thread starts, so only sigtimedwait sees them
-  ModbusOptions mo{o.modbus.host, o.modbus.port, token.empty()};
+  // A signal before that went to the batch commands' handler (io/interrupt):
+  // stop now, cleanly, or the twins' cycles would throw io::Interrupted.
+  if (io::interrupt_signal() != 0) return 0;
+  ModbusOptions mo;
+  mo.host = o.modbus.host;
+  mo.port = o.modbus.port;
+  mo.token_set = !token.empty();
+  mo.writers = o.modbus_writers;
+  mo.idle_timeout_s = o.modbus_idle_timeout_s;
   HttpOptions ho;
   ho.host = o.http.host;
   ho.port = o.http.port;
@@ -170,6 +214,10 @@ int run_serve(const ServeOptions& o, std::ostream& out, std::ostream& err) {
     }
   } catch (const std::runtime_error& e) {
     throw std::invalid_argument(e.what());
+  }
+  if (state) { // bound: from here on the state folder is written (exit 2 before leaves it alone)
+    hub->set_state_dir(state.get());
+    for (int p = 1; p <= o.ports; ++p) hub->persist(p); // the files exist from the first start on
   }
   hub->start();
   modbus->start();

@@ -7,6 +7,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace sreh::serve {
 
@@ -31,6 +32,9 @@ struct ServeOptions {
   int rt_priority = 0;                    // > 0: SCHED_FIFO for the pacing thread (needs CAP_SYS_NICE)
   std::string token_file;
   std::string save_nvm_dir;               // on shutdown: DIR/port<p>.nvm
+  std::string state_dir;                  // NV memory and flange kept across restarts (serve/state_dir.hpp)
+  double modbus_idle_timeout_s = 10;      // a Modbus client silent this long is disconnected
+  std::vector<std::string> modbus_writers; // with a token: client addresses that may write over Modbus
   double duration_s = 0;                  // > 0: stop by itself after this wall time
   std::string model;                      // --model FILE: model card overrides for every port (issue 25)
 };

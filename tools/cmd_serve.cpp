@@ -18,6 +18,11 @@
 namespace sreh::tools {
 namespace {
 
+// serve's own exit codes (docs/serve.md says the same; a CTest compares them).
+constexpr const char* kServeExitCodes =
+    "Exit codes: 0 stopped cleanly (SIGINT, SIGTERM or --duration-s), 2 bad input (an option, a file, a corrupt "
+    "state file, an address in use; one line on stderr, nothing bound), 3 internal error (a bug: please report).";
+
 struct ServeArgs {
   serve::ServeOptions options;
   std::string modbus = "127.0.0.1:5020";
@@ -85,9 +90,19 @@ SREH_REGISTER_COMMAND(70, [](CLI::App& app, int& exit_code) {
       ->default_val(0);
   cmd->add_option("--token-file", a->options.token_file,
                   "File holding a bearer token every write must carry (HTTP Authorization, MQTT \"token\"); "
-                  "Modbus TCP becomes read-only");
+                  "Modbus TCP writes only from --modbus-writers; the file must not be group/world-writable");
   cmd->add_option("--save-nvm-dir", a->options.save_nvm_dir,
-                  "On shutdown, save each port's non-volatile memory as DIR/port<P>.nvm");
+                  "On shutdown, save each port's non-volatile memory as DIR/port<P>.nvm (see --state-dir)");
+  cmd->add_option("--state-dir", a->options.state_dir,
+                  "Keep each port's non-volatile memory and flange angle in DIR across restarts (written when "
+                  "they change; missing files: factory-new; the same command line for every run)");
+  cmd->add_option("--modbus-idle-timeout-s", a->options.modbus_idle_timeout_s,
+                  "Disconnect a Modbus client silent this long")
+      ->default_val(10.0)->check(CLI::Range(0.1, 3600.0));
+  cmd->add_option("--modbus-writers", a->options.modbus_writers,
+                  "With --token-file: client IP addresses allowed to write over Modbus (comma-separated); "
+                  "others may read, ISDU reads included")
+      ->delimiter(',');
   cmd->add_option("--model", a->options.model,
                   "Model card overrides for every port (YAML as `sreh-twin model show` prints): the module's constants");
   cmd->add_option("--duration-s", a->options.duration_s, "Stop by itself after this many wall-clock seconds")
@@ -95,6 +110,7 @@ SREH_REGISTER_COMMAND(70, [](CLI::App& app, int& exit_code) {
   cmd->add_flag("--print-modbus-map", a->print_map, "Print the Modbus register map and exit (binds nothing)");
   cmd->add_flag("--print-routes", a->print_routes, "Print the HTTP routes and exit (binds nothing)");
   cmd->add_flag("--json", a->json, "With --print-*: compact JSON on one line");
+  cmd->footer(kServeExitCodes);
   cmd->callback([a, &exit_code] { exit_code = serve_command(*a); });
 });
 

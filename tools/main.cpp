@@ -52,7 +52,7 @@ namespace {
 constexpr const char* kExitCodes =
     "Exit codes: 0 all held / feasible, 1 a check failed / infeasible, 2 bad input (file, option or limit; "
     "one line on stderr), 3 internal error (a bug: please report), 130 / 143 interrupted by SIGINT / SIGTERM "
-    "(no output written, temporary files removed).";
+    "(no output written, temporary files removed; serve stops cleanly with 0, see serve --help).";
 
 // No command, or one that does not exist (issue 29): say which there are.
 // Empty when the first argument is an option or a known command.

@@ -202,6 +202,13 @@ void Twin::power_cycle() {
   power_on();
 }
 
+void Twin::replace_device() {
+  power_off();
+  impl_->device = Device(impl_->config.module.drive); // factory-new, as delivered ...
+  impl_->device.power_off();    // ... and mounted unpowered
+  power_on();
+}
+
 void Twin::turn_flange(double turn_deg, double over_s) {
   Impl& s = *impl_;
   const uint64_t n = over_s > 0 ? static_cast<uint64_t>(std::ceil(over_s / s.cycle_s - 1e-9)) : 0;

@@ -86,6 +86,10 @@ class Twin {
   void power_off();                     // the primitives: supply off ...
   void power_on();                      // ... and on again (start-up follows)
   bool powered() const;
+  // Manual 8: another module of the type mounted in this one's place (serve's
+  // replace_device fault): a factory-new device (memory, counters) powered on
+  // at the flange's angle; the world stays.
+  void replace_device();
   // A hand turns the flange by turn_deg (physical frame) evenly over the next
   // over_s (whole master cycles; 0: at once). Meant for an unpowered module.
   void turn_flange(double turn_deg, double over_s);

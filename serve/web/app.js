@@ -161,6 +161,11 @@ class PortView {
       this.errBox.textContent = `event ${d.code} ${d.mode} (qualifier ${d.qualifier}) at ${d.t_s.toFixed(2)} s`;
     });
     es.addEventListener('failure', (e) => { this.errBox.textContent = 'port failed: ' + JSON.parse(e.data).message; });
+    es.addEventListener('data_storage', (e) => { // a replacement module got the master's backup (manual 8)
+      const d = JSON.parse(e.data);
+      this.errBox.textContent = `data storage: ${d.action}` + (d.iolink_error ? ` refused ${d.iolink_error}` : '') +
+        ` at ${d.t_s.toFixed(2)} s`;
+    });
     es.onopen = () => { document.getElementById('status').textContent = 'live'; };
     es.onerror = () => { document.getElementById('status').textContent = 'reconnecting\u2026'; };
   }
@@ -173,6 +178,18 @@ async function main() {
   tokenInput.addEventListener('change', () => localStorage.setItem('sreh-token', token()));
   const ports = await api('GET', '/v1/ports');
   ports.forEach((info) => new PortView(info));
+  showPacing();
+  setInterval(showPacing, 2000);
+}
+
+// The pacing figures of /v1/stats (issue 27): p99 jitter and late cycles.
+async function showPacing() {
+  try {
+    const s = await api('GET', '/v1/stats');
+    document.getElementById('pacing').textContent =
+      `cycle ${(s.cycle_s * 1000).toFixed(1)} ms: jitter p99 ${Math.round(s.jitter_p99_us)} \u00b5s, ` +
+      `max ${Math.round(s.jitter_max_us)} \u00b5s, late cycles ${s.late_cycles} of ${s.cycles}`;
+  } catch (e) { /* the stream's status shows connection trouble */ }
 }
 
 main().catch((e) => { document.getElementById('status').textContent = 'error: ' + e.message; });

@@ -18,7 +18,7 @@ root=$PWD
 seconds=${1:-20}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(pd_codec isdu scenario load)
+[ ${#targets[@]} -eq 0 ] && targets=(pd_codec isdu scenario load modbus http_body)
 build=build-fuzz
 log=$build/fuzz-build.log
 mkdir -p "$build"

@@ -52,8 +52,12 @@ class Serve:
         try:
             _, err = self.proc.communicate(timeout=timeout)
         except subprocess.TimeoutExpired:
+            stacks = ""
+            if os.path.exists("/usr/bin/gdb"):  # where it hangs, for the log
+                stacks = subprocess.run(["gdb", "-p", str(self.proc.pid), "-batch", "-ex", "thread apply all bt 12"],
+                                        capture_output=True, text=True, timeout=60).stdout
             self.proc.kill()
-            fail("serve did not stop within %d s of SIGTERM" % timeout)
+            fail("serve did not stop within %d s of SIGTERM\n%s" % (timeout, stacks))
         return self.proc.returncode, err
 
     def kill(self):

@@ -12,11 +12,12 @@ struct ModbusMap : ::testing::Test {
   Hub hub{std::vector<TwinConfig>(2), HubOptions{}};
   std::vector<uint16_t> block = std::vector<uint16_t>(kPortBlock, 0);
   PortRegisters regs;
+  EventTracker events;
   Hub::Port& port = hub.port(1);
 
   void write(int offset, std::vector<uint16_t> values) {
     ASSERT_EQ(check_write(offset, values, block.data()), "");
-    fill_port(block.data(), port, regs);
+    fill_port(block.data(), port, regs, events);
     std::copy(values.begin(), values.end(), block.begin() + offset);
     apply_write(block.data(), offset, static_cast<int>(values.size()), port, regs);
   }
@@ -35,7 +36,7 @@ TEST_F(ModbusMap, ProcessDataOutOctetsBigEndian_Manual2_2) {
 TEST_F(ModbusMap, ProcessDataInAfterCycles_Manual2_3) {
   write(kPdOut, {0, 0, 0x0001});
   for (int i = 0; i < 50; ++i) hub.step_all();
-  fill_port(block.data(), port, regs);
+  fill_port(block.data(), port, regs, events);
   // 7 octets: position (4), error code, warning code, status bits; Ready = bit 1
   EXPECT_EQ(block[kPdIn + 3], 0x0200);
   EXPECT_EQ(block[kState], 1); // Ready

@@ -16,7 +16,9 @@
 #include <fstream>
 #include <mutex>
 #include <thread>
+#include <tuple>
 
+#include "serve/mqtt_auth.hpp"
 #include "serve/mqtt_bridge.hpp"
 #include "serve/port_api.hpp"
 
@@ -98,8 +100,10 @@ struct Listener {
   std::mutex mutex;
   std::condition_variable cv;
   std::vector<std::pair<std::string, Json>> messages;
+  std::vector<std::tuple<std::string, std::string, bool>> raw; // topic, payload, retained
+  bool subscribed = false;
 
-  explicit Listener(int port) {
+  explicit Listener(int port, const char* filter = "t/#") {
     m = mosquitto_new(nullptr, true, this);
     mosquitto_message_callback_set(m, [](mosquitto*, void* self, const mosquitto_message* msg) {
       auto* l = static_cast<Listener*>(self);
@@ -107,19 +111,44 @@ struct Listener {
                            nullptr, false);
       std::lock_guard lock(l->mutex);
       l->messages.emplace_back(msg->topic, j);
+      l->raw.emplace_back(msg->topic, std::string(static_cast<const char*>(msg->payload), static_cast<std::size_t>(msg->payloadlen)),
+                          msg->retain);
+      l->cv.notify_all();
+    });
+    mosquitto_subscribe_callback_set(m, [](mosquitto*, void* self, int, int, const int*) {
+      auto* l = static_cast<Listener*>(self);
+      std::lock_guard lock(l->mutex);
+      l->subscribed = true;
       l->cv.notify_all();
     });
     EXPECT_EQ(mosquitto_connect(m, "127.0.0.1", port, 10), MOSQ_ERR_SUCCESS);
-    mosquitto_subscribe(m, nullptr, "t/#", 1);
+    mosquitto_subscribe(m, nullptr, filter, 1);
     mosquitto_loop_start(m);
+    std::unique_lock lock(mutex); // listening before the test goes on
+    EXPECT_TRUE(cv.wait_for(lock, std::chrono::seconds(5), [this] { return subscribed; }));
   }
   ~Listener() {
     mosquitto_disconnect(m);
     mosquitto_loop_stop(m, false);
     mosquitto_destroy(m);
   }
-  void publish(const std::string& topic, const std::string& payload) {
-    mosquitto_publish(m, nullptr, topic.c_str(), static_cast<int>(payload.size()), payload.data(), 1, false);
+  void publish(const std::string& topic, const std::string& payload, bool retain = false) {
+    mosquitto_publish(m, nullptr, topic.c_str(), static_cast<int>(payload.size()), payload.data(), 1, retain);
+  }
+  // Waits up to 10 s for a message on `topic` with exactly `payload`.
+  bool wait_raw(const std::string& topic, const std::string& payload) {
+    std::unique_lock lock(mutex);
+    return cv.wait_for(lock, std::chrono::seconds(10), [&] {
+      for (const auto& [t, p, r] : raw)
+        if (t == topic && p == payload) return true;
+      return false;
+    });
+  }
+  bool any_contains(const std::string& needle) {
+    std::lock_guard lock(mutex);
+    for (const auto& [t, p, r] : raw)
+      if (p.find(needle) != std::string::npos) return true;
+    return false;
   }
   // The first message on `topic` matching pred, waiting up to 10 s.
   template <class Pred>
@@ -180,6 +209,102 @@ TEST(MqttBridge, ProcessDataCommandsAndIsduOverABroker) {
   EXPECT_EQ(hub.with_port(1, [](Hub::Port& p) { return p.faults.supply_V; }), 20);
   bridge.stop();
   hub.stop();
+}
+
+// Issue 27: the token never comes back from serve, refusals carry the
+// request id, availability says online/offline, retained data is cleared.
+TEST(MqttBridge, TokenNeverPublishedIdOnRefusalsAvailabilityAndCleanStop) {
+  if (access(kBroker, X_OK) != 0) GTEST_SKIP() << "mosquitto not installed";
+  Broker broker;
+  ASSERT_TRUE(broker.start()) << "mosquitto did not start";
+  const std::string token = "tok-5f3a9c1e77";
+  {
+    Listener earlier(broker.port, "t/none"); // a former serve with 3 ports left this behind
+    earlier.publish("t/port/3/processdata", R"({"in": {"valid": true, "state": "Ready"}})", true);
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  Hub hub(std::vector<TwinConfig>(1), HubOptions{});
+  MqttOptions o;
+  o.port = broker.port;
+  o.prefix = "t";
+  o.token = token;
+  auto bridge = std::make_unique<MqttBridge>(hub, o);
+  hub.start();
+  bridge->start();
+  Listener commander(broker.port, "t/port/1/isdu/response"); // the PLC: publishes commands (with the token)
+  Listener l(broker.port, "t/#"); // everything else a "#" subscriber of serve's topics sees
+  ASSERT_TRUE(l.wait_raw("t/port/1/availability", "online"));
+  ASSERT_TRUE(l.wait_raw("t/availability", "online"));
+  commander.publish("t/port/1/isdu/request", R"({"id": 41, "op": "read", "index": 64, "subindex": 1, "token": "wrong"})");
+  const auto refused = commander.wait_for("t/port/1/isdu/response", [](const Json& j) { return j["id"] == 41; });
+  ASSERT_TRUE(refused) << "a refused request must answer with its id";
+  EXPECT_FALSE((*refused)["ok"].get<bool>());
+  // Malformed JSON that quotes the token: the error must not repeat it.
+  commander.publish("t/port/1/faults/set", "{\"token\": \"" + token + "\", \"supply_V\": }");
+  // A signed command (serve/mqtt_auth.hpp): the token itself never travels.
+  const std::string unsigned_cmd = R"({"id": 42, "op": "read", "index": 64, "subindex": 1, "auth": ""})";
+  std::string signed_cmd = unsigned_cmd;
+  signed_cmd.replace(signed_cmd.find(R"("auth": "")") + 9, 0, command_signature(token, "t/port/1/isdu/request", unsigned_cmd));
+  commander.publish("t/port/1/isdu/request", signed_cmd);
+  const auto ok = commander.wait_for("t/port/1/isdu/response", [](const Json& j) { return j["id"] == 42; });
+  ASSERT_TRUE(ok);
+  EXPECT_TRUE((*ok)["ok"].get<bool>()) << ok->dump();
+  // The same signature on another command is refused (it signs topic and payload).
+  std::string forged = signed_cmd;
+  forged.replace(forged.find("64"), 2, "65");
+  commander.publish("t/port/1/isdu/request", forged);
+  const auto refused2 = commander.wait_for("t/port/1/isdu/response", [](const Json& j) {
+    return j["id"] == 42 && j.contains("ok") && !j["ok"].get<bool>();
+  });
+  EXPECT_TRUE(refused2) << "a forged signature was accepted";
+  EXPECT_TRUE(l.wait_for("t/errors", [](const Json& j) { return j["topic"] == "t/port/1/faults/set"; }));
+  bridge->stop();
+  hub.stop();
+  EXPECT_TRUE(l.wait_raw("t/port/1/availability", "offline"));
+  EXPECT_TRUE(l.wait_raw("t/port/1/processdata", "")); // the retained process data deleted
+  // A "#" subscriber never saw the token: not in what serve published, not in
+  // the signed commands (only the deliberately malformed one above quotes it).
+  {
+    std::lock_guard lock(l.mutex);
+    for (const auto& [t, p, r] : l.raw)
+      if (t != "t/port/1/faults/set") {
+        EXPECT_EQ(p.find(token), std::string::npos) << t << ": " << p;
+      }
+  }
+  // A late subscriber sees no stale process data, and "offline".
+  Listener late(broker.port, "t/#");
+  EXPECT_TRUE(late.wait_raw("t/port/1/availability", "offline"));
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  std::lock_guard lock(late.mutex);
+  for (const auto& [t, p, r] : late.raw) {
+    EXPECT_NE(t, "t/port/1/processdata") << p;
+    EXPECT_NE(t, "t/port/3/processdata") << "a port above --ports stayed retained: " << p;
+  }
+}
+
+// SIGKILL: the broker publishes each port's last will ("offline").
+TEST(MqttBridge, LastWillSaysOfflineWhenServeDies) {
+  if (access(kBroker, X_OK) != 0) GTEST_SKIP() << "mosquitto not installed";
+  Broker broker;
+  ASSERT_TRUE(broker.start()) << "mosquitto did not start";
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) { // a serve that will be killed
+    Hub hub(std::vector<TwinConfig>(1), HubOptions{});
+    MqttOptions o;
+    o.port = broker.port;
+    o.prefix = "w";
+    MqttBridge bridge(hub, o);
+    bridge.start();
+    for (;;) pause();
+  }
+  Listener l(broker.port, "w/#");
+  const bool online = l.wait_raw("w/port/1/availability", "online");
+  kill(child, SIGKILL);
+  waitpid(child, nullptr, 0);
+  ASSERT_TRUE(online);
+  EXPECT_TRUE(l.wait_raw("w/port/1/availability", "offline"));
+  EXPECT_TRUE(l.wait_raw("w/availability", "offline"));
 }
 
 TEST(MqttBridge, UnreachableBrokerIsAClearError) {

@@ -110,7 +110,7 @@ cases = [
     (lambda p, b: s.curl("GET", p), "/v1/ports/1/parameters/4242/0", None, 404),
     (lambda p, b: s.curl("GET", p), "/v1/ports/1/parameters/64/77", None, 404),
     (lambda p, b: s.curl("GET", p), "/v1/nothing", None, 404),
-    (lambda p, b: s.curl("DELETE", p), "/v1/ports/1", None, 404),
+    (lambda p, b: s.curl("DELETE", p), "/v1/ports/1", None, 405),
     (put, "/v1/ports/1/processdata/out", json.dumps({"motor_on": True, "pad": "x" * 200000}), 413),
 ]
 for fn, path, body, want in cases:

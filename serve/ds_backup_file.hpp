@@ -1,0 +1,14 @@
+// The master's Data Storage backup as a file in serve's state folder
+// (port<P>.ds.json): JSON, values as hex (serve/state_dir.hpp).
+#pragma once
+#include <string>
+
+#include "scenarios/data_storage_master.hpp"
+
+namespace sreh::serve {
+
+std::string ds_backup_json(const DsBackup& backup);
+// Throws std::invalid_argument (message without a file name) if malformed.
+DsBackup ds_backup_from_json(const std::string& text);
+
+} // namespace sreh::serve
