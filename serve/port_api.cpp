@@ -102,28 +102,8 @@ std::vector<uint8_t> parse_hex(const std::string& text, const std::string& what)
   return out;
 }
 
-std::string iolink_error_name(uint16_t code) {
-  switch (code) {
-    case kIsduApplicationError: return "Device application error";
-    case kIsduIndexNotAvailable: return "Index not available";
-    case kIsduSubindexNotAvailable: return "Subindex not available";
-    case kIsduServiceTempUnavailable: return "Service temporarily not available";
-    case kIsduLocalControl: return "Service temporarily not available - local control";
-    case kIsduDeviceControl: return "Service temporarily not available - device control";
-    case kIsduAccessDenied: return "Access denied";
-    case kIsduValueOutOfRange: return "Parameter value out of range";
-    case kIsduValueAboveLimit: return "Parameter value above limit";
-    case kIsduValueBelowLimit: return "Parameter value below limit";
-    case kIsduLengthOverrun: return "Parameter length overrun";
-    case kIsduLengthUnderrun: return "Parameter length underrun";
-    case kIsduFunctionUnavailable: return "Function unavailable";
-    case kIsduFunctionTempUnavailable: return "Function temporarily unavailable";
-    case kIsduInvalidParameterSet: return "Invalid parameter set";
-    case kIsduInconsistentParameterSet: return "Inconsistent parameter set";
-    case kIsduApplicationNotReady: return "Application not ready";
-    default: return "ISDU error";
-  }
-}
+// The one name table is the device's (device_logic/isdu.cpp).
+std::string iolink_error_name(uint16_t code) { return std::string(isdu_error_name(code)); }
 
 std::string iolink_error_text(uint16_t code) { return fmt::format("0x{:04X}", code); }
 
