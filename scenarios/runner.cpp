@@ -150,7 +150,18 @@ class ScenarioRun {
              fmt::format("held already after {}, before after_s", seconds(static_cast<double>(waited) * twin_->master_cycle_s())));
       return;
     }
-    record(id, step.loc, description, e.passed, e.actual, "not reached; " + e.mismatch);
+    record(id, step.loc, description, e.passed, e.actual, "not reached; " + e.mismatch + busy_note());
+  }
+
+  // Still Busy at a timeout (issue 29): which set the move runs with and its
+  // speed, so that a move left on set 0 (30 deg/s factory speed) is obvious.
+  std::string busy_note() const {
+    if (!twin_->pd_in().busy) return {};
+    const std::optional<MoveRecord> move = twin_->device().pending_move();
+    if (!move) return {};
+    const MotionParameterSet set = twin_->device().snapshot().configuration.store.motion_set(move->parameter_set);
+    return fmt::format(" (the move runs with parameter set {} at {:g} deg/s{})", move->parameter_set, set.speed_dps,
+                       move->parameter_set == 0 ? "; set 0 is what a pd step without parameter_set selects" : "");
   }
 
   void execute(const Step& step, const std::string& id, const ExpectStep& a) {
