@@ -13,4 +13,8 @@ bool is_valid_utf8(std::string_view text);
 // std::string_view::npos when all of `text` is valid.
 std::size_t first_invalid_utf8(std::string_view text);
 
+// Levenshtein distance (insertions, deletions, substitutions): the "did you
+// mean" of mistyped names (model constants, options).
+std::size_t edit_distance(std::string_view a, std::string_view b);
+
 } // namespace sreh::io

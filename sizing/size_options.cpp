@@ -6,6 +6,7 @@
 
 #include "io/output_path.hpp"
 #include "scenarios/load_file.hpp"
+#include "twin/load_builder.hpp"
 #include "scenarios/scenario_parser.hpp"
 #include "sizing/cycle_output.hpp"
 #include "sizing/output.hpp"
@@ -64,6 +65,10 @@ SizingRequest make_request(const SizeOptions& a) {
   if (!a.angle_deg) throw SizingInputError("size: give the move with --angle-deg A, or a cycle with --cycle FILE.yaml");
   rq.angle_deg = *a.angle_deg;
   if (a.load_gcm2 && !a.load.empty()) throw SizingInputError("--load-gcm2 and --load: give only one of them");
+  if (a.load_gcm2 && *a.load_gcm2 > 0 && *a.load_gcm2 < kMinInertiaGcm2) { // issue 29: name the option
+    throw SizingInputError(fmt::format("--load-gcm2 {}: above 0 but below {} g cm^2, too small to model; give 0 for no load",
+                                       *a.load_gcm2, kMinInertiaGcm2));
+  }
   if (a.load_gcm2) rq.load = InertiaLoad{*a.load_gcm2};
   else if (!a.load.empty()) {
     LoadFileContents f = read_load_file(a.load);

@@ -10,6 +10,7 @@
 #include "io/interrupt.hpp"
 #include "io/output_path.hpp"
 #include "io/text.hpp"
+#include "tools/cli_hints.hpp"
 #include "tools/command.hpp"
 #include "twin/models_dir.hpp"
 
@@ -109,6 +110,7 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     if (const std::string problem = command_problem(app, argc, argv); !problem.empty()) return fail(2, problem);
+    if (const std::string hint = cli_hint(app, e, argc, argv); !hint.empty()) return fail(2, hint);
     return fail(2, e.what());
   } catch (const sreh::io::Interrupted& e) {
     return fail(e.exit_code(), e.what());

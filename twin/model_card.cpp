@@ -11,6 +11,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "io/text.hpp"
 #include "twin/models_dir.hpp"
 
 namespace sreh {
@@ -75,28 +76,12 @@ const SchemaRow* schema_row(const std::string& name) {
   return nullptr;
 }
 
-// Edit distance, for "did you mean" on a mistyped name.
-std::size_t edit_distance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = up;
-    }
-  }
-  return row[b.size()];
-}
-
 // "unknown constant 'x' (did you mean 'y'? ...)" or the whole list.
 std::string unknown_constant(const std::string& name) {
   const SchemaRow* best = nullptr;
   std::size_t best_distance = 4; // more edits than this: no guess
   for (const SchemaRow& row : kSchema) {
-    const std::size_t d = edit_distance(name, row.name);
+    const std::size_t d = io::edit_distance(name, row.name);
     if (d < best_distance) best_distance = d, best = &row;
   }
   std::string out = "unknown constant '" + name + "' (";
