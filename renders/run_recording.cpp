@@ -173,6 +173,7 @@ VideoSummary RunRecording::render(VideoOptions o, bool fixed_slowmo, const TimeS
       }
       f.row.t_s = std::max(t, s.first_t_s);
       rec.add_frame(m, d, f);
+      if (o.progress && t_end > 0) o.progress(t / t_end);
     }
     // The end state stays on screen a moment (A-RENDERS-12).
     FrameInfo last = samples.frame(s.samples - 1, nullptr);

@@ -9,6 +9,7 @@
 #pragma once
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -41,6 +42,9 @@ struct VideoOptions {
   int crf = 20;
   bool threaded = true;             // false: render and write on the caller's thread (the reference loop)
   bool overlay = true;
+  // Called as frames are made with the share of the run rendered (0..1):
+  // the CLI's progress line (issue 29). Empty: nothing.
+  std::function<void(double)> progress;
 };
 
 // What the frame shows besides the MuJoCo state: the cycle's trace row as

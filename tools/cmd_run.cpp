@@ -20,6 +20,7 @@
 #include "scenarios/scenario_parser.hpp"
 #include "tools/command.hpp"
 #include "tools/junit_report.hpp"
+#include "tools/progress.hpp"
 #include "tools/run_folder.hpp"
 #include "tools/run_output.hpp"
 #include "twin/plant.hpp"
@@ -56,33 +57,7 @@ struct RunArgs {
   std::string shard; // with a folder
   std::string model; // --model FILE (issue 25)
   std::string junit; // --junit FILE (issue 29)
-};
-
-// Progress on stderr, only for a person watching (a TTY) and only once a run
-// has taken more than a second of wall time. Wall time is the CLI's business
-// only; the simulation never reads it.
-class Progress {
- public:
-  explicit Progress(bool enabled) : enabled_(enabled), start_(Clock::now()), last_(start_) {}
-  void update(double t_s) {
-    if (!enabled_ || (++calls_ % 50) != 0) return;
-    const auto now = Clock::now();
-    if (now - start_ < std::chrono::seconds(1) || now - last_ < std::chrono::milliseconds(200)) return;
-    last_ = now;
-    shown_ = true;
-    std::fprintf(stderr, "\rsimulated %.2f s", t_s);
-    std::fflush(stderr);
-  }
-  ~Progress() {
-    if (shown_) std::fprintf(stderr, "\r%30s\r", "");
-  }
-
- private:
-  using Clock = std::chrono::steady_clock;
-  bool enabled_;
-  Clock::time_point start_, last_;
-  uint64_t calls_ = 0;
-  bool shown_ = false;
+  bool quiet = false; // no progress lines on stderr
 };
 
 // --trace: rows go to the file's temporary as the run makes them (memory
@@ -317,7 +292,8 @@ int run_command(RunArgs a) {
   double wall_s = 0; // the simulation's own wall time: what real_time_factor compares with
   JunitReport junit;
   try {
-    Progress progress(isatty(STDERR_FILENO) != 0);
+    Progress progress(isatty(STDERR_FILENO) != 0, a.quiet);
+    progress.phase("simulating");
     RunOptions options;
     options.limits = a.limits;
     output->attach(options);
@@ -334,21 +310,26 @@ int run_command(RunArgs a) {
     if (!a.video.empty() || !a.frames.empty()) video.emplace();
     options.on_cycle = [&](const Twin& twin) {
       if (video) video->on_cycle(twin);
-      progress.update(twin.time_s());
+      progress.update(-1.0, twin.time_s());
     };
     if (video) options.on_step = [&](const Step& step) { video->on_step(step); };
     if (!a.junit.empty()) junit.chain(options);
     result = timed_run(scenario, options, wall_s);
     if (video) {
       try {
-        video->render(video_options(a), a.slowmo > 0);
+        progress.phase("rendering the video");
+        VideoOptions vo = video_options(a);
+        vo.progress = [&progress](double fraction) { progress.update(fraction); };
+        video->render(vo, a.slowmo > 0);
       } catch (const std::invalid_argument& e) {
         throw InputError(e.what());
       }
     }
 #else
     if (trace) options.trace_sink = [&](const TraceRow& row) { trace->row(row); };
-    options.on_cycle = [&](const Twin& twin) { progress.update(twin.time_s()); };
+    options.on_cycle = [&](const Twin& twin) {
+      progress.update(-1.0, twin.time_s());
+    };
     if (!a.junit.empty()) junit.chain(options);
     result = timed_run(scenario, options, wall_s);
 #endif
@@ -405,6 +386,7 @@ SREH_REGISTER_COMMAND(10, [](CLI::App& app, int& exit_code) {
   cmd->add_option("--camera", args->camera, "Camera: default (fits module and load, 135 deg azimuth, 30 deg down) or top")
       ->capture_default_str();
   cmd->add_option("--report", args->report, "Write an HTML report folder (index.html, the video copied in) here");
+  cmd->add_flag("--quiet", args->quiet, "No progress lines on stderr (they come for work over 2 s)");
   cmd->add_option("--junit", args->junit,
                   "Also write the result as JUnit XML for CI servers: one testcase per scenario (a folder: per file)");
   cmd->add_option("--model", args->model,
