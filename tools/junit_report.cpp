@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "io/atomic_file.hpp"
+#include "io/html_page.hpp"
 #include "io/text.hpp"
 
 namespace sreh::tools {
@@ -14,24 +15,9 @@ namespace {
 constexpr std::size_t kMaxCheckLines = 2000; // a long run's checks are counted, not all listed
 constexpr std::size_t kMaxFailures = 100;
 
-// XML text and attribute values: the five entities; control characters
-// (not allowed in XML 1.0) escaped as the CLI echoes them.
-std::string xml(const std::string& raw) {
-  const std::string s = io::escape_control(raw);
-  std::string out;
-  out.reserve(s.size());
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
+// XML text and attribute values: control characters (not allowed in XML
+// 1.0) escaped as the CLI echoes them, then & < > " ' (io/html_page.hpp).
+std::string xml(const std::string& raw) { return io::html_escape(io::escape_control(raw)); }
 
 } // namespace
 
