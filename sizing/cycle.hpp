@@ -47,6 +47,7 @@ struct CycleRequest {
   int load_line = 0, load_column = 0; // of `load:` in the file (messages)
   double mounting_tilt_deg = 0;   // 0 vertical, 90 horizontal (A-TWIN-24)
   ModuleModel module = default_module_model(); // model card, `--model FILE` (issue 25)
+  std::string model_file;         // that FILE, absolute ("" none): --emit-scenario names it
   double voltage_V = 24.0;
   double source_resistance_ohm = 0.0;
   double bus_capacitance_F = 0.0;

@@ -102,6 +102,7 @@ std::string scenario_yaml(const CycleRequest& rq, const std::vector<ParameterSet
   y += fmt::format("# Written by sreh-twin size --emit-scenario: the sized cycle replayed in the twin.\n"
                    "# Run it with: sreh-twin run THIS_FILE\n");
   y += fmt::format("name: {}\n", nlohmann::json(name).dump());
+  if (!rq.model_file.empty()) y += fmt::format("model: {}  # the sizing's --model\n", nlohmann::json(rq.model_file).dump());
   y += "device:\n";
   y += fmt::format("  supply_V: {}\n  ambient_C: {}\n", num(rq.voltage_V), num(rq.ambient_C));
   if (rq.source_resistance_ohm > 0) y += fmt::format("  source_resistance_ohm: {}\n", num(rq.source_resistance_ohm));

@@ -131,6 +131,7 @@ SizeOutcome run_cycle(const SizeOptions& a) {
   SizeOutcome out;
   CycleRequest rq = parse_cycle_file(a.cycle);
   rq.module = module_from_option(a.model);
+  if (!a.model.empty()) rq.model_file = std::filesystem::absolute(a.model).lexically_normal().string(); // --emit-scenario names it
   rq.keep_trace = !a.report.empty();
   out.cycle_result = size_cycle(rq);
   if (!a.report.empty()) {
@@ -178,7 +179,8 @@ SizeOutcome run_size(const SizeOptions& a) {
     }
   }
   if (!a.emit_scenario.empty()) {
-    const CycleRequest c = cycle_of_single(out.request);
+    CycleRequest c = cycle_of_single(out.request);
+    if (!a.model.empty()) c.model_file = std::filesystem::absolute(a.model).lexically_normal().string();
     write_scenario_file(a.emit_scenario,
                         scenario_yaml(c, {out.result.evaluation.set}, {out.request.parameter_set, -1, out.request.parameter_set, -1},
                                       fmt::format("sized move {} deg back and forth", out.request.angle_deg)));

@@ -40,10 +40,15 @@ a, b = (json.load(open(p)) for p in sys.argv[1:3])
 assert b["peak_torque_Nm"] > a["peak_torque_Nm"] and b["rms_torque_Nm"] > a["rms_torque_Nm"], (a["peak_torque_Nm"], b["peak_torque_Nm"])
 PY
 
+# --emit-scenario replays the sizing with the same model file.
+"$bin" size --angle-deg 90 --load-gcm2 1000 --model "$dir/friction.yaml" --emit-scenario "$dir/replay.yaml" > /dev/null
+grep -q "^model: \"$dir/friction.yaml\"" "$dir/replay.yaml" || fail "the emitted scenario does not name the --model file"
+"$bin" run "$dir/replay.yaml" > /dev/null || fail "the emitted scenario with its model does not pass"
+
 "$bin" run "$scenario" --json > "$dir/run.json"
 /usr/bin/python3 - "$dir/run.json" <<'PY' || fail "run --json timing"
 import json, sys
 r = json.load(open(sys.argv[1]))
 assert r["wall_s"] > 0 and r["real_time_factor"] > 0, r
 PY
-echo "model card: show, read back, JSON, --model changes sizing, run timing"
+echo "model card: show, read back, JSON, --model changes sizing, emitted scenarios keep it, run timing"
