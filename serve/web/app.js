@@ -28,17 +28,48 @@ function el(tag, attrs, ...children) {
   return e;
 }
 
+// A number for display: fixed digits, and never "-0" (issue 29).
+function num(v, digits) {
+  const s = v.toFixed(digits);
+  return Number(s) === 0 ? (0).toFixed(digits) : s;
+}
+
+// The position dial (issue 29: with its scale): process-data degrees, 0 at
+// the top, positive clockwise as SVG rotates; a tick every 30 deg, labels
+// every 90; the actual position solid, the setpoint dashed.
 function dial() {
   const ns = 'http://www.w3.org/2000/svg';
   const svg = document.createElementNS(ns, 'svg');
-  svg.setAttribute('viewBox', '-60 -60 120 120');
-  svg.setAttribute('width', '150');
-  svg.setAttribute('height', '150');
-  svg.innerHTML = '<circle r="52" fill="#e5e7eb" stroke="#6b7280" stroke-width="2"/>' +
+  svg.setAttribute('viewBox', '-84 -70 168 152');
+  svg.setAttribute('width', '190');
+  svg.setAttribute('height', '185');
+  let scale = '';
+  for (let a = 0; a < 360; a += 30) {
+    const r0 = a % 90 === 0 ? 44 : 48;
+    scale += `<line x1="0" y1="-${r0}" x2="0" y2="-52" stroke="#6b7280" stroke-width="1.5" transform="rotate(${a})"/>`;
+  }
+  for (const [a, x, y, anchor] of [[0, 0, -56, 'middle'], [90, 57, 4, 'start'], [180, 0, 66, 'middle'], [270, -57, 4, 'end']]) {
+    scale += `<text x="${x}" y="${y}" font-size="10" text-anchor="${anchor}" fill="#374151">${a}\u00b0</text>`;
+  }
+  svg.innerHTML = '<circle r="52" fill="#e5e7eb" stroke="#6b7280" stroke-width="2"/>' + scale +
     '<line class="target" x1="0" y1="0" x2="0" y2="-50" stroke="#16a34a" stroke-width="3" stroke-dasharray="4 3"/>' +
     '<line class="actual" x1="0" y1="0" x2="0" y2="-46" stroke="#1f2937" stroke-width="4" stroke-linecap="round"/>' +
-    '<circle r="4" fill="#1f2937"/>';
+    '<circle r="4" fill="#1f2937"/>' +
+    '<line x1="-62" y1="76" x2="-48" y2="76" stroke="#1f2937" stroke-width="4"/>' +
+    '<text x="-44" y="79" font-size="9" fill="#374151">position</text>' +
+    '<line x1="4" y1="76" x2="18" y2="76" stroke="#16a34a" stroke-width="3" stroke-dasharray="4 3"/>' +
+    '<text x="22" y="79" font-size="9" fill="#374151">setpoint</text>';
   return svg;
+}
+
+// The y range of a plot: the data's, padded, and at least +-`min_half` about
+// its middle, so that a flat trace (holding, 0 N m) still has ticks (issue 29).
+function range(rows, min_half) {
+  let lo = Infinity, hi = -Infinity;
+  for (const r of rows) { lo = Math.min(lo, r[1]); hi = Math.max(hi, r[1]); }
+  if (!isFinite(lo)) return [-1.2 * min_half, 1.2 * min_half];
+  const mid = (lo + hi) / 2, half = 1.2 * Math.max(min_half, 0.5 * (hi - lo));
+  return [mid - half, mid + half];
 }
 
 class PortView {
@@ -76,18 +107,24 @@ class PortView {
         btn('block', 'Block flange', () => this.fault({ flange_blocked: true })),
         btn('unblock', 'Free flange', () => this.fault({ flange_blocked: false })),
         btn('power-cycle', 'Power cycle', () => this.fault({ power_cycle: true })), el('br'),
-        this.torqueIn, btn('torque', 'External torque Nm', () => this.fault({ external_torque_Nm: Number(this.torqueIn.value) })),
-        this.supplyIn, btn('supply-btn', 'Supply V', () => this.fault({ supply_V: Number(this.supplyIn.value) })),
-        this.ambientIn, btn('ambient-btn', 'Ambient degC', () => this.fault({ ambient_C: Number(this.ambientIn.value) }))));
+        // Each value with its name, unit and the button that applies it, kept together (issue 29).
+        el('span', { class: 'setting' }, 'External torque ', this.torqueIn, ' N m ',
+          btn('torque', 'Apply', () => this.fault({ external_torque_Nm: Number(this.torqueIn.value) }))),
+        el('span', { class: 'setting' }, 'Supply ', this.supplyIn, ' V ',
+          btn('supply-btn', 'Apply', () => this.fault({ supply_V: Number(this.supplyIn.value) }))),
+        el('span', { class: 'setting' }, 'Ambient ', this.ambientIn, ' \u00b0C ',
+          btn('ambient-btn', 'Apply', () => this.fault({ ambient_C: Number(this.ambientIn.value) })))));
     this.root = el('section', { class: 'port', id: id('card') },
       el('h2', {}, this.led, `Port ${this.p}: ${info.device}`, ' \u2014 ', this.stateText),
       el('div', { class: 'row' }, el('div', {}, this.dial, this.facts), el('div', {}, errChart, torqueChart)),
       controls, this.errBox);
     document.getElementById('ports').append(this.root);
-    const opts = (label, color) => ({ labels: ['t_s', label], colors: [color], legend: 'always',
-                                      xlabel: 't / s', axisLabelFontSize: 11, strokeWidth: 1.5 });
-    this.errPlot = new Dygraph(errChart, [[0, 0]], opts('tracking error / deg', '#dc2626'));
-    this.torquePlot = new Dygraph(torqueChart, [[0, 0]], opts('torque / Nm', '#2563eb'));
+    const opts = (label, unit, color) => ({ labels: ['t_s', label], colors: [color], legend: 'always', ylabel: unit,
+                                      xlabel: 't / s', axisLabelFontSize: 11, strokeWidth: 1.5,
+                                      axes: { y: { axisLabelWidth: 50, pixelsPerLabel: 18,
+                                                   axisLabelFormatter: (v) => String(Number(v.toPrecision(3))) } } });
+    this.errPlot = new Dygraph(errChart, [[0, 0]], opts('tracking error / deg', 'deg', '#dc2626'));
+    this.torquePlot = new Dygraph(torqueChart, [[0, 0]], opts('torque / N m', 'N m', '#2563eb'));
     this.setLed(info.led);
     this.connect();
   }
@@ -133,9 +170,9 @@ class PortView {
     rot(s.position_deg, '.actual');
     rot(s.setpoint_deg, '.target');
     this.root.dataset.position = s.position_deg.toFixed(2);
-    this.facts.innerHTML = `position ${s.position_deg.toFixed(2)} deg<br>setpoint ${s.setpoint_deg.toFixed(2)} deg<br>` +
-      `speed ${s.velocity_dps.toFixed(0)} deg/s<br>torque ${s.torque_Nm.toFixed(3)} Nm<br>` +
-      `supply ${s.supply_V.toFixed(1)} V<br>temperature ${s.temperature_C.toFixed(1)} degC<br>t ${s.t_s.toFixed(2)} s`;
+    this.facts.innerHTML = `position ${num(s.position_deg, 2)} deg<br>setpoint ${num(s.setpoint_deg, 2)} deg<br>` +
+      `speed ${num(s.velocity_dps, 0)} deg/s<br>torque ${num(s.torque_Nm, 3)} N m<br>` +
+      `supply ${num(s.supply_V, 1)} V<br>temperature ${num(s.temperature_C, 1)} \u00b0C<br>t ${num(s.t_s, 2)} s`;
     for (const [key, plot, value] of [['err', this.errPlot, s.tracking_error_deg], ['torque', this.torquePlot, s.torque_Nm]]) {
       const d = this.data[key];
       d.push([s.t_s, value]);
@@ -145,8 +182,8 @@ class PortView {
       this.redrawQueued = true;
       requestAnimationFrame(() => {
         this.redrawQueued = false;
-        this.errPlot.updateOptions({ file: this.data.err });
-        this.torquePlot.updateOptions({ file: this.data.torque });
+        this.errPlot.updateOptions({ file: this.data.err, valueRange: range(this.data.err, 0.01) });
+        this.torquePlot.updateOptions({ file: this.data.torque, valueRange: range(this.data.torque, 0.05) });
       });
     }
   }
