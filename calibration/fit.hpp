@@ -53,8 +53,10 @@ struct FitResult {
 };
 
 // What the data of a calibration plan identify by default: friction on the
-// rotor, the drive train's spring and damper, the rotor's inertia
-// (servo.md "Identification").
+// rotor (Coulomb, viscous, breakaway) and the drive train's spring and
+// damper (servo.md "Identification"). Not the rotor inertia: the manual
+// gives J_intern (3.5.4) and its card range is +-5 %, inside what it
+// trades off against stiffness (A-CAL-7).
 std::vector<std::string> default_fit_names();
 
 // Throws CalibrationInputError for a name not on the card or one whose range

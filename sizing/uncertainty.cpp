@@ -19,6 +19,21 @@ void widen(Band& b, double v, bool first) {
   b.hi = std::max(b.hi, v);
 }
 
+// The firmware's loop tuning: the card's ranges for these say what a
+// calibration may try, not how production modules spread
+// (docs/model-card.md), so uncertainty sizing keeps them (A-SIZE-UNC-1).
+bool firmware_tuning(const std::string& name) {
+  static const char* const kNames[] = {"control_period",  "loop_delay",     "current_loop_bandwidth",
+                                       "velocity_bandwidth", "velocity_schedule_exponent", "position_ratio",
+                                       "integral_ratio",  "velocity_filter", "speed_filter"};
+  for (const char* n : kNames) {
+    if (name == n) return true;
+  }
+  return false;
+}
+
+bool sampled(const ModelConstant& k) { return k.range_hi > k.range_lo && !firmware_tuning(k.name); }
+
 } // namespace
 
 std::vector<ModelCard> latin_hypercube_cards(const ModelCard& card, int samples, uint64_t seed) {
@@ -27,7 +42,7 @@ std::vector<ModelCard> latin_hypercube_cards(const ModelCard& card, int samples,
   const auto n = static_cast<std::size_t>(samples);
   for (std::size_t c = 0; c < card.constants.size(); ++c) {
     const ModelConstant& k = card.constants[c];
-    if (!(k.range_hi > k.range_lo)) continue;
+    if (!sampled(k)) continue;
     std::vector<std::size_t> strata(n);
     for (std::size_t i = 0; i < n; ++i) strata[i] = i;
     for (std::size_t i = n; i > 1; --i) std::swap(strata[i - 1], strata[static_cast<std::size_t>(unit(rng) * static_cast<double>(i))]);
@@ -47,7 +62,7 @@ UncertaintyResult size_uncertainty(const SizingRequest& request, const ModelCard
   u.samples = samples;
   u.seed = seed;
   for (const ModelConstant& k : card.constants) {
-    if (k.range_hi > k.range_lo) u.sampled.push_back(k.name);
+    if (sampled(k)) u.sampled.push_back(k.name);
   }
   const std::vector<ModelCard> cards = latin_hypercube_cards(card, samples, seed);
   std::vector<Evaluation> evaluations(cards.size());
@@ -65,11 +80,12 @@ UncertaintyResult size_uncertainty(const SizingRequest& request, const ModelCard
   };
   add(nominal, true);
   for (const Evaluation& e : evaluations) {
-    add(e, false);
+    if (e.completed) add(e, false); // an unfinished move has no times to band
     if (!e.feasible || !e.completed) {
       u.feasible_worst_case = false;
       ++u.infeasible_samples;
     }
+    if (!e.completed) ++u.incomplete_samples;
   }
   return u;
 }
@@ -85,7 +101,8 @@ void add_uncertainty_json(nlohmann::json& json, const UncertaintyResult& u) {
                          {"seed", u.seed},
                          {"sampling", "latin_hypercube"},
                          {"sampled", u.sampled},
-                         {"infeasible_samples", u.infeasible_samples}};
+                         {"infeasible_samples", u.infeasible_samples},
+                         {"incomplete_samples", u.incomplete_samples}};
 }
 
 } // namespace sreh::sizing

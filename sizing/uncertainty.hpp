@@ -26,11 +26,12 @@ struct UncertaintyResult {
   Band positioning_s, settling_s, peak_torque_Nm, max_temperature_C;
   bool feasible_worst_case = false; // every sample feasible
   int infeasible_samples = 0;
+  int incomplete_samples = 0;        // a move did not reach Done: left out of the bands
 };
 
-// `samples` models, each constant with a range drawn by a Latin hypercube
-// (one draw per stratum, strata shuffled per constant) from `seed`; whole
-// constants rounded. The bands cover the nominal evaluation too. Runs the
+// `samples` models, each physical constant with a range drawn by a Latin
+// hypercube (one draw per stratum, strata shuffled per constant) from
+// `seed`; the firmware's loop tuning is kept at its value. The bands cover the nominal evaluation too. Runs the
 // samples on `threads` threads; the result does not depend on them.
 UncertaintyResult size_uncertainty(const SizingRequest& request, const ModelCard& card, const Evaluation& nominal,
                                    int samples, uint64_t seed, int threads);

@@ -112,8 +112,8 @@ SREH_REGISTER_COMMAND(57, [](CLI::App& app, int& exit_code) {
                   "(device.isdu), which a process-data log does not carry");
   cmd->add_option("--model", r.model, "Start from this model file (default: the model card)");
   cmd->add_option("--fit", args->fit,
-                  "Constants to fit, NAME,NAME... [default: coulomb_friction,viscous_friction,torsional_stiffness,"
-                  "torsional_damping,rotor_inertia]");
+                  "Constants to fit, NAME,NAME... [default: coulomb_friction,viscous_friction,stribeck_excess,"
+                  "torsional_stiffness,torsional_damping]");
   cmd->add_option("--out", args->out, "Write the fitted model file here (what --model reads)");
   cmd->add_flag("--json", args->json, "Print {constants: {NAME: {value, start, ci95}}, rms_residual_deg, iterations, converged}");
   cmd->add_option("--threads", r.options.threads, "Replays in parallel [default: the CPUs this process may use]")

@@ -6,29 +6,39 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <fstream>
+
 #include "calibration/fit.hpp"
+#include "calibration/fit_output.hpp"
 #include "calibration_rig.hpp"
 
 namespace sreh {
 namespace {
 
-// The hidden module: four constants moved by 32-36 % inside their ranges.
+// The hidden module (examples/calibration/hidden_module.yaml): five
+// friction, stiffness and damping constants moved by 32-36 % inside their ranges.
 ModelCard hidden_card() {
   return test::card_with({{"coulomb_friction", 0.0054},      // +35 %
                           {"viscous_friction", 1.35e-5},     // +35 %
+                          {"stribeck_excess", 0.0027},       // +35 %
                           {"torsional_stiffness", 450},      // +32 %
                           {"torsional_damping", 0.095}});    // +36 %
 }
 
+// The plan with the heaviest load the module takes (manual 3.5.6): the
+// flange's ringing after fast stops shows stiffness and damping best.
+constexpr double kPlanLoad_gcm2 = 15000;
+
 std::vector<FitCase> cases_for(const MasterLog& log, const Scenario& plan) {
   FitCase c;
   c.log = log;
-  c.setup = replay_setup(log, InertiaLoad{5000}, &plan);
+  c.setup = replay_setup(log, InertiaLoad{kPlanLoad_gcm2}, &plan);
   return {c};
 }
 
 TEST(Replay, TheRecordingModelGivesTheLogBackBitForBit) {
-  const Scenario plan = test::plan_scenario(5000);
+  const Scenario plan = test::plan_scenario(kPlanLoad_gcm2);
   const ModelCard hidden = hidden_card();
   const MasterLog log = test::record_log(plan, hidden);
   const auto cases = cases_for(log, plan);
@@ -60,7 +70,7 @@ void expect_predicts_held_out(const ModelCard& fitted, const ModelCard& hidden, 
 }
 
 TEST(Calibration, HiddenConstantsComeBackAndPredictAHeldOutMove) {
-  const Scenario plan = test::plan_scenario(5000);
+  const Scenario plan = test::plan_scenario(kPlanLoad_gcm2);
   const ModelCard hidden = hidden_card();
   const auto cases = cases_for(test::record_log(plan, hidden), plan);
   FitOptions options;
@@ -70,6 +80,34 @@ TEST(Calibration, HiddenConstantsComeBackAndPredictAHeldOutMove) {
   EXPECT_TRUE(fit.converged);
   expect_recovered(fit, hidden, 0.10);
   expect_predicts_held_out(fit.card, hidden, 0.05);
+
+  // FIT.yaml is a model file --model reads: the fitted values come back,
+  // each with its interval (inside the card's range) as its range.
+  const std::string path = testing::TempDir() + "/fit.yaml";
+  std::ofstream(path) << fit_model_yaml(fit, default_model_card(), {"recorded.csv"}, "2026-11-26");
+  const ModelCard read = apply_model_file(default_model_card(), path);
+  for (const FittedConstant& f : fit.constants) {
+    const ModelConstant* c = read.find(f.name);
+    EXPECT_EQ(c->value, f.value) << f.name;
+    EXPECT_NE(c->source.find("calibrated from recorded.csv on 2026-11-26"), std::string::npos);
+    if (f.identified) EXPECT_EQ(c->range_lo, std::max(f.ci95_lo, default_model_card().find(f.name)->range_lo));
+  }
+}
+
+// Issue 26: with one more wire count of random noise on every logged
+// position (seeded), the same within 15 %. Disabled in CTest for time (it
+// is a second fit); docs/calibration.md gives its numbers:
+//   build/tests/calibration/calibration_test --gtest_also_run_disabled_tests --gtest_filter='*Noise*'
+TEST(Calibration, DISABLED_WithOneCountOfNoise) {
+  const Scenario plan = test::plan_scenario(kPlanLoad_gcm2);
+  const ModelCard hidden = hidden_card();
+  const auto cases = cases_for(test::record_log(plan, hidden, 26u), plan);
+  const FitResult fit = fit_model(cases, default_model_card(), FitOptions{});
+  std::printf("rms %.5f deg (start %.5f), %d iterations, %s\n", fit.rms_residual_deg, fit.start_rms_residual_deg,
+              fit.iterations, fit.solver_message.c_str());
+  EXPECT_TRUE(fit.converged);
+  expect_recovered(fit, hidden, 0.15);
+  expect_predicts_held_out(fit.card, hidden, 0.15);
 }
 
 } // namespace
