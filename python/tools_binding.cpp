@@ -83,7 +83,7 @@ pyb::list option_names(const Table& table) {
 pyb::dict sweep_arrays(const sizing::SweepResult& result) {
   namespace sz = sizing;
   pyb::dict d;
-  const auto columns = sz::sweep_columns();
+  const auto columns = sz::sweep_columns(result.uncertainty);
   const auto n = static_cast<pyb::ssize_t>(result.points.size());
   for (std::size_t c = 0; c < columns.size(); ++c) {
     const std::string name(columns[c].name);

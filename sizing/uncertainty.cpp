@@ -92,8 +92,11 @@ UncertaintyResult size_uncertainty(const SizingRequest& request, const ModelCard
 
 void add_uncertainty_json(nlohmann::json& json, const UncertaintyResult& u) {
   auto band = [](const Band& b) { return nlohmann::json::array({b.lo, b.hi}); };
-  json["positioning_s_range"] = band(u.positioning_s);
-  json["settling_s_range"] = band(u.settling_s);
+  // Times on the nanosecond grid, as `size --json` writes them (output.cpp).
+  auto ns = [](double v) { return std::round(v * 1e9) / 1e9; };
+  auto time_band = [&](const Band& b) { return nlohmann::json::array({ns(b.lo), ns(b.hi)}); };
+  json["positioning_s_range"] = time_band(u.positioning_s);
+  json["settling_s_range"] = time_band(u.settling_s);
   json["peak_torque_Nm_range"] = band(u.peak_torque_Nm);
   json["max_temperature_C_range"] = band(u.max_temperature_C);
   json["feasible_worst_case"] = u.feasible_worst_case;

@@ -90,7 +90,9 @@ TEST(Calibration, HiddenConstantsComeBackAndPredictAHeldOutMove) {
     const ModelConstant* c = read.find(f.name);
     EXPECT_EQ(c->value, f.value) << f.name;
     EXPECT_NE(c->source.find("calibrated from recorded.csv on 2026-11-26"), std::string::npos);
-    if (f.identified) EXPECT_EQ(c->range_lo, std::max(f.ci95_lo, default_model_card().find(f.name)->range_lo));
+    if (f.identified) {
+      EXPECT_EQ(c->range_lo, std::max(f.ci95_lo, default_model_card().find(f.name)->range_lo));
+    }
   }
 }
 

@@ -16,6 +16,8 @@ SizingRequest request() {
   rq.angle_deg = 90;
   rq.load = InertiaLoad{5000};
   rq.setting = MotionSetting{2000, 100, 100};
+  rq.tolerance_deg = 0.0103; // tight, no waiting time: the settling shows the drive train
+  rq.wait_ms = 0;
   return rq;
 }
 
