@@ -175,7 +175,7 @@ SweepCell sweep_cell(const SweepPoint& p, std::size_t column) {
     case 19: return e.reason;
     default: break;
   }
-  if (!p.uncertainty || column < kBaseColumns) return {};
+  if (!p.uncertainty || column < kBaseColumns || (p.uncertainty->banded == 0 && column - kBaseColumns < 8)) return {};
   const UncertaintyResult& u = *p.uncertainty;
   switch (column - kBaseColumns) {
     case 0: return u.positioning_s.lo;

@@ -71,16 +71,19 @@ UncertaintyResult size_uncertainty(const SizingRequest& request, const ModelCard
     rq.module = cards[i].module_model();
     evaluations[i] = evaluate(rq, nominal.set, false);
   });
-  u.feasible_worst_case = nominal.feasible;
-  auto add = [&](const Evaluation& e, bool first) {
-    widen(u.positioning_s, e.positioning_s, first);
-    widen(u.settling_s, e.settling_s, first);
-    widen(u.peak_torque_Nm, e.peak_torque_Nm, first);
-    widen(u.max_temperature_C, e.steady_temperature_C, first);
+  u.feasible_worst_case = nominal.feasible && nominal.completed;
+  // An unfinished move has no times to band: only completed evaluations count.
+  auto add = [&](const Evaluation& e) {
+    if (!e.completed) return;
+    widen(u.positioning_s, e.positioning_s, u.banded == 0);
+    widen(u.settling_s, e.settling_s, u.banded == 0);
+    widen(u.peak_torque_Nm, e.peak_torque_Nm, u.banded == 0);
+    widen(u.max_temperature_C, e.steady_temperature_C, u.banded == 0);
+    ++u.banded;
   };
-  add(nominal, true);
+  add(nominal);
   for (const Evaluation& e : evaluations) {
-    if (e.completed) add(e, false); // an unfinished move has no times to band
+    add(e);
     if (!e.feasible || !e.completed) {
       u.feasible_worst_case = false;
       ++u.infeasible_samples;
@@ -91,10 +94,10 @@ UncertaintyResult size_uncertainty(const SizingRequest& request, const ModelCard
 }
 
 void add_uncertainty_json(nlohmann::json& json, const UncertaintyResult& u) {
-  auto band = [](const Band& b) { return nlohmann::json::array({b.lo, b.hi}); };
+  auto band = [&](const Band& b) { return u.banded ? nlohmann::json::array({b.lo, b.hi}) : nlohmann::json(); };
   // Times on the nanosecond grid, as `size --json` writes them (output.cpp).
   auto ns = [](double v) { return std::round(v * 1e9) / 1e9; };
-  auto time_band = [&](const Band& b) { return nlohmann::json::array({ns(b.lo), ns(b.hi)}); };
+  auto time_band = [&](const Band& b) { return u.banded ? nlohmann::json::array({ns(b.lo), ns(b.hi)}) : nlohmann::json(); };
   json["positioning_s_range"] = time_band(u.positioning_s);
   json["settling_s_range"] = time_band(u.settling_s);
   json["peak_torque_Nm_range"] = band(u.peak_torque_Nm);

@@ -27,6 +27,7 @@ struct UncertaintyResult {
   bool feasible_worst_case = false; // every sample feasible
   int infeasible_samples = 0;
   int incomplete_samples = 0;        // a move did not reach Done: left out of the bands
+  int banded = 0;                    // evaluations in the bands (the nominal and completed samples); 0: no bands (null)
 };
 
 // `samples` models, each physical constant with a range drawn by a Latin
