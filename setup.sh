@@ -11,6 +11,7 @@ packages=(
   build-essential cmake pkg-config git ca-certificates   # compiler, build
   libmujoco-dev libqhull-dev                              # physics (mujocoConfig.cmake needs the qhull headers)
   libeigen3-dev libyaml-cpp-dev                           # linear algebra, scenario files
+  libceres-dev                                            # calibrate: bounded nonlinear least squares (issue 26)
   libcli11-dev libfmt-dev nlohmann-json3-dev              # command line, formatting, JSON output
   libgtest-dev libgmock-dev libbenchmark-dev              # tests, benchmarks
   libosmesa6-dev libpng-dev ffmpeg                        # off-screen rendering, PNG frames, H.264 video

@@ -14,6 +14,10 @@
 #include "scenarios/runner.hpp"
 #include "scenarios/scenario_parser.hpp"
 #include "sizing/size_options.hpp"
+#include "calibration/calibrate.hpp"
+#include "calibration/fit_output.hpp"
+#include "io/atomic_file.hpp"
+#include "io/cpus.hpp"
 #include "sizing/sweep_options.hpp"
 
 namespace sreh::py {
@@ -46,6 +50,9 @@ Options options_from(const char* function, const Table& table, const pyb::kwargs
             } else if constexpr (std::is_same_v<T, std::vector<double>>) {
               if (PyFloat_Check(value.ptr()) || PyLong_Check(value.ptr())) field = {value.template cast<double>()};
               else field = pyb::cast<std::vector<double>>(pyb::module_::import("numpy").attr("asarray")(value, "float64").attr("ravel")().attr("tolist")());
+            } else if constexpr (std::is_same_v<T, bool>) {
+              if (!PyBool_Check(value.ptr())) throw pyb::cast_error("bool");
+              field = value.template cast<bool>();
             } else {
               if (PyBool_Check(value.ptr())) throw pyb::cast_error("bool");
               field = value.template cast<T>();
@@ -76,7 +83,7 @@ pyb::list option_names(const Table& table) {
 pyb::dict sweep_arrays(const sizing::SweepResult& result) {
   namespace sz = sizing;
   pyb::dict d;
-  const auto columns = sz::sweep_columns();
+  const auto columns = sz::sweep_columns(result.uncertainty);
   const auto n = static_cast<pyb::ssize_t>(result.points.size());
   for (std::size_t c = 0; c < columns.size(); ++c) {
     const std::string name(columns[c].name);
@@ -182,6 +189,40 @@ void bind_tools(pyb::module_& m) {
         }
       },
       "Sizing over a grid (`sreh-twin sweep`); returns the CSV's columns as numpy arrays (missing times NaN).");
+  m.def(
+      "calibrate",
+      [](std::vector<std::filesystem::path> logs, std::optional<double> load_gcm2, std::optional<std::filesystem::path> load,
+         std::optional<std::filesystem::path> setup, std::optional<std::filesystem::path> model,
+         std::vector<std::string> fit, std::optional<std::filesystem::path> out, std::optional<int> threads,
+         int max_iterations) {
+        CalibrateRequest r;
+        for (const auto& p : logs) r.logs.push_back(p.string());
+        r.load_gcm2 = load_gcm2;
+        if (load) r.load_file = load->string();
+        if (setup) r.setup = setup->string();
+        if (model) r.model = model->string();
+        r.fit = std::move(fit);
+        r.options.threads = threads.value_or(io::usable_cpus());
+        r.options.max_iterations = max_iterations;
+        CalibrateOutcome outcome;
+        try {
+          pyb::gil_scoped_release release;
+          outcome = calibrate(r);
+        } catch (const CalibrationInputError& e) {
+          throw input_error(e.what());
+        } catch (const std::invalid_argument& e) {
+          throw input_error(e.what());
+        }
+        if (out) io::write_file_atomic(out->string(), [&](std::ostream& o) { o << outcome.model_yaml; });
+        nlohmann::json j = fit_json(outcome.fit);
+        j["model_yaml"] = outcome.model_yaml;
+        return to_python(j);
+      },
+      arg("logs"), pyb::kw_only(), arg("load_gcm2") = pyb::none(), arg("load") = pyb::none(), arg("setup") = pyb::none(),
+      arg("model") = pyb::none(), arg("fit") = std::vector<std::string>{}, arg("out") = pyb::none(),
+      arg("threads") = pyb::none(), arg("max_iterations") = 25,
+      "`sreh-twin calibrate --json` as a dict (constants, rms_residual_deg, iterations, converged, ...) plus "
+      "model_yaml, the fitted model file (also written to `out` when given). Raises InputError for a bad log.");
   m.attr("SIZE_OPTIONS") = pyb::tuple(option_names(sizing::size_option_table()));
   m.attr("SWEEP_OPTIONS") = pyb::tuple(option_names(sizing::sweep_option_table()));
 }

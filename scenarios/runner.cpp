@@ -171,6 +171,7 @@ class ScenarioRun {
 
   void execute(const Step& step, const std::string& id, const IsduReadStep& a) {
     const IsduResult res = twin_->isdu_read(a.index, a.subindex);
+    if (o_.on_isdu_read) o_.on_isdu_read(a.index, a.subindex, res);
     std::string description = fmt::format("isdu_read {}.{}", a.index, a.subindex);
     if (a.expect_error) {
       description += " expect_error " + hex_code(*a.expect_error);

@@ -73,6 +73,9 @@ struct RunOptions {
   std::function<void(const Twin&)> on_cycle;
   // Called when a step begins (the video overlay names it).
   std::function<void(const Step&)> on_step;
+  // Called with every answer to a scenario's isdu_read step (the master log
+  // records the temperature the PLC polled, issue 26).
+  std::function<void(uint16_t index, uint8_t subindex, const IsduResult& result)> on_isdu_read;
 };
 
 // The twin a scenario describes (load, world, supply, thermal, clocks, NVM).

@@ -14,7 +14,7 @@ namespace sreh::sizing {
 
 template <class Options>
 using OptionField = std::variant<double Options::*, std::optional<double> Options::*, int Options::*,
-                                 std::string Options::*, std::vector<double> Options::*>;
+                                 std::string Options::*, std::vector<double> Options::*, bool Options::*>; // bool: a flag
 
 template <class Options>
 struct OptionSpec {

@@ -11,6 +11,8 @@
 #include "sizing/cycle_output.hpp"
 #include "sizing/output.hpp"
 #include "sizing/report.hpp"
+#include "sizing/uncertainty.hpp"
+#include "io/cpus.hpp"
 
 namespace sreh::sizing {
 namespace {
@@ -40,6 +42,9 @@ const OptionSpec<S> kSizeOptions[] = {
     {"mounting-tilt-deg", "Axis tilt from vertical, 0 .. 180 deg (90 horizontal: gravity acts); default: the load file's mounting:, else 0", &S::mounting_tilt_deg},
     {"model", "Model card overrides (YAML as `sreh-twin model show` prints): the module's physical constants", &S::model},
     {"report", "Write an HTML sizing report into this folder", &S::report},
+    {"uncertainty", "Also evaluate the set on models sampled over the model card's ranges (--model narrows them): *_range and feasible_worst_case", &S::uncertainty},
+    {"samples", "With --uncertainty: models sampled, 2 .. 1000 (Latin hypercube)", &S::samples, false, true},
+    {"seed", "With --uncertainty: seed of the sampling (same seed, same answer)", &S::seed, false, true},
     {"cycle", "Size a multi-segment cycle from this YAML file (moves, dwells, load changes; docs/sizing.md)", &S::cycle},
     {"emit-scenario", "Write a scenario replaying the sized cycle in the twin to this file", &S::emit_scenario},
 };
@@ -167,6 +172,10 @@ SizeOutcome run_size(const SizeOptions& a) {
   } catch (const io::PathError& e) {
     throw SizingInputError(e.what());
   }
+  if (a.uncertainty && !a.cycle.empty()) throw SizingInputError("--uncertainty: only for one move (--angle-deg), not yet with --cycle");
+  if (a.uncertainty && (a.samples < 2 || a.samples > 1000)) {
+    throw SizingInputError(fmt::format("--samples {}: expected 2 .. 1000", a.samples));
+  }
   if (!a.cycle.empty()) return run_cycle(a);
   SizeOutcome out;
   out.request = make_request(a);
@@ -187,6 +196,12 @@ SizeOutcome run_size(const SizeOptions& a) {
   }
   out.feasible = out.result.feasible;
   out.json = to_json(out.request, out.result);
+  if (a.uncertainty) {
+    const ModelCard card = a.model.empty() ? default_model_card() : apply_model_file(default_model_card(), a.model);
+    const UncertaintyResult u = size_uncertainty(out.request, card, out.result.evaluation, a.samples,
+                                                 static_cast<uint64_t>(a.seed), io::usable_cpus());
+    add_uncertainty_json(out.json, u);
+  }
   out.text = summary_text(out.request, out.result);
   return out;
 }

@@ -37,6 +37,9 @@ struct SizeOptions {
   std::string cycle;         // --cycle FILE.yaml: a multi-segment cycle (the file holds load, supply, ...)
   std::string emit_scenario; // --emit-scenario FILE: a scenario replaying the sized cycle
   std::string model;         // --model FILE: model card overrides (issue 25)
+  bool uncertainty = false;  // --uncertainty: bands over the model card's ranges (issue 26)
+  int samples = 32;          // --samples: models sampled (Latin hypercube)
+  int seed = 1;              // --seed: of the sampling
 };
 
 // Every option of `size` except the CLI's own --json.

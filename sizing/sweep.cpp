@@ -69,6 +69,7 @@ SweepResult run_sweep(const SweepRequest& rq) {
   result.shard = rq.shard;
   result.shards = rq.shards;
   result.total_points = requests.size();
+  result.uncertainty = rq.uncertainty;
   if (rq.shards > 1) {
     const auto [begin, end] = io::shard_range(rq.shard, rq.shards, requests.size());
     result.first_point = begin;
@@ -91,6 +92,8 @@ SweepResult run_sweep(const SweepRequest& rq) {
       try {
         p.result = size(r);
         p.result.tried.clear(); // keep memory flat over large grids
+        // One thread per point: the points already run in parallel.
+        if (rq.uncertainty) p.uncertainty = size_uncertainty(r, rq.card, p.result.evaluation, rq.samples, rq.seed, 1);
       } catch (...) {
         errors[i] = std::current_exception();
       }
@@ -112,7 +115,7 @@ SweepResult run_sweep(const SweepRequest& rq) {
 }
 
 void write_sweep_csv(std::ostream& out, const SweepResult& result) {
-  const auto columns = sweep_columns();
+  const auto columns = sweep_columns(result.uncertainty);
   for (std::size_t c = 0; c < columns.size(); ++c) out << (c > 0 ? "," : "") << columns[c].name;
   out << '\n';
   for (const SweepPoint& p : result.points) {

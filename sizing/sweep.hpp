@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "sizing/sizing.hpp"
+#include "sizing/uncertainty.hpp"
 
 namespace sreh::sizing {
 
@@ -28,6 +29,12 @@ struct SweepRequest {
   // Shard `shard` of `shards` (1-based, issue 17): a contiguous block of the
   // grid, [floor((i-1) M / N), floor(i M / N)) of M points (A-SIZE-11).
   std::size_t shard = 1, shards = 1;
+  // `sweep --uncertainty` (issue 26): each point also evaluated on `samples`
+  // models drawn from `card`'s ranges (sizing/uncertainty.hpp).
+  bool uncertainty = false;
+  int samples = 32;
+  uint64_t seed = 1;
+  ModelCard card;
   // Called after each finished point (from worker threads, serialised).
   std::function<void(std::size_t done, std::size_t total)> progress;
 };
@@ -38,10 +45,12 @@ struct SweepPoint {
   double voltage_V = 0;
   std::optional<double> speed_dps; // the given speed, or none (recommended)
   SizingResult result;
+  std::optional<UncertaintyResult> uncertainty; // with SweepRequest::uncertainty
 };
 
 struct SweepResult {
   std::vector<SweepPoint> points; // loads outermost, then angles, voltages, speeds
+  bool uncertainty = false;       // the points carry bands: the CSV has the _lo / _hi columns
   std::size_t shard = 1, shards = 1;
   std::size_t first_point = 0, total_points = 0; // the block of the whole grid these points are
 };

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <stdexcept>
 #include <tuple>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -37,6 +38,9 @@ const OptionSpec<W> kSweepOptions[] = {
     {"model", "Model card overrides (YAML as `sreh-twin model show` prints): the module's physical constants", &W::model},
     {"shard", "Run only shard i of N and start the CSV with a shard line for `sweep merge`: i/N (rerun of one task of a Slurm array 1-N: $SLURM_ARRAY_TASK_ID/N), auto (Slurm array, FIRST-LAST[:STEP]), auto/N (Kubernetes indexed Job)", &W::shard},
     {"targets-s", "Target positioning times in s for the heaviest-load plot, comma separated [default: 8 spanning the feasible times]", &W::targets_s},
+    {"uncertainty", "Also evaluate each point on models sampled over the model card's ranges: _lo / _hi columns", &W::uncertainty},
+    {"samples", "With --uncertainty: models sampled per point, 2 .. 1000 (Latin hypercube)", &W::samples, false, true},
+    {"seed", "With --uncertainty: seed of the sampling", &W::seed, false, true},
 };
 
 constexpr SweepColumnSpec kColumns[] = {
@@ -50,6 +54,15 @@ constexpr SweepColumnSpec kColumns[] = {
     {"max_tracking_error_deg", SweepColumnKind::Number}, {"steady_temperature_C", SweepColumnKind::Number},
     {"time_to_warning_s", SweepColumnKind::Number}, {"feasible", SweepColumnKind::Flag},
     {"simulations", SweepColumnKind::Count},      {"reason", SweepColumnKind::Text},
+};
+constexpr std::size_t kBaseColumns = std::size(kColumns);
+// Added after those by `--uncertainty` (issue 26).
+constexpr SweepColumnSpec kBandColumns[] = {
+    {"positioning_s_lo", SweepColumnKind::Number}, {"positioning_s_hi", SweepColumnKind::Number},
+    {"settling_s_lo", SweepColumnKind::Number},   {"settling_s_hi", SweepColumnKind::Number},
+    {"peak_torque_Nm_lo", SweepColumnKind::Number}, {"peak_torque_Nm_hi", SweepColumnKind::Number},
+    {"steady_temperature_C_lo", SweepColumnKind::Number}, {"steady_temperature_C_hi", SweepColumnKind::Number},
+    {"feasible_worst_case", SweepColumnKind::Flag},
 };
 
 // Times of an evaluation whose moves did not all complete mean nothing: missing.
@@ -78,6 +91,13 @@ SweepRequest make_sweep_request(const SweepOptions& a) {
   rq.base.ambient_C = a.ambient_C;
   rq.base.cycles = a.cycles;
   rq.base.module = module_from_option(a.model);
+  if (a.uncertainty) {
+    if (a.samples < 2 || a.samples > 1000) throw SizingInputError(fmt::format("--samples {}: expected 2 .. 1000", a.samples));
+    rq.uncertainty = true;
+    rq.samples = a.samples;
+    rq.seed = static_cast<uint64_t>(a.seed);
+    rq.card = a.model.empty() ? default_model_card() : apply_model_file(default_model_card(), a.model);
+  }
   if (!a.shard.empty()) {
     if (!a.report.empty()) throw SizingInputError("--shard with --report: merge the parts, then report the whole sweep");
     try {
@@ -120,7 +140,15 @@ SweepResult run_sweep_command(const SweepOptions& a, const SweepRequest& rq) {
   return result;
 }
 
-std::span<const SweepColumnSpec> sweep_columns() { return kColumns; }
+std::span<const SweepColumnSpec> sweep_columns(bool uncertainty) {
+  static const std::vector<SweepColumnSpec> with_bands = [] {
+    std::vector<SweepColumnSpec> v(std::begin(kColumns), std::end(kColumns));
+    v.insert(v.end(), std::begin(kBandColumns), std::end(kBandColumns));
+    return v;
+  }();
+  if (uncertainty) return with_bands;
+  return kColumns;
+}
 
 SweepCell sweep_cell(const SweepPoint& p, std::size_t column) {
   const Evaluation& e = p.result.evaluation;
@@ -145,6 +173,20 @@ SweepCell sweep_cell(const SweepPoint& p, std::size_t column) {
     case 17: return e.feasible;
     case 18: return static_cast<int64_t>(p.result.simulations);
     case 19: return e.reason;
+    default: break;
+  }
+  if (!p.uncertainty || column < kBaseColumns || (p.uncertainty->banded == 0 && column - kBaseColumns < 8)) return {};
+  const UncertaintyResult& u = *p.uncertainty;
+  switch (column - kBaseColumns) {
+    case 0: return u.positioning_s.lo;
+    case 1: return u.positioning_s.hi;
+    case 2: return u.settling_s.lo;
+    case 3: return u.settling_s.hi;
+    case 4: return u.peak_torque_Nm.lo;
+    case 5: return u.peak_torque_Nm.hi;
+    case 6: return u.max_temperature_C.lo;
+    case 7: return u.max_temperature_C.hi;
+    case 8: return u.feasible_worst_case;
     default: return {};
   }
 }

@@ -24,6 +24,9 @@ struct SweepOptions {
   std::string csv, report;
   std::string shard; // "i/N", "auto", "auto/N"; "" runs the whole grid
   std::string model; // --model FILE: model card overrides (issue 25)
+  bool uncertainty = false; // --uncertainty: _lo / _hi columns (issue 26)
+  int samples = 32;
+  int seed = 1;
 };
 
 // Every option of `sweep`; list options take comma-separated values on the CLI.
@@ -46,7 +49,9 @@ struct SweepColumnSpec {
   SweepColumnKind kind;
 };
 using SweepCell = std::variant<std::monostate, double, bool, int64_t, std::string>; // monostate: missing
-std::span<const SweepColumnSpec> sweep_columns();
+// With `uncertainty` also positioning_s_lo/_hi, settling_s_lo/_hi,
+// peak_torque_Nm_lo/_hi, steady_temperature_C_lo/_hi, feasible_worst_case.
+std::span<const SweepColumnSpec> sweep_columns(bool uncertainty = false);
 SweepCell sweep_cell(const SweepPoint& point, std::size_t column);
 
 } // namespace sreh::sizing

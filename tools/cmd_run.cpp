@@ -21,6 +21,7 @@
 #include "tools/command.hpp"
 #include "tools/junit_report.hpp"
 #include "tools/progress.hpp"
+#include "tools/master_log_stream.hpp"
 #include "tools/run_folder.hpp"
 #include "tools/run_output.hpp"
 #include "twin/plant.hpp"
@@ -58,6 +59,7 @@ struct RunArgs {
   std::string model; // --model FILE (issue 25)
   std::string junit; // --junit FILE (issue 29)
   bool quiet = false; // no progress lines on stderr
+  std::string master_log; // --master-log FILE.csv (issue 26)
 };
 
 // --trace: rows go to the file's temporary as the run makes them (memory
@@ -207,7 +209,8 @@ int run_folder_command(const RunArgs& a) {
                                       {"--video", a.video},
                                       {"--frames", a.frames},
                                       {"--report", a.report},
-                                      {"--save-nvm", a.save_nvm}}) {
+                                      {"--save-nvm", a.save_nvm},
+                                      {"--master-log", a.master_log}}) {
     if (!value.empty()) {
       throw InputError(fmt::format("{}: not with a folder of scenarios ({}); run one scenario file for it", option,
                                    a.scenario));
@@ -254,6 +257,7 @@ int run_command(RunArgs a) {
   io::check_outputs({{"--trace", a.trace, io::OutputKind::File},
                      {"--save-nvm", a.save_nvm, io::OutputKind::File},
                      {"--junit", a.junit, io::OutputKind::File},
+                     {"--master-log", a.master_log, io::OutputKind::File},
                      {"--video", a.video, io::OutputKind::File},
                      {"--frames", a.frames, io::OutputKind::EmptyFolder},
                      {"--report", a.report, io::OutputKind::Folder}},
@@ -271,6 +275,14 @@ int run_command(RunArgs a) {
       trace.emplace(a.trace, a.trace_every, a.limits.max_trace_bytes);
     } catch (const std::runtime_error& e) {
       throw InputError(fmt::format("--trace {}: {}", a.trace, e.what()));
+    }
+  }
+  std::optional<MasterLogStream> master_log;
+  if (!a.master_log.empty()) {
+    try {
+      master_log.emplace(a.master_log);
+    } catch (const std::runtime_error& e) {
+      throw InputError(fmt::format("--master-log {}: {}", a.master_log, e.what()));
     }
   }
   // Nothing that grows with run length stays in memory (issue 12): the
@@ -306,6 +318,7 @@ int run_command(RunArgs a) {
       };
     }
     if (report) record_for_report(options, *report);
+    if (master_log) master_log->attach(options);
     std::optional<VideoHook> video;
     if (!a.video.empty() || !a.frames.empty()) video.emplace();
     options.on_cycle = [&](const Twin& twin) {
@@ -330,6 +343,7 @@ int run_command(RunArgs a) {
     options.on_cycle = [&](const Twin& twin) {
       progress.update(-1.0, twin.time_s());
     };
+    if (master_log) master_log->attach(options);
     if (!a.junit.empty()) junit.chain(options);
     result = timed_run(scenario, options, wall_s);
 #endif
@@ -338,6 +352,7 @@ int run_command(RunArgs a) {
   }
   try {
     if (trace) trace->commit();
+    if (master_log) master_log->commit();
     write_nvm(a, result);
     if (!a.junit.empty()) {
       junit.end_case(result, wall_s);
@@ -365,6 +380,9 @@ SREH_REGISTER_COMMAND(10, [](CLI::App& app, int& exit_code) {
                   "one line each (exit 0 all held, 1 any failed, 2 bad input in any)")
       ->required();
   cmd->add_option("--trace", args->trace, "Write a CSV trace to this file, one row per IO-Link cycle (streamed to disk)");
+  cmd->add_option("--master-log", args->master_log,
+                  "Write what an IO-Link master sees, one row per master cycle: t_s,pd_out,pd_in,temperature_C "
+                  "(hex process data; the temperature where the scenario polls index 112), what `calibrate` reads");
   cmd->add_option("--trace-every", args->trace_every, "Keep every Nth cycle in the trace, 1 .. 1000000")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();

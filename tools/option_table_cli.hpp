@@ -18,9 +18,13 @@ void add_table_options(CLI::App* cmd, const Table& table, Options& options) {
     CLI::Option* opt = std::visit(
         [&](auto member) -> CLI::Option* {
           auto& field = options.*member;
+          if constexpr (std::is_same_v<std::decay_t<decltype(field)>, bool>) {
+            return cmd->add_flag(flag, field, help);
+          } else {
           CLI::Option* o = cmd->add_option(flag, field, help);
           if constexpr (std::is_same_v<std::decay_t<decltype(field)>, std::vector<double>>) o->delimiter(',');
           return o;
+          }
         },
         spec.field);
     if (spec.required) opt->required();

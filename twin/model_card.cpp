@@ -213,6 +213,11 @@ const ModelConstant* ModelCard::find(const std::string& name) const {
   return nullptr;
 }
 
+bool model_constant_is_whole(const std::string& name) {
+  const SchemaRow* row = schema_row(name);
+  return row && row->integer;
+}
+
 ModuleModel ModelCard::module_model() const {
   ModuleModel m;
   for (const ModelConstant& c : constants) {

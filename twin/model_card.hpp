@@ -60,6 +60,10 @@ ModuleModel load_module_model(const std::string& path);
 // The card as YAML, in the format read_model_card / apply_model_file read.
 std::string model_card_yaml(const ModelCard& card);
 
+// Whether the constant takes whole numbers only (loop_delay,
+// cogging_periods): sampling and fitting round it. False for unknown names.
+bool model_constant_is_whole(const std::string& name);
+
 // Shortest text that reads back as the same double ("0.004", "1e-05").
 std::string shortest_number(double value);
 

@@ -37,7 +37,7 @@ from ._core import (  # noqa: E402
 )
 
 __all__ = [
-    "Twin", "TwinSnapshot", "IsduError", "InputError", "run_scenario", "size", "sweep", "pd_out", "decode_pd_in",
+    "Twin", "TwinSnapshot", "IsduError", "InputError", "run_scenario", "size", "sweep", "calibrate", "pd_out", "decode_pd_in",
     "decode_pd_out", "STATES", "LEDS", "SIZE_OPTIONS", "SWEEP_OPTIONS", "models_dir", "model_card", "env",
 ]
 
@@ -65,10 +65,33 @@ def size(**options):
     speed_dps, accel_pct, jerk_pct (evaluate this set instead of
     recommending one), parameter_set, cycles, report (an HTML report
     folder), cycle (a multi-segment cycle file; it holds load, supply, ...),
-    emit_scenario (write a scenario replaying the sized cycle).
+    emit_scenario (write a scenario replaying the sized cycle),
+    uncertainty=True (with samples, seed: the *_range bands over the model
+    card's ranges and feasible_worst_case, issue 26).
     Bad values raise InputError naming the keyword."""
     try:
         return _core.size(**options)
+    except InputError as e:
+        raise _python_names(e) from None
+
+
+def calibrate(logs, *, load_gcm2=None, load=None, setup=None, model=None, fit=(), out=None, threads=None,
+              max_iterations=25):
+    """Fit model-card constants to master logs (``sreh-twin calibrate --json``,
+    docs/calibration.md): a dict with constants {NAME: {value, start, ci95,
+    unit, identified}}, rms_residual_deg, iterations, converged, and
+    model_yaml (the fitted model file, also written to ``out`` when given).
+    ``logs`` is one path or a list; ``fit`` a list of constant names. A bad
+    log raises InputError naming file:line."""
+    if isinstance(logs, (str, bytes)) or hasattr(logs, "__fspath__"):
+        logs = [logs]
+    try:
+        return _core.calibrate([_os.fspath(p) for p in logs], load_gcm2=load_gcm2,
+                               load=None if load is None else _os.fspath(load),
+                               setup=None if setup is None else _os.fspath(setup),
+                               model=None if model is None else _os.fspath(model), fit=list(fit),
+                               out=None if out is None else _os.fspath(out), threads=threads,
+                               max_iterations=max_iterations)
     except InputError as e:
         raise _python_names(e) from None
 

@@ -146,11 +146,16 @@ def size(*, angle_deg: float | None = ..., load_gcm2: float | None = ..., load: 
          bus_capacitance_F: float = ..., handshake_cycles: int = ...,
          mounting_tilt_deg: float | None = ...,
          model: _Path | None = ...,
-         report: _Path | None = ..., cycle: _Path | None = ...,
+         report: _Path | None = ..., uncertainty: bool = ..., samples: int = ..., seed: int = ...,
+         cycle: _Path | None = ...,
          emit_scenario: _Path | None = ...) -> dict[str, Any]: ...
+def calibrate(logs: _Path | Sequence[_Path], *, load_gcm2: float | None = ..., load: _Path | None = ...,
+              setup: _Path | None = ..., model: _Path | None = ..., fit: Sequence[str] = ...,
+              out: _Path | None = ..., threads: int | None = ..., max_iterations: int = ...) -> dict[str, Any]: ...
 _Floats = float | Sequence[float] | npt.NDArray[np.floating[Any]]
 def sweep(*, loads_gcm2: _Floats, angles_deg: _Floats, voltages_V: _Floats = ..., speeds_dps: _Floats = ...,
           accel_pct: float = ..., jerk_pct: float = ..., dwell_s: float = ..., tolerance_deg: float = ...,
           wait_ms: float = ..., timeout_ms: float | None = ..., ambient_C: float = ..., cycles: int = ...,
           threads: int = ..., csv: _Path | None = ..., report: _Path | None = ...,
-          model: _Path | None = ..., shard: str | None = ..., targets_s: _Floats = ...) -> dict[str, npt.NDArray[Any]]: ...
+          model: _Path | None = ..., shard: str | None = ..., targets_s: _Floats = ..., uncertainty: bool = ...,
+          samples: int = ..., seed: int = ...) -> dict[str, npt.NDArray[Any]]: ...

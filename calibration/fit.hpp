@@ -1,0 +1,69 @@
+// The fit (issue 26): model-card constants by bounded nonlinear least
+// squares on the logged encoder position (Ceres' trust region, A-CAL-3),
+// every residual a replay of a master log through the twin
+// (calibration/replay.hpp). 95 % intervals from the Jacobian at the
+// solution, widened for the residuals' autocorrelation (A-CAL-4).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "calibration/replay.hpp"
+#include "twin/model_card.hpp"
+
+namespace sreh {
+
+struct FitCase {
+  MasterLog log;
+  ReplaySetup setup;
+};
+
+struct FitOptions {
+  std::vector<std::string> names; // constants to fit (empty: default_fit_names())
+  int threads = 2;                // replays run in parallel (finite differences)
+  int max_iterations = 25;
+  // Forward-difference step, in units of the start value: wide enough to
+  // step over the count-sized jitter of a closed-loop replay on a quantised
+  // encoder, small against the card's ranges (A-CAL-3).
+  double relative_step = 0.1;
+  double max_rms_residual_deg = 0.02; // converged but worse than this: not a fit (exit 1)
+};
+
+struct FittedConstant {
+  std::string name;
+  std::string unit;
+  double value = 0;
+  double start = 0;
+  double ci95_lo = 0;
+  double ci95_hi = 0;
+  bool identified = true; // false: wide interval or strongly correlated
+  std::string note;        // why not identified
+};
+
+struct FitResult {
+  std::vector<FittedConstant> constants;
+  ModelCard card;                 // the start card with the fitted values
+  double rms_residual_deg = 0;
+  double start_rms_residual_deg = 0;
+  int iterations = 0;
+  bool converged = false;         // the solver converged and the residual is small enough
+  std::string solver_message;
+  std::vector<std::vector<double>> correlation; // between the fitted constants
+  std::size_t residuals = 0;      // logged rows used
+  double autocorrelation_rows = 1; // integrated autocorrelation time of the residuals, rows (A-CAL-4)
+};
+
+// What the data of a calibration plan identify by default: friction on the
+// rotor (Coulomb, viscous, breakaway) and the drive train's spring and
+// damper (servo.md "Identification"). Not the rotor inertia: the manual
+// gives J_intern (3.5.4) and its card range is +-5 %, inside what it
+// trades off against stiffness (A-CAL-7).
+std::vector<std::string> default_fit_names();
+
+// Throws CalibrationInputError for a name not on the card or one whose range
+// is a single value (nothing to fit).
+FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, const FitOptions& options);
+
+// The residuals (simulated - logged position, degrees) of one card on the cases.
+std::vector<double> position_residuals_deg(const std::vector<FitCase>& cases, const ModelCard& card);
+
+} // namespace sreh

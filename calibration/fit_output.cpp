@@ -1,0 +1,99 @@
+#include "calibration/fit_output.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <ctime>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+namespace sreh {
+namespace {
+
+const FittedConstant* fitted(const FitResult& fit, const std::string& name) {
+  for (const FittedConstant& f : fit.constants) {
+    if (f.name == name) return &f;
+  }
+  return nullptr;
+}
+
+std::string quoted(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+} // namespace
+
+std::string fit_model_yaml(const FitResult& fit, const ModelCard& base, const std::vector<std::string>& logs,
+                           const std::string& date) {
+  std::string names;
+  for (const std::string& log : logs) {
+    names += (names.empty() ? "" : ", ") + std::filesystem::path(log).filename().string();
+  }
+  std::string out = fmt::format(
+      "# Model file written by `sreh-twin calibrate` (issue 26) from {}.\n"
+      "# Use it with --model on run, size, sweep, serve. Ranges of fitted constants are their 95 %\n"
+      "# intervals inside the card's ranges (docs/calibration.md).\n"
+      "# rms residual {} deg (start {} deg), {} iterations, {}.\n"
+      "constants:\n",
+      names, shortest_number(fit.rms_residual_deg), shortest_number(fit.start_rms_residual_deg), fit.iterations,
+      fit.converged ? "converged" : "NOT converged");
+  for (const ModelConstant& c : fit.card.constants) {
+    const ModelConstant* b = base.find(c.name);
+    const FittedConstant* f = fitted(fit, c.name);
+    if (!f) {
+      if (b && *b == c) continue;
+      out += fmt::format("  {}: {{value: {}, source: {}, range: [{}, {}]}}\n", c.name, shortest_number(c.value),
+                         quoted(c.source), shortest_number(c.range_lo), shortest_number(c.range_hi));
+      continue;
+    }
+    double lo = c.range_lo, hi = c.range_hi;
+    if (f->identified) {
+      lo = std::clamp(f->ci95_lo, c.range_lo, c.value);
+      hi = std::clamp(f->ci95_hi, c.value, c.range_hi);
+    }
+    const std::string source = fmt::format("calibrated from {} on {}: 95 % interval [{}, {}]{}", names, date,
+                                           shortest_number(f->ci95_lo), shortest_number(f->ci95_hi),
+                                           f->identified ? "" : "; not identified (" + f->note + "), card range kept");
+    out += fmt::format("  {}: {{value: {}, source: {}, range: [{}, {}]}}\n", c.name, shortest_number(c.value),
+                       quoted(source), shortest_number(lo), shortest_number(hi));
+  }
+  return out;
+}
+
+nlohmann::json fit_json(const FitResult& fit) {
+  nlohmann::json constants = nlohmann::json::object();
+  for (const FittedConstant& f : fit.constants) {
+    nlohmann::json c{{"value", f.value},           {"start", f.start}, {"ci95", {f.ci95_lo, f.ci95_hi}},
+                     {"unit", f.unit},             {"identified", f.identified}};
+    if (!f.note.empty()) c["note"] = f.note;
+    constants[f.name] = c;
+  }
+  nlohmann::json correlation = nlohmann::json::array();
+  for (const auto& row : fit.correlation) correlation.push_back(row);
+  return {{"constants", constants},
+          {"rms_residual_deg", fit.rms_residual_deg},
+          {"start_rms_residual_deg", fit.start_rms_residual_deg},
+          {"iterations", fit.iterations},
+          {"converged", fit.converged},
+          {"solver", fit.solver_message},
+          {"residuals", fit.residuals},
+          {"autocorrelation_rows", fit.autocorrelation_rows},
+          {"correlation", correlation}};
+}
+
+std::string calibration_date() {
+  std::time_t now = std::time(nullptr);
+  if (const char* epoch = std::getenv("SOURCE_DATE_EPOCH")) now = static_cast<std::time_t>(std::strtoll(epoch, nullptr, 10));
+  std::tm tm{};
+  gmtime_r(&now, &tm);
+  char buf[16];
+  std::strftime(buf, sizeof buf, "%Y-%m-%d", &tm);
+  return buf;
+}
+
+} // namespace sreh

@@ -1,0 +1,86 @@
+#include "calibration/replay.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "device_logic/parameter_table.hpp"
+
+namespace sreh {
+namespace {
+
+constexpr uint16_t kFirstSetIndex = 64; // manual 6.2: motion parameter sets 64..71
+constexpr uint16_t kLastSetIndex = 71;
+constexpr uint8_t kLoadSubindex = 4;    // 64+n.4 configured load, g cm^2
+constexpr double kTimeSlack_s = 1e-6;   // logs print t_s in microseconds
+
+// The log's master cycle: its row spacing, a whole number of physics steps.
+double master_cycle_s(const MasterLog& log, double physics_dt_s) {
+  const double first_s = log.rows[1].t_s - log.rows[0].t_s;
+  const double steps = std::round(first_s / physics_dt_s);
+  const double cycle_s = steps * physics_dt_s;
+  if (steps < 1 || std::abs(cycle_s - first_s) > kTimeSlack_s) {
+    throw CalibrationInputError(fmt::format("{}:{}: rows {:g} s apart, not a whole number of {:g} s physics steps",
+                                            log.path, log.rows[1].line, first_s, physics_dt_s));
+  }
+  for (std::size_t i = 1; i < log.rows.size(); ++i) {
+    const double expected_s = log.rows[0].t_s + static_cast<double>(i) * cycle_s;
+    if (std::abs(log.rows[i].t_s - expected_s) > kTimeSlack_s) {
+      throw CalibrationInputError(fmt::format(
+          "{}:{}: t_s {:.6f}, expected {:.6f}: the log must have one row per master cycle of {:g} s (A-CAL-1)",
+          log.path, log.rows[i].line, log.rows[i].t_s, expected_s, cycle_s));
+    }
+  }
+  return cycle_s;
+}
+
+} // namespace
+
+ReplaySetup replay_setup(const MasterLog& log, const LoadSpec& load, const Scenario* scenario) {
+  ReplaySetup s;
+  if (scenario) {
+    s.config.load = scenario->load;
+    s.config.hard_stops = scenario->hard_stops;
+    s.config.mounting_tilt_deg = scenario->mounting_tilt_deg;
+    s.config.supply = SupplySpec{scenario->device.supply_V, scenario->device.source_resistance_ohm,
+                                 scenario->device.bus_capacitance_F};
+    s.config.thermal = ThermalSpec{scenario->device.ambient_C, scenario->sim.thermal_time_scale};
+    s.config.physics_dt_s = scenario->sim.physics_dt_s;
+    s.startup_writes = scenario->device.isdu;
+    s.configure_load = false;
+  }
+  if (!std::holds_alternative<NoLoad>(load)) s.config.load = load;
+  s.config.cycle_s = master_cycle_s(log, s.config.physics_dt_s);
+  s.config.record_trace = false;
+  return s;
+}
+
+ReplayTrack replay(const ReplaySetup& setup, const ModuleModel& module, const MasterLog& log) {
+  TwinConfig config = setup.config;
+  config.module = module;
+  Twin twin(config);
+  // Without a setup scenario: the configured load of every set from the
+  // attached load, whole g cm^2 (manual 3.5.6, A-CAL-2); with one, its writes.
+  if (setup.configure_load) {
+    const auto load_raw = encode_number(ParamType::UInt16, std::llround(twin.load_inertia_gcm2()));
+    for (uint16_t index = kFirstSetIndex; index <= kLastSetIndex; ++index) twin.isdu_write(index, kLoadSubindex, load_raw);
+  }
+  for (const IsduWriteStep& w : setup.startup_writes) twin.isdu_write(w.index, w.subindex, w.data);
+  ReplayTrack track;
+  track.position_deg.reserve(log.rows.size());
+  track.temperature_C.reserve(log.rows.size());
+  track.pd_in.reserve(log.rows.size());
+  for (const MasterLogRow& row : log.rows) {
+    // The frame the master receives in a cycle is sent at its start: it
+    // carries the encoder as the previous cycle left it (A-CAL-1).
+    const Telemetry before = twin.telemetry();
+    track.position_deg.push_back(before.position_deg);
+    track.temperature_C.push_back(before.temperature_C);
+    twin.set_pd_out(decode_out(row.pd_out));
+    twin.run_cycle();
+    track.pd_in.push_back(twin.last_row().pd_in);
+  }
+  return track;
+}
+
+} // namespace sreh

@@ -1,0 +1,86 @@
+// Shared by the calibration tests: a "module" with hidden constants runs a
+// scenario and its master log is taken in memory (as `run --master-log`
+// writes it), plus a held-out move to compare predictions on.
+#pragma once
+#include <random>
+#include <string>
+
+#include "calibration/master_log.hpp"
+#include "calibration/plan.hpp"
+#include "calibration/replay.hpp"
+#include "scenarios/runner.hpp"
+#include "scenarios/scenario_parser.hpp"
+#include "twin/model_card.hpp"
+
+namespace sreh::test {
+
+inline Scenario plan_scenario(double load_gcm2) {
+  PlanRequest p;
+  p.load_gcm2 = load_gcm2;
+  return parse_scenario_text(calibration_plan_yaml(p), "plan.yaml", "");
+}
+
+// The master log of `scenario` run on a module with `card`; with a seed,
+// one wire count of uniform noise added to every logged position.
+inline MasterLog record_log(Scenario scenario, const ModelCard& card, std::optional<unsigned> noise_seed = {}) {
+  scenario.module = card.module_model();
+  MasterLog log;
+  log.path = "recorded.csv";
+  log.has_temperature = true;
+  RunOptions o;
+  o.trace_sink = [&](const TraceRow& r) {
+    MasterLogRow row;
+    row.t_s = r.t_s;
+    row.pd_out = r.pd_out;
+    row.pd_in = r.pd_in;
+    row.line = static_cast<int>(log.rows.size()) + 2;
+    log.rows.push_back(row);
+  };
+  run_scenario(scenario, o);
+  if (noise_seed) {
+    std::mt19937 rng(*noise_seed);
+    std::uniform_int_distribution<int> count(-1, 1);
+    for (MasterLogRow& row : log.rows) {
+      ProcessDataIn in = decode_in(row.pd_in);
+      in.actual_position += count(rng);
+      row.pd_in = encode(in);
+    }
+  }
+  return log;
+}
+
+inline ModelCard card_with(std::initializer_list<std::pair<const char*, double>> values) {
+  ModelCard card = default_model_card();
+  for (const auto& [name, value] : values) {
+    for (ModelConstant& c : card.constants) {
+      if (c.name == name) c.value = value;
+    }
+  }
+  return card;
+}
+
+// The held-out move of issue 26: 135 deg, 5000 g cm^2, tolerance 0.0103 deg
+// (15 counts of 2^19, index 65.5), no waiting time.
+inline MoveRecord held_out_move(const ModelCard& card) {
+  Scenario s = parse_scenario_text(R"(name: held-out 135 deg
+load: {inertia_gcm2: 5000}
+device:
+  isdu:
+    - {index: 65, subindex: 4, value: 5000}
+    - {index: 65, subindex: 5, value: 15}
+    - {index: 65, subindex: 6, value: 0}
+steps:
+  - pd: {motor_on: 1}
+  - wait_until: {state: Ready, within_s: 0.1}
+  - pd: {target_deg: 135, parameter_set: 1, move: 1}
+  - wait_until: {state: Done, within_s: 2}
+  - wait_s: 0.2
+)",
+                                   "held_out.yaml", "");
+  s.module = card.module_model();
+  RunOptions o;
+  const RunResult r = run_scenario(s, o);
+  return r.moves.at(0);
+}
+
+} // namespace sreh::test

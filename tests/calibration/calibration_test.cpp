@@ -1,0 +1,142 @@
+// Issue 26 done-when: a log recorded from a "module" whose friction,
+// stiffness and damping differ from the card by 30-40 % is calibrated
+// without knowing them; the constants come back and the fitted twin
+// predicts a held-out move.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+
+#include "calibration/fit.hpp"
+#include "calibration/fit_output.hpp"
+#include "calibration_rig.hpp"
+
+namespace sreh {
+namespace {
+
+// The hidden module (examples/calibration/hidden_module.yaml): five
+// friction, stiffness and damping constants moved by 32-36 % inside their ranges.
+ModelCard hidden_card() {
+  return test::card_with({{"coulomb_friction", 0.0054},      // +35 %
+                          {"viscous_friction", 1.35e-5},     // +35 %
+                          {"stribeck_excess", 0.0027},       // +35 %
+                          {"torsional_stiffness", 450},      // +32 %
+                          {"torsional_damping", 0.095}});    // +36 %
+}
+
+// The plan with the heaviest load the module takes (manual 3.5.6): the
+// flange's ringing after fast stops shows stiffness and damping best.
+constexpr double kPlanLoad_gcm2 = 15000;
+
+std::vector<FitCase> cases_for(const MasterLog& log, const Scenario& plan) {
+  FitCase c;
+  c.log = log;
+  c.setup = replay_setup(log, InertiaLoad{kPlanLoad_gcm2}, &plan);
+  return {c};
+}
+
+TEST(Replay, TheRecordingModelGivesTheLogBackBitForBit) {
+  const Scenario plan = test::plan_scenario(kPlanLoad_gcm2);
+  const ModelCard hidden = hidden_card();
+  const MasterLog log = test::record_log(plan, hidden);
+  const auto cases = cases_for(log, plan);
+  const ReplayTrack track = replay(cases[0].setup, hidden.module_model(), log);
+  for (std::size_t k = 0; k < log.rows.size(); ++k) ASSERT_EQ(track.pd_in[k], log.rows[k].pd_in) << "row " << k;
+}
+
+void expect_recovered(const FitResult& fit, const ModelCard& hidden, double tolerance) {
+  int recovered = 0;
+  for (const FittedConstant& f : fit.constants) {
+    const double truth = hidden.find(f.name)->value;
+    const bool close = std::abs(f.value - truth) <= tolerance * truth;
+    const bool inside = f.ci95_lo <= truth && truth <= f.ci95_hi;
+    std::printf("%-22s truth %-10g start %-10g fit %-10g (%+.1f %%) ci95 [%g, %g]%s\n", f.name.c_str(), truth, f.start,
+                f.value, 100 * (f.value / truth - 1), f.ci95_lo, f.ci95_hi, f.identified ? "" : " not identified");
+    if (close && inside) ++recovered;
+  }
+  EXPECT_GE(recovered, 3);
+}
+
+void expect_predicts_held_out(const ModelCard& fitted, const ModelCard& hidden, double tolerance) {
+  const MoveRecord truth = test::held_out_move(hidden);
+  const MoveRecord predicted = test::held_out_move(fitted);
+  ASSERT_TRUE(truth.in_window_s && predicted.in_window_s);
+  std::printf("held-out: tracking %.5f vs %.5f deg, in window %.4f vs %.4f s\n", predicted.max_tracking_error_deg,
+              truth.max_tracking_error_deg, *predicted.in_window_s, *truth.in_window_s);
+  EXPECT_NEAR(predicted.max_tracking_error_deg, truth.max_tracking_error_deg, tolerance * truth.max_tracking_error_deg);
+  EXPECT_NEAR(*predicted.in_window_s, *truth.in_window_s, std::max(tolerance * *truth.in_window_s, 0.002));
+}
+
+// A fit of a minute of CPU in Release is several under AddressSanitizer:
+// the sanitizer stage (CI) runs the cheap fit below instead.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kSanitized = true;
+#else
+constexpr bool kSanitized = false;
+#endif
+
+// The fit itself, cheaply, everywhere: one constant from the first moves of the plan.
+TEST(Calibration, OneConstantFromAShortLog) {
+  Scenario plan = test::plan_scenario(kPlanLoad_gcm2);
+  plan.steps.resize(3 + 4 * 5); // motor on, wait, hold, then the first four moves (5 steps each)
+  const ModelCard hidden = test::card_with({{"coulomb_friction", 0.0054}});
+  const auto cases = cases_for(test::record_log(plan, hidden), plan);
+  FitOptions options;
+  options.names = {"coulomb_friction"};
+  const FitResult fit = fit_model(cases, default_model_card(), options);
+  ASSERT_EQ(fit.constants.size(), 1u);
+  const FittedConstant& c = fit.constants[0];
+  EXPECT_NEAR(c.value, 0.0054, 0.10 * 0.0054) << fit.solver_message;
+  EXPECT_LE(c.ci95_lo, c.value);
+  EXPECT_GE(c.ci95_hi, c.value);
+  EXPECT_LT(fit.rms_residual_deg, fit.start_rms_residual_deg);
+}
+
+TEST(Calibration, HiddenConstantsComeBackAndPredictAHeldOutMove) {
+  if (kSanitized) GTEST_SKIP() << "a minute of CPU in Release; checked in the Release stage";
+  const Scenario plan = test::plan_scenario(kPlanLoad_gcm2);
+  const ModelCard hidden = hidden_card();
+  const auto cases = cases_for(test::record_log(plan, hidden), plan);
+  FitOptions options;
+  const FitResult fit = fit_model(cases, default_model_card(), options);
+  std::printf("rms %.5f deg (start %.5f), %d iterations, %s\n", fit.rms_residual_deg, fit.start_rms_residual_deg,
+              fit.iterations, fit.solver_message.c_str());
+  EXPECT_TRUE(fit.converged);
+  expect_recovered(fit, hidden, 0.10);
+  expect_predicts_held_out(fit.card, hidden, 0.05);
+
+  // FIT.yaml is a model file --model reads: the fitted values come back,
+  // each with its interval (inside the card's range) as its range.
+  const std::string path = testing::TempDir() + "/fit.yaml";
+  std::ofstream(path) << fit_model_yaml(fit, default_model_card(), {"recorded.csv"}, "2026-11-26");
+  const ModelCard read = apply_model_file(default_model_card(), path);
+  for (const FittedConstant& f : fit.constants) {
+    const ModelConstant* c = read.find(f.name);
+    EXPECT_EQ(c->value, f.value) << f.name;
+    EXPECT_NE(c->source.find("calibrated from recorded.csv on 2026-11-26"), std::string::npos);
+    if (f.identified) {
+      EXPECT_EQ(c->range_lo, std::max(f.ci95_lo, default_model_card().find(f.name)->range_lo));
+    }
+  }
+}
+
+// Issue 26: with one more wire count of random noise on every logged
+// position (seeded), the same within 15 %. Disabled in CTest for time (it
+// is a second fit); docs/calibration.md gives its numbers:
+//   build/tests/calibration/calibration_test --gtest_also_run_disabled_tests --gtest_filter='*Noise*'
+TEST(Calibration, DISABLED_WithOneCountOfNoise) {
+  const Scenario plan = test::plan_scenario(kPlanLoad_gcm2);
+  const ModelCard hidden = hidden_card();
+  const auto cases = cases_for(test::record_log(plan, hidden, 26u), plan);
+  const FitResult fit = fit_model(cases, default_model_card(), FitOptions{});
+  std::printf("rms %.5f deg (start %.5f), %d iterations, %s\n", fit.rms_residual_deg, fit.start_rms_residual_deg,
+              fit.iterations, fit.solver_message.c_str());
+  EXPECT_TRUE(fit.converged);
+  expect_recovered(fit, hidden, 0.15);
+  expect_predicts_held_out(fit.card, hidden, 0.15);
+}
+
+} // namespace
+} // namespace sreh

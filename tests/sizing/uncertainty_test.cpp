@@ -1,0 +1,76 @@
+// size --uncertainty (issue 26): bands over the model card's ranges bracket
+// the nominal, repeat bit for bit with the seed, and narrow with a
+// calibrated model's narrower ranges.
+#include <algorithm>
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "sizing/uncertainty.hpp"
+
+namespace sreh::sizing {
+namespace {
+
+SizingRequest request() {
+  SizingRequest rq;
+  rq.angle_deg = 90;
+  rq.load = InertiaLoad{5000};
+  rq.setting = MotionSetting{2000, 100, 100};
+  rq.tolerance_deg = 0.0103; // tight, no waiting time: the settling shows the drive train
+  rq.wait_ms = 0;
+  return rq;
+}
+
+UncertaintyResult bands(const ModelCard& card, uint64_t seed, int threads) {
+  SizingRequest rq = request();
+  rq.module = card.module_model();
+  const SizingResult nominal = size(rq);
+  return size_uncertainty(rq, card, nominal.evaluation, 8, seed, threads);
+}
+
+TEST(Uncertainty, BandsBracketTheNominalAndRepeatWithTheSeed) {
+  SizingRequest rq = request();
+  const SizingResult nominal = size(rq);
+  const UncertaintyResult a = bands(default_model_card(), 7, 2);
+  EXPECT_LE(a.positioning_s.lo, nominal.evaluation.positioning_s);
+  EXPECT_GE(a.positioning_s.hi, nominal.evaluation.positioning_s);
+  EXPECT_LT(a.positioning_s.lo, a.positioning_s.hi);
+  EXPECT_LT(a.peak_torque_Nm.lo, a.peak_torque_Nm.hi);
+  EXPECT_LT(a.max_temperature_C.lo, a.max_temperature_C.hi);
+  const UncertaintyResult b = bands(default_model_card(), 7, 1); // other thread count, same answer
+  EXPECT_EQ(a.positioning_s.lo, b.positioning_s.lo);
+  EXPECT_EQ(a.positioning_s.hi, b.positioning_s.hi);
+  EXPECT_EQ(a.peak_torque_Nm.hi, b.peak_torque_Nm.hi);
+  EXPECT_EQ(a.max_temperature_C.hi, b.max_temperature_C.hi);
+}
+
+TEST(Uncertainty, LatinHypercubeHasOneSampleInEveryStratum) {
+  const ModelCard& card = default_model_card();
+  const auto cards = latin_hypercube_cards(card, 8, 3);
+  const ModelConstant* k = card.find("torsional_stiffness");
+  const std::size_t c = static_cast<std::size_t>(k - card.constants.data());
+  std::vector<int> hits(8, 0);
+  for (const ModelCard& s : cards) {
+    const double u = (s.constants[c].value - k->range_lo) / (k->range_hi - k->range_lo);
+    ++hits[static_cast<std::size_t>(std::min(7.0, u * 8))];
+  }
+  for (int h : hits) EXPECT_EQ(h, 1);
+  for (const ModelCard& s : cards) EXPECT_EQ(s.find("velocity_bandwidth")->value, card.find("velocity_bandwidth")->value); // firmware: kept
+}
+
+TEST(Uncertainty, NarrowerRangesGiveANarrowerBand) {
+  ModelCard calibrated = default_model_card();
+  for (ModelConstant& c : calibrated.constants) { // +-2 % around the value: what a fit leaves open
+    if (c.range_hi > c.range_lo && !model_constant_is_whole(c.name)) {
+      c.range_lo = std::max(c.range_lo, 0.98 * c.value);
+      c.range_hi = std::min(c.range_hi, 1.02 * c.value);
+    }
+  }
+  const UncertaintyResult wide = bands(default_model_card(), 7, 2);
+  const UncertaintyResult narrow = bands(calibrated, 7, 2);
+  EXPECT_LT(narrow.peak_torque_Nm.hi - narrow.peak_torque_Nm.lo, wide.peak_torque_Nm.hi - wide.peak_torque_Nm.lo);
+  EXPECT_LT(narrow.max_temperature_C.hi - narrow.max_temperature_C.lo, wide.max_temperature_C.hi - wide.max_temperature_C.lo);
+}
+
+} // namespace
+} // namespace sreh::sizing

@@ -1,0 +1,134 @@
+// `sreh-twin calibrate LOG.csv... (--load-gcm2 L | --load FILE) --out FIT.yaml`
+// (issue 26): fit model-card constants to master logs of a real module
+// (calibration/), and `calibrate --plan OUT.yaml`: the identification
+// program to record them with. Exit 0 converged, 1 not converged or the
+// residual too large, 2 bad input (a log named by file:line).
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "calibration/calibrate.hpp"
+#include "calibration/fit_output.hpp"
+#include "calibration/plan.hpp"
+#include "io/atomic_file.hpp"
+#include "io/cpus.hpp"
+#include "io/output_path.hpp"
+#include "tools/command.hpp"
+
+namespace sreh::tools {
+namespace {
+
+struct CalibrateArgs {
+  CalibrateRequest request;
+  std::optional<double> load_gcm2;
+  std::string fit;  // NAME,NAME
+  std::string out;
+  std::string plan; // --plan OUT.yaml
+  double mounting_tilt_deg = 0;
+  bool json = false;
+};
+
+std::vector<std::string> split_names(const std::string& list) {
+  std::vector<std::string> names;
+  std::stringstream in(list);
+  for (std::string name; std::getline(in, name, ',');) {
+    if (name.empty()) throw InputError(fmt::format("--fit {}: an empty name", list));
+    names.push_back(name);
+  }
+  return names;
+}
+
+std::vector<std::string> inputs_of(const CalibrateArgs& a) {
+  std::vector<std::string> in = a.request.logs;
+  for (const std::string* f : {&a.request.load_file, &a.request.setup, &a.request.model}) {
+    if (!f->empty()) in.push_back(*f);
+  }
+  return in;
+}
+
+int plan_command(const CalibrateArgs& a) {
+  if (!a.request.logs.empty() || !a.out.empty()) throw InputError("--plan: writes a scenario; give no logs and no --out");
+  io::check_outputs({{"--plan", a.plan, io::OutputKind::File}}, inputs_of(a));
+  PlanRequest p;
+  p.load_gcm2 = a.request.load_gcm2;
+  p.load_file = a.request.load_file;
+  p.mounting_tilt_deg = a.mounting_tilt_deg;
+  std::string text;
+  try {
+    text = calibration_plan_yaml(p);
+  } catch (const CalibrationInputError& e) {
+    throw InputError(e.what());
+  }
+  io::write_file_atomic(a.plan, [&](std::ostream& out) { out << text; });
+  return 0;
+}
+
+int calibrate_command(CalibrateArgs a) {
+  a.request.load_gcm2 = a.load_gcm2;
+  if (!a.plan.empty()) return plan_command(a);
+  if (a.out.empty()) throw InputError("calibrate: give --out FIT.yaml (or --plan OUT.yaml for the identification program)");
+  if (!a.fit.empty()) a.request.fit = split_names(a.fit);
+  io::check_outputs({{"--out", a.out, io::OutputKind::File}}, inputs_of(a));
+  CalibrateOutcome outcome;
+  try {
+    outcome = calibrate(a.request);
+  } catch (const CalibrationInputError& e) {
+    throw InputError(e.what());
+  } catch (const std::invalid_argument& e) { // a load or setup the twin rejects
+    throw InputError(e.what());
+  }
+  io::write_file_atomic(a.out, [&](std::ostream& out) { out << outcome.model_yaml; });
+  const FitResult& fit = outcome.fit;
+  if (a.json) {
+    std::cout << fit_json(fit).dump(2) << "\n";
+  } else {
+    std::cout << fmt::format("{} after {} iterations: rms residual {:.5f} deg (start {:.5f} deg), {} logged rows\n",
+                             fit.converged ? "converged" : "NOT converged", fit.iterations, fit.rms_residual_deg,
+                             fit.start_rms_residual_deg, fit.residuals);
+    for (const FittedConstant& f : fit.constants) {
+      std::cout << fmt::format("  {:<22} {:>12.6g} {:<10} (start {:.6g}, 95 % [{:.6g}, {:.6g}]){}\n", f.name, f.value,
+                               f.unit, f.start, f.ci95_lo, f.ci95_hi, f.identified ? "" : "  not identified: " + f.note);
+    }
+    std::cout << "wrote " << a.out << "\n";
+  }
+  return fit.converged ? 0 : 1;
+}
+
+} // namespace
+
+SREH_REGISTER_COMMAND(57, [](CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<CalibrateArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "calibrate", "Fit the model card's constants to master logs of a real module, or write the identification "
+                   "program (--plan); exit 0 converged, 1 not converged, 2 bad input (docs/calibration.md)");
+  CalibrateRequest& r = args->request;
+  cmd->add_option("logs", r.logs, "Master logs (t_s,pd_out,pd_in[,temperature_C]: `run --master-log`)");
+  cmd->add_option("--load-gcm2", args->load_gcm2, "The attached load's inertia about the axis, g cm^2");
+  cmd->add_option("--load", r.load_file, "The attached load as a load file (scenario `load:` syntax)");
+  cmd->add_option("--setup", r.setup,
+                  "The scenario the logs were recorded with (e.g. the --plan): its world and start-up ISDU writes "
+                  "(device.isdu), which a process-data log does not carry");
+  cmd->add_option("--model", r.model, "Start from this model file (default: the model card)");
+  cmd->add_option("--fit", args->fit,
+                  "Constants to fit, NAME,NAME... [default: coulomb_friction,viscous_friction,stribeck_excess,"
+                  "torsional_stiffness,torsional_damping]");
+  cmd->add_option("--out", args->out, "Write the fitted model file here (what --model reads)");
+  cmd->add_flag("--json", args->json, "Print {constants: {NAME: {value, start, ci95}}, rms_residual_deg, iterations, converged}");
+  cmd->add_option("--threads", r.options.threads, "Replays in parallel [default: the CPUs this process may use]")
+      ->check(CLI::Range(1, 256));
+  cmd->add_option("--max-iterations", r.options.max_iterations, "Solver iterations at most")
+      ->check(CLI::Range(1, 1000))->capture_default_str();
+  cmd->add_option("--max-rms-deg", r.options.max_rms_residual_deg, "A fit with a larger rms residual is not converged (exit 1)")
+      ->check(CLI::Range(0.0, 360.0))->capture_default_str();
+  cmd->add_option("--step", r.options.relative_step, "Finite-difference step, fraction of each start value (A-CAL-3)")
+      ->check(CLI::Range(1e-4, 0.5))->capture_default_str();
+  cmd->add_option("--plan", args->plan, "Write the identification program (a scenario to run on the module) here");
+  cmd->add_option("--mounting-tilt-deg", args->mounting_tilt_deg, "With --plan: tilt of the axis from vertical, deg")
+      ->check(CLI::Range(0.0, 90.0));
+  r.options.threads = io::usable_cpus();
+  cmd->callback([args, &exit_code] { exit_code = calibrate_command(*args); });
+});
+
+} // namespace sreh::tools
