@@ -219,7 +219,7 @@ std::vector<std::string> inputs_of(const RunArgs& a, const Scenario& s) {
   if (s.device.nvm_image_path) in.push_back(*s.device.nvm_image_path);
   if (!s.model_file.empty()) in.push_back(s.model_file);
   if (!a.model.empty()) in.push_back(a.model);
-  if (const auto* m = std::get_if<MjcfLoad>(&s.load)) in.push_back(m->path);
+  for (const std::string& f : load_input_files(s.load)) in.push_back(f); // MJCF and mesh files
   return in;
 }
 
