@@ -166,6 +166,7 @@ void write_report_dir(const RunArgs& a, const RunResult& r, ReportRecorder& reco
   summary.version = SREH_VERSION;
   summary.sim_time_s = r.sim_time_s;
   summary.max_tracking_error_deg = r.max_tracking_error_deg;
+  summary.hints = r.hints;
   if (!a.video.empty()) summary.video_source = a.video; // copied in: the folder stays movable
   try {
     write_report(a.report, summary, recorded);
