@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "scenarios/load_file.hpp"
 #include "twin/load_builder.hpp"
 
 namespace sreh::detail {
@@ -14,6 +15,7 @@ const std::vector<std::string_view> kPartShapes = {"disk", "ring", "box", "cylin
 const std::vector<std::string_view> kSingleOnly = {"arm", "inertia_gcm2", "none"};
 constexpr double kMaxLength_m = 10.0;
 constexpr double kMaxMass_kg = 100.0;
+constexpr int kMaxFileDepth = 4;
 
 class LoadReader {
  public:
@@ -22,8 +24,12 @@ class LoadReader {
   LoadSpec parse(const YAML::Node& n) {
     std::vector<std::string_view> keys = kPartShapes;
     keys.insert(keys.end(), kSingleOnly.begin(), kSingleOnly.end());
-    for (std::string_view k : {"parts", "at_m", "rpy_deg"}) keys.push_back(k);
+    for (std::string_view k : {"parts", "at_m", "rpy_deg", "file"}) keys.push_back(k);
     r_.check_map(n, "load", keys);
+    if (n["file"]) {
+      if (n.size() != 1) r_.fail(n, "load: file: LOAD.yaml stands alone");
+      return from_file(n["file"]);
+    }
     if (n["parts"]) {
       if (n.size() != 1) r_.fail(n, "load: parts: [...] stands alone (each part has its own shape, at_m and rpy_deg)");
       return parts(n["parts"]);
@@ -59,6 +65,24 @@ class LoadReader {
   }
 
  private:
+  // `load: {file: models/loads/x.yaml}`: a load file's load (its mounting:
+  // is the file's own business; the scenario's mounting: holds), with that
+  // file's own lines in errors.
+  LoadSpec from_file(const YAML::Node& f) {
+    static thread_local int depth = 0;
+    if (depth >= kMaxFileDepth) r_.fail(f, "load.file: load files name each other more than 4 deep");
+    const std::string path = resolve_(f, "load.file");
+    ++depth;
+    try {
+      LoadSpec load = parse_load_file(path).load;
+      --depth;
+      return load;
+    } catch (...) {
+      --depth;
+      throw;
+    }
+  }
+
   LoadSpec single_only(const std::string& kind, const YAML::Node& v, const std::string& what) {
     if (kind == "arm") {
       r_.check_map(v, what, {"mass_kg", "radius_m", "arm_mass_kg"});
@@ -102,8 +126,8 @@ class LoadReader {
       if (shapes != 1) {
         r_.fail(p, what + ": give exactly one shape of disk, ring, box, cylinder, sphere, point, mesh, mjcf, plus at_m and rpy_deg");
       }
-      if (p["name"]) (void)r_.text(p["name"], what + ".name");
       a.parts.push_back(part_of(p, kind, what));
+      if (p["name"]) a.parts.back().name = r_.text(p["name"], what + ".name");
     }
     return a;
   }

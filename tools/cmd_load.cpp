@@ -76,7 +76,7 @@ nlohmann::json as_json(const std::string& file, const Shown& s) {
   j["limit_gcm2"] = kMaxLoad_gcm2;
   nlohmann::json parts = nlohmann::json::array();
   for (const PartFigures& p : f.parts) {
-    parts.push_back({{"shape", p.name}, {"mass_kg", p.mass_kg}, {"inertia_gcm2", kgm2_to_gcm2(p.inertia_kgm2)},
+    parts.push_back({{"shape", p.shape}, {"name", p.name}, {"mass_kg", p.mass_kg}, {"inertia_gcm2", kgm2_to_gcm2(p.inertia_kgm2)},
                      {"share", f.inertia_kgm2 > 0 ? p.inertia_kgm2 / f.inertia_kgm2 : 0.0}, {"com_m", p.com_m}});
   }
   j["parts"] = parts;
@@ -100,10 +100,10 @@ void print_text(const std::string& file, const Shown& s) {
   std::cout << "\n  parts:\n";
   for (std::size_t k = 0; k < f.parts.size(); ++k) {
     const PartFigures& p = f.parts[k];
-    std::cout << fmt::format("    {:>2} {:<8} {:>7.3f} kg {:>9} g cm^2 {:>5.1f} %  centre [{}, {}, {}] mm\n", k + 1, p.name,
+    std::cout << fmt::format("    {:>2} {:<8} {:>7.3f} kg {:>9} g cm^2 {:>5.1f} %  centre [{}, {}, {}] mm{}\n", k + 1, p.shape,
                              p.mass_kg, round_gcm2(kgm2_to_gcm2(p.inertia_kgm2)),
                              f.inertia_kgm2 > 0 ? 100 * p.inertia_kgm2 / f.inertia_kgm2 : 0.0, mm(p.com_m[0]), mm(p.com_m[1]),
-                             mm(p.com_m[2]));
+                             mm(p.com_m[2]), p.name.empty() ? "" : "  " + p.name);
   }
 }
 

@@ -57,7 +57,8 @@ LoadFigures load_figures(const LoadSpec& load) {
   PartFigures total;
   for (std::size_t k = 0; k < (assembly ? roots.size() : 1); ++k) {
     PartFigures part;
-    part.name = assembly ? part_kind(assembly->parts[k].shape) : "load";
+    part.shape = assembly ? part_kind(assembly->parts[k].shape) : "load";
+    part.name = assembly ? assembly->parts[k].name : "";
     double moment[3] = {0, 0, 0};
     for (int b = 1; b < m->nbody; ++b) {
       // A one-shape load: every body below the flange (an MJCF file's body has its own name).

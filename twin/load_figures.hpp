@@ -14,7 +14,8 @@
 namespace sreh {
 
 struct PartFigures {
-  std::string name;           // "disk", "mesh", ... (the shape) for parts; "load" for a one-shape load
+  std::string shape;          // "disk", "mesh", ... for parts; "load" for a one-shape load
+  std::string name;           // the part's `name:`, or empty
   double mass_kg = 0;
   double inertia_kgm2 = 0;    // about the flange axis
   std::array<double, 3> com_m{}; // in the flange frame

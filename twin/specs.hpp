@@ -47,6 +47,7 @@ struct LoadPart {
   std::array<double, 3> at_m{};
   std::array<double, 3> rpy_deg{};
   std::string origin;
+  std::string name; // the user's name for it (`name:`), shown by `load show`
   bool operator==(const LoadPart&) const = default;
 };
 struct AssemblyLoad { std::vector<LoadPart> parts; std::string origin; bool operator==(const AssemblyLoad&) const = default; };

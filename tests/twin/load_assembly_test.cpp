@@ -16,7 +16,7 @@ namespace {
 const std::string kData = std::string(SREH_SOURCE_DIR) + "/tests/twin/data/";
 
 LoadPart part(PartShape s, std::array<double, 3> at = {}, std::array<double, 3> rpy = {}) {
-  return LoadPart{std::move(s), at, rpy, ""};
+  return LoadPart{std::move(s), at, rpy, "", ""};
 }
 
 double gcm2(const LoadSpec& load) { return kgm2_to_gcm2(build_model(load, {}, 1e-4).load_inertia_kgm2); }
@@ -76,7 +76,7 @@ TEST(LoadAssembly, StlCubeAsciiAndBinaryAt50mm) {
 }
 
 TEST(LoadAssembly, OpenMeshIsRefusedNamingTheFile) {
-  const std::string msg = refusal(AssemblyLoad{{LoadPart{MeshPart{kData + "open_cube20.stl", 0.1, 0, 0.001}, {}, {}, "f.yaml:3:7"}}, ""});
+  const std::string msg = refusal(AssemblyLoad{{LoadPart{MeshPart{kData + "open_cube20.stl", 0.1, 0, 0.001}, {}, {}, "f.yaml:3:7", ""}}, ""});
   EXPECT_NE(msg.find("f.yaml:3:7"), std::string::npos) << msg;
   EXPECT_NE(msg.find("open_cube20.stl: the mesh is not closed"), std::string::npos) << msg;
 }
