@@ -75,6 +75,17 @@ TEST(LoadAssembly, StlCubeAsciiAndBinaryAt50mm) {
   EXPECT_NEAR(f.mass_kg, 0.0216, 1e-6);
 }
 
+TEST(LoadAssembly, MeshKeepsTheFilesOwnOrigin_ATwin39) {
+  // A CAD export whose cube sits at x = 50 mm, z = 10 mm in the file's own
+  // coordinates: at_m [0, 0, 0] keeps it there (MuJoCo re-centres meshes
+  // internally; the twin's figures must not).
+  const AssemblyLoad a{{part(MeshPart{kData + "cube20_at_50mm.stl", 0.1, 0, 0.001})}, ""};
+  const LoadFigures f = load_figures(a);
+  EXPECT_NEAR(f.com_m[0], 0.05, 1e-6);
+  EXPECT_NEAR(f.com_m[2], 0.01, 1e-6);
+  EXPECT_NEAR(kgm2_to_gcm2(f.inertia_kgm2), kgm2_to_gcm2(0.1 * 0.0004 / 6 + 0.1 * 0.0025), 1.0);
+}
+
 TEST(LoadAssembly, OpenMeshIsRefusedNamingTheFile) {
   const std::string msg = refusal(AssemblyLoad{{LoadPart{MeshPart{kData + "open_cube20.stl", 0.1, 0, 0.001}, {}, {}, "f.yaml:3:7", ""}}, ""});
   EXPECT_NE(msg.find("f.yaml:3:7"), std::string::npos) << msg;
