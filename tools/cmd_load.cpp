@@ -16,10 +16,13 @@
 #include "io/output_path.hpp"
 #include "scenarios/load_file.hpp"
 #include "tools/command.hpp"
-#include "tools/load_picture.hpp"
 #include "twin/load_builder.hpp"
 #include "twin/load_figures.hpp"
 #include "twin/module_model.hpp"
+
+#ifdef SREH_WITH_RENDER
+#include "renders/load_picture.hpp"
+#endif
 
 namespace sreh::tools {
 namespace {
@@ -110,7 +113,13 @@ void print_text(const std::string& file, const Shown& s) {
 int show_command(const LoadArgs& a) {
   io::check_outputs({{"--picture", a.picture, io::OutputKind::File}}, {a.file});
   const Shown s = read(a.file);
-  if (!a.picture.empty()) write_load_picture(s.load, s.figures, a.picture);
+  if (!a.picture.empty()) {
+#ifdef SREH_WITH_RENDER
+    write_load_picture(s.load, s.figures, a.picture);
+#else
+    throw InputError("--picture: this sreh-twin was built without rendering (-DSREH_WITH_RENDER=OFF)");
+#endif
+  }
   if (a.json) std::cout << as_json(a.file, s).dump(2) << "\n";
   else print_text(a.file, s);
   return 0;

@@ -9,8 +9,6 @@
 namespace sreh {
 namespace {
 
-constexpr double kGravity_m_s2 = 9.81; // MuJoCo's default gravity, as the twin uses
-
 bool inside(const mjModel* m, int body, int root) {
   for (int b = body; b > 0; b = m->body_parentid[b]) {
     if (b == root) return true;
@@ -46,7 +44,6 @@ LoadFigures load_figures(const LoadSpec& load) {
   const double* face = d->xpos + 3 * flange; // the mounting face's centre, on the axis
   const double axis_xy[2] = {face[0], face[1]};
   std::vector<int> roots; // one per part
-  const int load_body = mj_name2id(m, mjOBJ_BODY, "load");
   const auto* assembly = std::get_if<AssemblyLoad>(&load);
   if (assembly != nullptr) {
     for (std::size_t k = 0; k < assembly->parts.size(); ++k) {
@@ -72,15 +69,17 @@ LoadFigures load_figures(const LoadSpec& load) {
     total.mass_kg += part.mass_kg;
     f.parts.push_back(part);
   }
-  (void)load_body;
   f.mass_kg = total.mass_kg;
   for (int c = 0; c < 3; ++c) f.com_m[static_cast<std::size_t>(c)] = f.mass_kg > 0 ? total_moment[c] / f.mass_kg - face[c] : 0.0;
+  for (int c = 0; c < 3; ++c) f.face_world_m[static_cast<std::size_t>(c)] = face[c];
   f.com_radius_m = std::hypot(f.com_m[0], f.com_m[1]);
+  f.gravity_m_s2 = std::sqrt(m->opt.gravity[0] * m->opt.gravity[0] + m->opt.gravity[1] * m->opt.gravity[1] +
+                             m->opt.gravity[2] * m->opt.gravity[2]); // the module model's, as the twin tilts it
   return f;
 }
 
 double gravity_torque_max_Nm(const LoadFigures& f, double tilt_deg) {
-  return f.mass_kg * kGravity_m_s2 * f.com_radius_m * std::abs(std::sin(deg_to_rad(tilt_deg)));
+  return f.mass_kg * f.gravity_m_s2 * f.com_radius_m * std::abs(std::sin(deg_to_rad(tilt_deg)));
 }
 
 } // namespace sreh

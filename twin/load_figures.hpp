@@ -26,6 +26,8 @@ struct LoadFigures {
   double inertia_kgm2 = 0;       // about the flange axis (MuJoCo's mass matrix)
   std::array<double, 3> com_m{}; // centre of mass in the flange frame (z up from the mounting face)
   double com_radius_m = 0;       // its distance from the axis
+  double gravity_m_s2 = 9.81;    // the module model's gravity
+  std::array<double, 3> face_world_m{}; // the mounting face's centre in the module model's world (pictures)
   std::vector<PartFigures> parts;
 };
 

@@ -1,11 +1,8 @@
-#include "tools/load_picture.hpp"
+#include "renders/load_picture.hpp"
 
 #include <algorithm>
 #include <vector>
 
-#include "tools/command.hpp"
-
-#ifdef SREH_WITH_RENDER
 #include <fmt/format.h>
 
 #include "io/atomic_file.hpp"
@@ -13,27 +10,23 @@
 #include "renders/png_writer.hpp"
 #include "twin/load_builder.hpp"
 #include "twin/mujoco_support.hpp"
-#endif
 
-namespace sreh::tools {
-
-#ifdef SREH_WITH_RENDER
+namespace sreh {
 namespace {
 
 constexpr int kViewWidth_px = 640; // each of the two views
 constexpr int kViewHeight_px = 480;
-constexpr double kFlangeFace_m = 0.065; // the mounting face's height (A-TWIN-1)
 
 // The axis as a thin red rod through the flange and the centre of mass as a
 // yellow ball: world geoms that touch nothing.
 std::string markers_xml(const LoadFigures& f) {
-  const double x = f.com_m[0], y = f.com_m[1], z = kFlangeFace_m + f.com_m[2];
+  const double x = f.face_world_m[0] + f.com_m[0], y = f.face_world_m[1] + f.com_m[1], z = f.face_world_m[2] + f.com_m[2];
   return fmt::format(
       "<geom name=\"picture_axis\" type=\"cylinder\" fromto=\"0 0 0.0 0 0 {}\" size=\"0.0012\" rgba=\"0.9 0.1 0.1 1\" "
       "contype=\"0\" conaffinity=\"0\"/>"
       "<geom name=\"picture_com\" type=\"sphere\" pos=\"{} {} {}\" size=\"0.004\" rgba=\"1 0.85 0 1\" contype=\"0\" "
       "conaffinity=\"0\"/>",
-      kFlangeFace_m + std::max(0.1, 2 * f.com_m[2] + 0.05), x, y, z);
+      f.face_world_m[2] + std::max(0.1, 2 * f.com_m[2] + 0.05), x, y, z);
 }
 
 } // namespace
@@ -68,10 +61,5 @@ void write_load_picture(const LoadSpec& load, const LoadFigures& figures, const 
   write_png(file.temp_path(), rgb.data(), w, kViewHeight_px);
   file.commit();
 }
-#else
-void write_load_picture(const LoadSpec&, const LoadFigures&, const std::string&) {
-  throw InputError("--picture: this sreh-twin was built without rendering (-DSREH_WITH_RENDER=OFF)");
-}
-#endif
 
-} // namespace sreh::tools
+} // namespace sreh

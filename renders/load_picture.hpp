@@ -7,9 +7,8 @@
 #include "twin/load_figures.hpp"
 #include "twin/specs.hpp"
 
-namespace sreh::tools {
+namespace sreh {
 
-// Throws InputError when built without rendering (-DSREH_WITH_RENDER=OFF).
 void write_load_picture(const LoadSpec& load, const LoadFigures& figures, const std::string& png_path);
 
-} // namespace sreh::tools
+} // namespace sreh
