@@ -226,7 +226,7 @@ LoadSpec parse_load_value(const YamlReader& r, const YAML::Node& node, const Fil
   LoadSpec load = reader.parse(node);
   if (std::holds_alternative<NoLoad>(load)) return load;
   try {
-    (void)build_model(load, {}, 1e-4); // the twin's own checks: limit, files, MuJoCo
+    (void)check_load(load); // the twin's own checks: limit, files, MuJoCo
   } catch (const std::invalid_argument& e) {
     fail_at_origin(r, node, load, reader.part_locs_, e.what());
   } catch (const std::runtime_error& e) { // a MuJoCo warning on numbers it cannot use (A-TWIN-14)

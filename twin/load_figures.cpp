@@ -33,7 +33,7 @@ void add_body(const mjModel* m, const mjData* d, int b, const double axis_xy[2],
 } // namespace
 
 LoadFigures load_figures(const LoadSpec& load) {
-  BuiltModel built = build_model(load, {}, 1e-4);
+  BuiltModel built = check_load(load);
   const mjModel* m = built.model.get();
   MjDataPtr data(mj_makeData(m));
   mj_forward(m, data.get());
