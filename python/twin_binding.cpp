@@ -126,7 +126,7 @@ class PyTwin {
  public:
   PyTwin(std::optional<double> load_gcm2, std::optional<std::filesystem::path> load_file, double voltage_V, double ambient_C,
          double master_cycle_ms, bool configure_load, bool record_trace, std::vector<double> hard_stops_deg,
-         std::optional<pyb::bytes> nvm, std::optional<std::filesystem::path> model) {
+         std::optional<pyb::bytes> nvm, std::optional<std::filesystem::path> model, std::optional<double> mounting_tilt_deg) {
     TwinConfig c;
     if (model) {
       try {
@@ -145,11 +145,20 @@ class PyTwin {
         c.load = MjcfLoad{f}; // an MJCF body file, as `load: {mjcf: ...}`
       } else {
         try {
-          c.load = sizing::load_from_file(f, "load_file");
+          // The load and the file's mounting: (issue 28), exactly as `run` and `size --load`.
+          LoadFileContents contents = sizing::read_load_file(f, "load_file");
+          c.load = std::move(contents.load);
+          c.mounting_tilt_deg = contents.mounting_tilt_deg.value_or(0.0);
         } catch (const sizing::SizingInputError& e) {
           throw input_error(e.what());
         }
       }
+    }
+    if (mounting_tilt_deg) { // given: it wins over the file's mounting:, as size --mounting-tilt-deg
+      if (!(*mounting_tilt_deg >= 0.0 && *mounting_tilt_deg <= 180.0)) {
+        throw input_error("mounting_tilt_deg " + std::to_string(*mounting_tilt_deg) + ": expected 0 .. 180 deg");
+      }
+      c.mounting_tilt_deg = *mounting_tilt_deg;
     }
     check_finite(voltage_V, "voltage_V");
     check_finite(ambient_C, "ambient_C");
@@ -367,13 +376,15 @@ A load given here is mounted and, unless configure_load=False, written
 into every parameter set's configured load (index 64..71 subindex 4).
 Not thread-safe: one Twin per thread.)")
       .def(pyb::init<std::optional<double>, std::optional<std::filesystem::path>, double, double, double, bool, bool,
-                     std::vector<double>, std::optional<pyb::bytes>, std::optional<std::filesystem::path>>(),
+                     std::vector<double>, std::optional<pyb::bytes>, std::optional<std::filesystem::path>,
+                     std::optional<double>>(),
            pyb::kw_only(), arg("load_gcm2") = pyb::none(), arg("load_file") = pyb::none(), arg("voltage_V") = 24.0,
            arg("ambient_C") = 25.0, arg("master_cycle_ms") = 2.0, arg("configure_load") = true,
            arg("record_trace") = true, arg("hard_stops_deg") = std::vector<double>{}, arg("nvm") = pyb::none(),
-           arg("model") = pyb::none(),
+           arg("model") = pyb::none(), arg("mounting_tilt_deg") = pyb::none(),
            R"(load_gcm2: a load of this inertia about the axis (g cm^2, 0 .. 15000).
-load_file: a YAML file with a scenario's 'load:' key, or an MJCF body file (.xml).
+load_file: a YAML file with a scenario's 'load:' key (its 'mounting:' too), or an MJCF body file (.xml).
+mounting_tilt_deg: the axis tilted from vertical, 0 .. 180 (90: horizontal); default: the file's mounting:, else 0.
 voltage_V: supply; ambient_C: air temperature; master_cycle_ms: IO-Link cycle 2 .. 1000 ms.
 record_trace: keep one trace row per cycle (trace()); hard_stops_deg: obstacles the load hits.
 nvm: a saved memory image (save_nvm()); factory-new otherwise.

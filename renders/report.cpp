@@ -249,6 +249,11 @@ void write_summary(std::ostream& out, const ReportSummary& in, ReportRecorder& r
                      "max tracking error {:.4f} deg</p>\n",
                      in.passed ? "pass" : "fail", in.passed ? "PASSED" : "FAILED", run.checks_held(), run.checks(), run.moves(),
                      run.moves_completed(), in.sim_time_s, in.max_tracking_error_deg);
+  if (!in.hints.empty()) {
+    out << "<ul class=\"hints\" id=\"hints\">\n";
+    for (const std::string& h : in.hints) out << "<li>" << xml_escape(h) << "</li>\n";
+    out << "</ul>\n";
+  }
   if (run.checks_held() < run.checks()) {
     out << "<ul class=\"failed\" id=\"failed\">\n";
     run.copy_failed_items(out);

@@ -27,6 +27,7 @@ struct ReportSummary {
   std::string version;           // sreh-twin version
   double sim_time_s = 0;
   double max_tracking_error_deg = 0;
+  std::vector<std::string> hints; // commissioning hints (issue 28), shown at the top
   // A rendered video (.mp4, .webm, .gif) copied into the folder as
   // video.<ext>; empty: no video.
   std::filesystem::path video_source;

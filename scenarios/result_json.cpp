@@ -60,6 +60,7 @@ nlohmann::json to_json(const RunResult& r) {
       {"name", r.name},
       {"passed", r.passed},
       {"failures", r.failures},
+      {"hints", r.hints},
       {"stopped_early", r.stopped_early},
       {"moves", moves},
       {"final",

@@ -126,10 +126,32 @@ class ScenarioRun {
   void execute(const Step&, const std::string&, const PdStep& a) {
     // Fields left out keep their value (interfaces.md); the step lasts one
     // cycle so that the device sees these outputs at least once.
+    const ProcessDataOut before = pd_;
     apply_pd_out(a, pd_);
     twin_->set_pd_out(pd_);
     cycle();
+    if ((pd_.motor_on && !before.motor_on) || (pd_.move && !before.move)) load_hint(pd_.parameter_set);
   }
+
+  // A-SCN-30 (issue 28): the manual's first advice for tracking errors and
+  // long settling is to check the parameter set, the load above all (3.5.6,
+  // 7.2). The real module cannot know the attached inertia; the twin does,
+  // so the run says so when a set starts that is configured far from it.
+  void load_hint(uint8_t set) {
+    if (set > 7) return; // refused by the device (114.7.2)
+    const ParamId id{static_cast<uint16_t>(64 + set), 4};
+    const IsduResult res = twin_->isdu_read(id.index, id.subindex);
+    if (!res.ok() || res.data.size() != wire_size(parameter_row(id).type)) return;
+    const double configured = raw_to_display(id, decode_number(parameter_row(id).type, res.data));
+    const double attached = std::max(0.0, twin_->load_inertia_gcm2());
+    const double diff = std::abs(configured - attached);
+    if (diff <= kHintRelative * attached || diff <= kHintAbsolute_gcm2) return;
+    const std::string hint = fmt::format("hint: parameter set {} is configured for {:.0f} g cm^2, the attached load is {:.0f} "
+                                         "g cm^2 (manual 3.5.6, 7.2)", set, configured, attached);
+    if (std::find(r_.hints.begin(), r_.hints.end(), hint) == r_.hints.end()) r_.hints.push_back(hint);
+  }
+  static constexpr double kHintRelative = 0.2;       // A-SCN-30: more than 20 % ...
+  static constexpr double kHintAbsolute_gcm2 = 100;  // ... and more than 100 g cm^2
 
   void execute(const Step&, const std::string&, const WaitStep& a) { cycles(cycles_for(a.duration_s)); }
 

@@ -37,6 +37,9 @@ struct RunResult {
   bool passed = true;
   bool stopped_early = false;        // stop_on_failure ended the run
   std::vector<std::string> failures; // "step 4 (line 12): ..."
+  // Commissioning hints (issue 28, A-SCN-30): "hint: parameter set N is
+  // configured for C g cm^2, ...". The twin's knowledge, not the device's.
+  std::vector<std::string> hints;
   std::vector<CheckRecord> checks;
   std::vector<MoveRecord> moves;
   // Counted whether kept above or streamed (RunOptions sinks).

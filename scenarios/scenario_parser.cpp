@@ -18,6 +18,7 @@
 #include "device_logic/units.hpp"
 #include "scenarios/comparison_parser.hpp"
 #include "scenarios/load_file.hpp"
+#include "scenarios/load_parser.hpp"
 #include "scenarios/conformance_steps.hpp"
 #include "scenarios/isdu_value.hpp"
 #include "scenarios/snapshot.hpp"
@@ -136,51 +137,11 @@ class Parser {
     }
   }
 
+  // Shapes, assemblies and the twin's own checks: scenarios/load_parser.cpp (issue 28).
   LoadSpec parse_load(const YAML::Node& n) {
-    r_.check_map(n, "load", {"disk", "ring", "box", "arm", "mjcf", "inertia_gcm2", "none"});
-    if (n.size() != 1) r_.fail(n, "load: give exactly one of disk, ring, box, arm, mjcf, inertia_gcm2, none");
-    const std::string kind = n.begin()->first.Scalar();
-    const YAML::Node v = n.begin()->second;
-    const std::string what = "load." + kind;
-    auto mass = [&](const YAML::Node& m) { return r_.number(r_.require(m, "mass_kg", what), what + ".mass_kg", 1e-6, 100.0); };
-    auto length = [&](const YAML::Node& m, const char* key, double min) {
-      return r_.number(r_.require(m, key, what), fmt::format("{}.{}", what, key), min, 10.0);
-    };
-    if (kind == "disk") {
-      r_.check_map(v, what, {"mass_kg", "radius_m", "thickness_m"});
-      DiskLoad d{mass(v), length(v, "radius_m", 1e-6)};
-      if (v["thickness_m"]) d.thickness_m = length(v, "thickness_m", 1e-6);
-      return d;
-    }
-    if (kind == "ring") {
-      r_.check_map(v, what, {"mass_kg", "inner_radius_m", "outer_radius_m", "thickness_m"});
-      RingLoad g{mass(v), length(v, "inner_radius_m", 0.0), length(v, "outer_radius_m", 1e-6)};
-      if (g.inner_radius_m >= g.outer_radius_m) r_.fail(v["inner_radius_m"], what + ": inner_radius_m must be below outer_radius_m");
-      if (v["thickness_m"]) g.thickness_m = length(v, "thickness_m", 1e-6);
-      return g;
-    }
-    if (kind == "box") {
-      r_.check_map(v, what, {"mass_kg", "x_m", "y_m", "z_m"});
-      return BoxLoad{mass(v), length(v, "x_m", 1e-6), length(v, "y_m", 1e-6), length(v, "z_m", 1e-6)};
-    }
-    if (kind == "arm") {
-      r_.check_map(v, what, {"mass_kg", "radius_m", "arm_mass_kg"});
-      ArmLoad a{mass(v), length(v, "radius_m", 0.0)};
-      if (v["arm_mass_kg"]) a.arm_mass_kg = r_.number(v["arm_mass_kg"], what + ".arm_mass_kg", 0.0, 100.0);
-      return a;
-    }
-    if (kind == "mjcf") return MjcfLoad{existing_file(v, what, true)};
-    if (kind == "none") {
-      if (!v.IsNull() && !(v.IsScalar() && r_.boolean(v, what))) r_.fail(v, "load.none: write 'none: true' or leave load out");
-      return NoLoad{};
-    }
-    // inertia_gcm2; the manual's parameter range is 0..15000 (6.2, 64.4), the physics allows more.
-    const double j = r_.number(v, what, 0.0, 1e6);
-    if (j > 0 && j < kMinInertiaGcm2) {
-      r_.fail(v, fmt::format("{}: {} is above 0 but below {} g cm^2, too small to model; use 0 for no load", what,
-                             v.Scalar(), kMinInertiaGcm2));
-    }
-    return InertiaLoad{j};
+    return detail::parse_load_value(r_, n, [this](const YAML::Node& f, const std::string& what) {
+      return existing_file(f, what, true);
+    });
   }
 
   // Axis orientation (A-TWIN-24): {axis: vertical|horizontal} or {tilt_deg: T}.

@@ -48,6 +48,29 @@ std::string load_yaml(const LoadSpec& load) {
       // string is a valid YAML double-quoted scalar.
       return fmt::format("{{mjcf: {}}}", nlohmann::json(std::filesystem::absolute(m.path).string()).dump());
     }
+    std::string operator()(const CylinderPart& c) const {
+      return fmt::format("{{cylinder: {{mass_kg: {}, radius_m: {}, length_m: {}}}}}", num(c.mass_kg), num(c.radius_m),
+                         num(c.length_m));
+    }
+    std::string operator()(const SpherePart& c) const {
+      return fmt::format("{{sphere: {{mass_kg: {}, radius_m: {}}}}}", num(c.mass_kg), num(c.radius_m));
+    }
+    std::string operator()(const PointPart& c) const { return fmt::format("{{point: {{mass_kg: {}}}}}", num(c.mass_kg)); }
+    std::string operator()(const MeshPart& m) const {
+      const std::string amount = m.mass_kg > 0 ? "mass_kg: " + num(m.mass_kg) : "density_kg_m3: " + num(m.density_kg_m3);
+      return fmt::format("{{mesh: {{file: {}, {}, scale: {}}}}}",
+                         nlohmann::json(std::filesystem::absolute(m.path).string()).dump(), amount, num(m.scale));
+    }
+    std::string operator()(const AssemblyLoad& a) const {
+      std::string parts;
+      for (const LoadPart& p : a.parts) {
+        const std::string shape = std::visit(*this, p.shape); // "{kind: {...}}"
+        parts += fmt::format("{}{{{}, at_m: [{}, {}, {}], rpy_deg: [{}, {}, {}]}}", parts.empty() ? "" : ", ",
+                             shape.substr(1, shape.size() - 2), num(p.at_m[0]), num(p.at_m[1]), num(p.at_m[2]),
+                             num(p.rpy_deg[0]), num(p.rpy_deg[1]), num(p.rpy_deg[2]));
+      }
+      return "{parts: [" + parts + "]}";
+    }
   };
   return std::visit(V{}, load);
 }

@@ -145,6 +145,7 @@ void write_report_dir(const RunArgs& a, const RunResult& r, ReportRecorder& reco
   summary.version = SREH_VERSION;
   summary.sim_time_s = r.sim_time_s;
   summary.max_tracking_error_deg = r.max_tracking_error_deg;
+  summary.hints = r.hints;
   if (!a.video.empty()) summary.video_source = a.video; // copied in: the folder stays movable
   try {
     write_report(a.report, summary, recorded);
@@ -198,7 +199,7 @@ std::vector<std::string> inputs_of(const RunArgs& a, const Scenario& s) {
   if (s.device.nvm_image_path) in.push_back(*s.device.nvm_image_path);
   if (!s.model_file.empty()) in.push_back(s.model_file);
   if (!a.model.empty()) in.push_back(a.model);
-  if (const auto* m = std::get_if<MjcfLoad>(&s.load)) in.push_back(m->path);
+  for (const std::string& f : load_input_files(s.load)) in.push_back(f); // MJCF and mesh files
   return in;
 }
 

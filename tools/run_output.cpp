@@ -48,6 +48,7 @@ void RunOutput::print(std::ostream& out, const RunResult& r, double wall_s) {
     return;
   }
   out << (r.passed ? "PASS" : "FAIL") << "  " << io::escape_control(r.name) << "\n";
+  for (const std::string& h : r.hints) out << "  " << h << "\n"; // issue 28: the commissioning hint
   print_failures(out);
   out << fmt::format("  {} of {} checks held, {} moves, {:.3f} s simulated{}\n", r.checks_held, r.checks_recorded,
                      r.moves_recorded, r.sim_time_s, r.stopped_early ? " (stopped at the first failure)" : "");
@@ -68,6 +69,7 @@ void RunOutput::print_file_line(std::ostream& out, const RunResult& r, const std
   }
   out << fmt::format("{}  {}  {}  ({:.3f} s simulated, {:.2f} s)\n", r.passed ? "PASS" : "FAIL", io::escape_control(file),
                      io::escape_control(r.name), r.sim_time_s, wall_s);
+  for (const std::string& h : r.hints) out << "  " << h << "\n";
   print_failures(out);
 }
 

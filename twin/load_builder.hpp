@@ -17,14 +17,30 @@ inline constexpr double kMaxLoad_gcm2 = 15000.0;
 // Smallest non-zero InertiaLoad: below it the modelled disk underflows (A-TWIN-5, issue 12).
 inline constexpr double kMinInertiaGcm2 = 1e-6;
 
+// A-TWIN-8: the limit holds within a relative tolerance, so a load of
+// exactly 15000 g cm^2 (0.15 kg at 0.1 m) is accepted whatever MuJoCo's rounding.
+bool within_load_limit(double load_gcm2);
+// A figure in g cm^2 as messages print it: one decimal (21333.3, not 21333.333343333336).
+std::string round_gcm2(double gcm2);
+
 // models/sreh50.xml of this source tree.
 std::string default_module_model_path();
 
 // A short human-readable description, used in error messages.
 std::string describe_load(const LoadSpec& load);
 
+// The files a load reads (MJCF and mesh files, as resolved by the parser):
+// an output must never be one of them.
+std::vector<std::string> load_input_files(const LoadSpec& load);
+
 // The MJCF text of the module with the load and world objects (deterministic).
 // Throws std::invalid_argument for bad dimensions or a bad/missing load file.
+struct ComposedModel {
+  std::string xml;
+  std::vector<VfsFile> files; // the loads' meshes, by the names the MJCF uses
+};
+ComposedModel compose_model(const LoadSpec& load, const std::vector<HardStop>& hard_stops,
+                            const std::string& module_model_path = default_module_model_path());
 std::string compose_model_xml(const LoadSpec& load, const std::vector<HardStop>& hard_stops,
                               const std::string& module_model_path = default_module_model_path());
 
@@ -42,6 +58,10 @@ struct BuiltModel {
 BuiltModel build_model(const LoadSpec& load, const std::vector<HardStop>& hard_stops, double physics_dt_s,
                        const MechanicsConstants& mechanics = default_module_model().mechanics,
                        const std::string& module_model_path = default_module_model_path());
+
+// build_model with the model card's defaults, for checks and figures that
+// never render: the module's textures are left coarse (7x faster to compile).
+BuiltModel check_load(const LoadSpec& load);
 
 // Inertia about the flange joint's axis incl. armature: qM at its dof after
 // mj_forward (mujoco.md). Runs mj_forward on `data`.

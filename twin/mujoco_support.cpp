@@ -29,17 +29,22 @@ void install_mujoco_handlers() {
   });
 }
 
-MjModelPtr compile_mjcf(std::string_view xml, const std::string& origin) {
+MjModelPtr compile_mjcf(std::string_view xml, const std::string& origin) { return compile_mjcf(xml, origin, {}); }
+
+MjModelPtr compile_mjcf(std::string_view xml, const std::string& origin, const std::vector<VfsFile>& files) {
   install_mujoco_handlers();
   // mjVFS is ~2 MB: heap, never the stack (mujoco.md).
   std::unique_ptr<mjVFS, VfsDeleter> vfs(new mjVFS);
   mj_defaultVFS(vfs.get());
   static constexpr const char* kName = "sreh_model.xml";
-  if (mj_makeEmptyFileVFS(vfs.get(), kName, static_cast<int>(xml.size())) != 0) {
-    throw std::invalid_argument(origin + ": cannot place the model in MuJoCo's virtual file system");
-  }
-  const int index = mj_findFileVFS(vfs.get(), kName);
-  std::memcpy(vfs->filedata[index], xml.data(), xml.size());
+  auto place = [&](const std::string& name, std::string_view bytes) {
+    if (mj_makeEmptyFileVFS(vfs.get(), name.c_str(), static_cast<int>(bytes.size())) != 0) {
+      throw std::invalid_argument(origin + ": cannot place " + name + " in MuJoCo's virtual file system");
+    }
+    std::memcpy(vfs->filedata[mj_findFileVFS(vfs.get(), name.c_str())], bytes.data(), bytes.size());
+  };
+  place(kName, xml);
+  for (const VfsFile& f : files) place(f.name, f.bytes);
   char error[1024] = "";
   mjModel* model = nullptr;
   try {

@@ -4,6 +4,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <mujoco/mujoco.h>
 
@@ -22,6 +23,15 @@ void install_mujoco_handlers();
 // Compiles MJCF text through a heap-allocated virtual file system (no
 // temporary files). Throws std::invalid_argument("<origin>: <MuJoCo message>").
 MjModelPtr compile_mjcf(std::string_view xml, const std::string& origin);
+
+// A file placed next to the model in the virtual file system (a load's
+// mesh, issue 28): MJCF refers to it by `name` alone.
+struct VfsFile {
+  std::string name;
+  std::string bytes;
+  bool operator==(const VfsFile&) const = default;
+};
+MjModelPtr compile_mjcf(std::string_view xml, const std::string& origin, const std::vector<VfsFile>& files);
 
 // Reads a whole file; throws std::invalid_argument naming the file.
 std::string read_text_file(const std::string& path);

@@ -3,6 +3,7 @@
 // the plant (twin/plant.hpp) and the twin (twin/twin.hpp); the lower twin
 // headers (supply, thermal, load_builder) need only this one.
 #pragma once
+#include <array>
 #include <string>
 #include <variant>
 #include <vector>
@@ -24,7 +25,34 @@ struct ArmLoad { double mass_kg = 0; double radius_m = 0; double arm_mass_kg = 0
 struct InertiaLoad { double inertia_gcm2 = 0; bool operator==(const InertiaLoad&) const = default; }; // a given inertia about the axis
 struct MjcfLoad { std::string path; bool operator==(const MjcfLoad&) const = default; }; // any MJCF body file
 struct NoLoad { bool operator==(const NoLoad&) const = default; };
-using LoadSpec = std::variant<NoLoad, DiskLoad, RingLoad, BoxLoad, ArmLoad, InertiaLoad, MjcfLoad>;
+
+// Part shapes of an assembly (issue 28), each centred on its part frame.
+struct CylinderPart { double mass_kg = 0; double radius_m = 0; double length_m = 0; // solid, axis along the part's z
+  bool operator==(const CylinderPart&) const = default; };
+struct SpherePart { double mass_kg = 0; double radius_m = 0; bool operator==(const SpherePart&) const = default; };
+struct PointPart { double mass_kg = 0; bool operator==(const PointPart&) const = default; }; // a point mass
+// An STL file (ASCII or binary), path as resolved by the parser; mass_kg or
+// density_kg_m3 (the other 0); the file's coordinates times `scale` are metres.
+struct MeshPart { std::string path; double mass_kg = 0; double density_kg_m3 = 0; double scale = 1;
+  bool operator==(const MeshPart&) const = default; };
+using PartShape = std::variant<DiskLoad, RingLoad, BoxLoad, CylinderPart, SpherePart, PointPart, MeshPart, MjcfLoad>;
+
+// One part: its shape, placed with its centre (a mesh's or MJCF's own
+// origin) at `at_m` in the flange frame (z up from the mounting face, x
+// toward flange angle 0) and turned by roll, pitch, yaw about the flange's
+// fixed x, y, z axes in that order (A-TWIN-39). `origin` names the part in
+// messages ("FILE:LINE:COL").
+struct LoadPart {
+  PartShape shape;
+  std::array<double, 3> at_m{};
+  std::array<double, 3> rpy_deg{};
+  std::string origin;
+  std::string name; // the user's name for it (`name:`), shown by `load show`
+  bool operator==(const LoadPart&) const = default;
+};
+struct AssemblyLoad { std::vector<LoadPart> parts; std::string origin; bool operator==(const AssemblyLoad&) const = default; };
+
+using LoadSpec = std::variant<NoLoad, DiskLoad, RingLoad, BoxLoad, ArmLoad, InertiaLoad, MjcfLoad, AssemblyLoad>;
 
 // Optional world objects.
 struct HardStop { double angle_deg = 0; bool operator==(const HardStop&) const = default; }; // an obstacle the load hits at this flange angle

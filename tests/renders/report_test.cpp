@@ -174,6 +174,17 @@ TEST(Report, FailedRunAndIncompleteMoveAreMarked) {
   EXPECT_NE(html.find("<td>200.0</td><td>&mdash;</td><td>&mdash;</td>"), std::string::npos);
 }
 
+TEST(Report, CommissioningHintsStandAtTheTop_Issue28) {
+  ReportInput in = sample_run();
+  in.hints = {"hint: parameter set 1 is configured for 0 g cm^2, the attached load is 7200 g cm^2 (manual 3.5.6, 7.2)"};
+  const std::string html = report_html(in);
+  const std::size_t hint = html.find("<ul class=\"hints\" id=\"hints\">");
+  ASSERT_NE(hint, std::string::npos);
+  EXPECT_NE(html.find("configured for 0 g cm^2, the attached load is 7200 g cm^2", hint), std::string::npos);
+  EXPECT_LT(hint, html.find("<h2>Expectations</h2>")); // above everything but the result line
+  EXPECT_EQ(report_html(sample_run()).find("id=\"hints\""), std::string::npos);
+}
+
 TEST(Report, CopiesTheVideoInSoTheFolderCanBeMoved) {
   test::TempDir tmp;
   std::ofstream(tmp / "run.mp4") << "not really a video";

@@ -29,7 +29,9 @@ const T& action(const Scenario& s, std::size_t i) {
 }
 
 TEST(ScenarioParser, InterfacesExampleParses) {
-  // The example of interfaces.md, verbatim apart from the load.
+  // The example of interfaces.md, verbatim apart from the load: the
+  // contract's disk (0.4 kg, r 0.1 m) is 20000 g cm^2, above the module's
+  // limit, and since issue 28 refused while parsing (LoadAboveTheLimit...).
   const Scenario s = parse(R"(
 name: absolute move 90 deg with a 2000 g cm^2 disk
 device:
@@ -38,7 +40,7 @@ device:
   isdu:
     - {index: 65, subindex: 4, value: 2000}
 load:
-  disk: {mass_kg: 0.4, radius_m: 0.1}
+  disk: {mass_kg: 0.2, radius_m: 0.1}
 sim:
   physics_dt_s: 0.0001
   cycle_s: 0.002
@@ -67,7 +69,7 @@ expect:
   EXPECT_EQ(s.device.isdu[0].subindex, 4);
   EXPECT_EQ(s.device.isdu[0].data, (std::vector<uint8_t>{0x07, 0xD0})); // uint16 2000, big-endian (manual 6.2)
   const auto& disk = std::get<DiskLoad>(s.load);
-  EXPECT_DOUBLE_EQ(disk.mass_kg, 0.4);
+  EXPECT_DOUBLE_EQ(disk.mass_kg, 0.2);
   EXPECT_DOUBLE_EQ(disk.radius_m, 0.1);
   ASSERT_EQ(s.steps.size(), 15u);
   EXPECT_EQ(*action<PdStep>(s, 0).motor_on, true);
@@ -98,6 +100,29 @@ expect:
   EXPECT_FALSE(s.expect[0].range.contains(0.51));
   EXPECT_EQ(s.steps[4].loc.line, 18);
   EXPECT_EQ(s.steps[4].number, "5");
+}
+
+TEST(ScenarioParser, LoadAboveTheLimitIsRefusedAtItsLine_Issue28) {
+  const ScenarioError e = parse_error("name: x\nload:\n  disk: {mass_kg: 0.4, radius_m: 0.1}\nsteps:\n  - wait_s: 0.1\n");
+  EXPECT_EQ(e.where().line, 3);
+  EXPECT_NE(e.message().find("20000.0 g cm^2, above the module's limit"), std::string::npos) << e.what();
+}
+
+TEST(ScenarioParser, AssemblyPartsWithOffsetsAndNames_Issue28) {
+  const Scenario s = parse("name: x\nload:\n  parts:\n    - box: {mass_kg: 0.2, x_m: 0.02, y_m: 0.02, z_m: 0.02}\n"
+                           "      at_m: [0.06, 0, 0.02]\n      rpy_deg: [0, 0, 45]\n      name: cube\n"
+                           "    - point: {mass_kg: 0.1}\n      at_m: [0, 0.05, 0]\nsteps:\n  - wait_s: 0.1\n");
+  const auto& a = std::get<AssemblyLoad>(s.load);
+  ASSERT_EQ(a.parts.size(), 2u);
+  EXPECT_EQ(a.parts[0].at_m, (std::array<double, 3>{0.06, 0, 0.02}));
+  EXPECT_EQ(a.parts[0].rpy_deg[2], 45);
+  EXPECT_EQ(a.parts[0].name, "cube");
+  EXPECT_TRUE(std::holds_alternative<PointPart>(a.parts[1].shape));
+  // A part with two shapes, and a placement on a shape that takes none, name their lines.
+  EXPECT_EQ(parse_error("name: x\nload:\n  parts:\n    - {point: {mass_kg: 0.1}, sphere: {mass_kg: 0.1, radius_m: 0.01}}\n"
+                        "steps:\n  - wait_s: 0.1\n").where().line, 4);
+  EXPECT_EQ(parse_error("name: x\nload:\n  arm: {mass_kg: 0.1, radius_m: 0.05}\n  at_m: [0, 0, 0]\nsteps:\n  - wait_s: 0.1\n")
+                .where().line, 3);
 }
 
 TEST(ScenarioParser, PlainPositionMatchesNearestWireCount) {
