@@ -18,7 +18,7 @@ SREH_REGISTER_COMMAND(90, [](CLI::App& app, int& exit_code) {
   auto shell = std::make_shared<std::string>();
   CLI::App* cmd = app.add_subcommand("completion", "Print the shell completion script: source <(sreh-twin completion bash)");
   cmd->add_option("SHELL", *shell, "The shell: bash")->required()->check(CLI::IsMember({"bash"}));
-  cmd->callback([&exit_code] {
+  cmd->callback([shell, &exit_code] { // `shell` lives as long as the command line does
     std::cout << kBashCompletion;
     exit_code = 0;
   });
