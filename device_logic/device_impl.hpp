@@ -26,10 +26,7 @@ inline constexpr std::size_t kFirmwareMaxImage = 4u << 20; // 4 MiB: far above a
 enum class BootStatus : uint8_t { Normal = 0, BootMode = 1, BootModeAfterFailedUpdate = 2 };
 
 struct Device::Impl : DeviceConfiguration, DeviceState, DeviceMonitors {
-  explicit Impl(const DriveModel& d) {
-    drive = d;
-    controller = PositionController(d.gains);
-  }
+  explicit Impl(const DriveModel& d) { drive = d; } // power_on() then builds the controller from it
   explicit Impl(const DeviceSnapshot& s)
       : DeviceConfiguration(s.configuration), DeviceState(s.state), DeviceMonitors(s.monitors) {}
   DeviceSnapshot snapshot() const {

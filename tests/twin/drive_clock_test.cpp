@@ -10,15 +10,13 @@
 #include <vector>
 
 #include "device_logic/units.hpp"
+#include "tests/twin/twin_helpers.hpp"
 #include "twin/twin.hpp"
 
 namespace sreh {
 namespace {
 
-void write_raw(Twin& twin, uint16_t index, uint8_t sub, uint16_t value) {
-  const uint8_t bytes[2] = {static_cast<uint8_t>(value >> 8), static_cast<uint8_t>(value & 0xFF)};
-  ASSERT_TRUE(twin.isdu_write(index, sub, bytes).ok()) << index << "." << int{sub};
-}
+using test::write_raw;
 
 void run_until(Twin& twin, double max_s, bool (*done)(const ProcessDataIn&)) {
   for (int i = 0; i < static_cast<int>(max_s / twin.master_cycle_s()); ++i) {
@@ -111,14 +109,19 @@ void knock_and_hold(Twin& twin) {
   EXPECT_LT(worst_deg, 0.1);
 }
 
+// The rated 15000 g cm^2 disk, configured in set 1 only (set 0 keeps 0).
+TwinConfig rated_disk() {
+  TwinConfig c;
+  c.load = InertiaLoad{15000};
+  c.record_trace = false;
+  return c;
+}
+
 // A-SM-6 (issue 25): at Motor On the loop is tuned for the set the PLC has
 // selected; with the rated load configured there, a knock right after
 // Motor On is held (it used to grow into a limit cycle and 114.5).
 TEST(DriveClock, HoldsARatedLoadWithTheSetSelectedAtMotorOn) {
-  TwinConfig c;
-  c.load = InertiaLoad{15000};
-  c.record_trace = false;
-  Twin twin(c);
+  Twin twin(rated_disk());
   write_raw(twin, 65, 4, 15000);
   switch_on(twin, 1);
   knock_and_hold(twin);
@@ -128,10 +131,7 @@ TEST(DriveClock, HoldsARatedLoadWithTheSetSelectedAtMotorOn) {
 // same knock, with set 0 (0 g cm^2) selected at Motor On and set 1 selected
 // before the knock, is held as above.
 TEST(DriveClock, ANewSelectionWhileHoldingRetunesTheLoop) {
-  TwinConfig c;
-  c.load = InertiaLoad{15000};
-  c.record_trace = false;
-  Twin twin(c);
+  Twin twin(rated_disk());
   write_raw(twin, 65, 4, 15000);
   switch_on(twin, 0);
   ProcessDataOut pd = twin.pd_out();

@@ -10,15 +10,13 @@
 #include "device_logic/planner.hpp"
 #include "device_logic/units.hpp"
 #include "twin/plant.hpp"
+#include "tests/twin/twin_helpers.hpp"
 #include "twin/twin.hpp"
 
 namespace sreh {
 namespace {
 
-void write_raw(Twin& twin, uint16_t index, uint8_t sub, uint16_t value) {
-  const uint8_t bytes[2] = {static_cast<uint8_t>(value >> 8), static_cast<uint8_t>(value & 0xFF)};
-  ASSERT_TRUE(twin.isdu_write(index, sub, bytes).ok()) << index << "." << int{sub};
-}
+using test::write_raw;
 
 struct Outcome {
   bool done = false;
