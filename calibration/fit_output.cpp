@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include "io/figures.hpp"
+
 namespace sreh {
 namespace {
 
@@ -75,7 +77,7 @@ nlohmann::json fit_json(const FitResult& fit) {
   }
   nlohmann::json correlation = nlohmann::json::array();
   for (const auto& row : fit.correlation) correlation.push_back(row);
-  return {{"constants", constants},
+  nlohmann::json j{{"constants", constants},
           {"rms_residual_deg", fit.rms_residual_deg},
           {"start_rms_residual_deg", fit.start_rms_residual_deg},
           {"iterations", fit.iterations},
@@ -84,6 +86,8 @@ nlohmann::json fit_json(const FitResult& fit) {
           {"residuals", fit.residuals},
           {"autocorrelation_rows", fit.autocorrelation_rows},
           {"correlation", correlation}};
+  io::round_figures(j); // issue 29: 9 significant digits for values, rms at 1e-6 deg
+  return j;
 }
 
 std::string calibration_date() {

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "io/figures.hpp"
+
 namespace sreh {
 namespace {
 
@@ -12,11 +14,18 @@ nlohmann::json time_s(double v) { return number(std::round(v * 1e9) / 1e9); }
 
 nlohmann::json optional_time(const std::optional<double>& v) { return v ? time_s(*v) : nlohmann::json(nullptr); }
 
+// Figures at their unit's resolution (issue 29), in the streamed and the
+// in-memory answer alike.
+nlohmann::json rounded(nlohmann::json j) {
+  io::round_figures(j);
+  return j;
+}
+
 } // namespace
 
 // The device's move record as `run --json` shows it (interfaces.md `moves[]`).
 nlohmann::json move_json(const MoveRecord& m) {
-  return {{"number", m.number},
+  return rounded({{"number", m.number},
           {"parameter_set", m.parameter_set},
           {"start_s", time_s(m.start_s)},
           {"start_deg", number(m.start_deg)},
@@ -35,16 +44,16 @@ nlohmann::json move_json(const MoveRecord& m) {
           {"stopped", m.stopped},
           {"outcome", outcome_name(m.outcome)},
           {"error_code", m.error_code},
-          {"completed", m.completed()}};
+          {"completed", m.completed()}});
 }
 
 nlohmann::json check_json(const CheckRecord& c) {
-  return {{"step", c.step},
+  return rounded({{"step", c.step},
           {"line", c.line},
           {"description", c.description},
           {"passed", c.passed},
           {"t_s", time_s(c.t_s)},
-          {"actual", c.actual}};
+          {"actual", c.actual}});
 }
 
 nlohmann::json to_json(const RunResult& r) {
@@ -56,7 +65,7 @@ nlohmann::json to_json(const RunResult& r) {
   for (const CheckRecord& c : r.checks) {
     checks.push_back(check_json(c));
   }
-  return {
+  return rounded({
       {"name", r.name},
       {"passed", r.passed},
       {"failures", r.failures},
@@ -76,7 +85,7 @@ nlohmann::json to_json(const RunResult& r) {
       {"max_temperature_C", number(r.max_temperature_C)},
       {"min_supply_V", number(r.min_supply_V)},
       {"max_supply_V", number(r.max_supply_V)},
-  };
+  });
 }
 
 } // namespace sreh

@@ -13,6 +13,7 @@
 #include "sizing/report.hpp"
 #include "sizing/uncertainty.hpp"
 #include "io/cpus.hpp"
+#include "io/figures.hpp"
 
 namespace sreh::sizing {
 namespace {
@@ -156,6 +157,7 @@ SizeOutcome run_cycle(const SizeOptions& a) {
   }
   out.feasible = out.cycle_result.evaluation.feasible;
   out.json = cycle_to_json(rq, out.cycle_result);
+  io::round_figures(out.json); // issue 29: no float noise
   out.text = cycle_summary_text(rq, out.cycle_result);
   out.cycle = std::move(rq);
   return out;
@@ -202,6 +204,7 @@ SizeOutcome run_size(const SizeOptions& a) {
                                                  static_cast<uint64_t>(a.seed), io::usable_cpus());
     add_uncertainty_json(out.json, u);
   }
+  io::round_figures(out.json); // issue 29: no float noise
   out.text = summary_text(out.request, out.result);
   return out;
 }

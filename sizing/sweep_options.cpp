@@ -11,6 +11,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/cpus.hpp"
+#include "io/figures.hpp"
 #include "io/output_path.hpp"
 #include "io/shard.hpp"
 #include "sizing/report.hpp"
@@ -150,7 +151,9 @@ std::span<const SweepColumnSpec> sweep_columns(bool uncertainty) {
   return kColumns;
 }
 
-SweepCell sweep_cell(const SweepPoint& p, std::size_t column) {
+namespace {
+
+SweepCell exact_cell(const SweepPoint& p, std::size_t column) {
   const Evaluation& e = p.result.evaluation;
   switch (column) {
     case 0: return p.load_gcm2;
@@ -189,6 +192,15 @@ SweepCell sweep_cell(const SweepPoint& p, std::size_t column) {
     case 8: return u.feasible_worst_case;
     default: return {};
   }
+}
+
+} // namespace
+
+// At the column's resolution (issue 29): the CSV and Python's columns agree.
+SweepCell sweep_cell(const SweepPoint& p, std::size_t column) {
+  SweepCell cell = exact_cell(p, column);
+  if (auto* v = std::get_if<double>(&cell)) *v = io::round_figure(sweep_columns(true)[column].name, *v);
+  return cell;
 }
 
 } // namespace sreh::sizing
