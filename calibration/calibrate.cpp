@@ -69,6 +69,7 @@ CalibrateOutcome calibrate(const CalibrateRequest& request) {
   out.start = in.start;
   out.fit = fit_model(in.cases, in.start, options);
   out.model_yaml = fit_model_yaml(out.fit, default_model_card(), request.logs, calibration_date());
+  out.cases = std::move(in.cases);
   return out;
 }
 

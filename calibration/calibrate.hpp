@@ -23,6 +23,7 @@ struct CalibrateRequest {
 struct CalibrateOutcome {
   FitResult fit;
   ModelCard start;
+  std::vector<FitCase> cases; // the logs as read, with their setups (for the report)
   std::string model_yaml; // FIT.yaml
 };
 

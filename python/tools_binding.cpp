@@ -16,6 +16,7 @@
 #include "sizing/size_options.hpp"
 #include "calibration/calibrate.hpp"
 #include "calibration/fit_output.hpp"
+#include "calibration/report.hpp"
 #include "io/atomic_file.hpp"
 #include "io/cpus.hpp"
 #include "sizing/sweep_options.hpp"
@@ -193,8 +194,9 @@ void bind_tools(pyb::module_& m) {
       "calibrate",
       [](std::vector<std::filesystem::path> logs, std::optional<double> load_gcm2, std::optional<std::filesystem::path> load,
          std::optional<std::filesystem::path> setup, std::optional<std::filesystem::path> model,
-         std::vector<std::string> fit, std::optional<std::filesystem::path> out, std::optional<int> threads,
-         int max_iterations) {
+         std::vector<std::string> fit, std::optional<std::filesystem::path> out, std::optional<std::filesystem::path> report,
+         std::optional<int> threads, int max_iterations) {
+        if (report && !calibration_reports_available()) throw input_error("report: this build has no renders");
         CalibrateRequest r;
         for (const auto& p : logs) r.logs.push_back(p.string());
         r.load_gcm2 = load_gcm2;
@@ -214,15 +216,17 @@ void bind_tools(pyb::module_& m) {
           throw input_error(e.what());
         }
         if (out) io::write_file_atomic(out->string(), [&](std::ostream& o) { o << outcome.model_yaml; });
+        if (report) write_calibration_report(*report, outcome.cases, outcome.start, outcome.fit);
         nlohmann::json j = fit_json(outcome.fit);
         j["model_yaml"] = outcome.model_yaml;
         return to_python(j);
       },
       arg("logs"), pyb::kw_only(), arg("load_gcm2") = pyb::none(), arg("load") = pyb::none(), arg("setup") = pyb::none(),
       arg("model") = pyb::none(), arg("fit") = std::vector<std::string>{}, arg("out") = pyb::none(),
-      arg("threads") = pyb::none(), arg("max_iterations") = 25,
+      arg("report") = pyb::none(), arg("threads") = pyb::none(), arg("max_iterations") = 25,
       "`sreh-twin calibrate --json` as a dict (constants, rms_residual_deg, iterations, converged, ...) plus "
-      "model_yaml, the fitted model file (also written to `out` when given). Raises InputError for a bad log.");
+      "model_yaml, the fitted model file (also written to `out` when given); `report`: a folder for the HTML "
+      "report (`calibrate --report`). Raises InputError for a bad log.");
   m.attr("SIZE_OPTIONS") = pyb::tuple(option_names(sizing::size_option_table()));
   m.attr("SWEEP_OPTIONS") = pyb::tuple(option_names(sizing::sweep_option_table()));
 }

@@ -12,6 +12,7 @@
 #include "calibration/calibrate.hpp"
 #include "calibration/fit_output.hpp"
 #include "calibration/plan.hpp"
+#include "calibration/report.hpp"
 #include "io/atomic_file.hpp"
 #include "io/cpus.hpp"
 #include "io/output_path.hpp"
@@ -25,7 +26,8 @@ struct CalibrateArgs {
   std::optional<double> load_gcm2;
   std::string fit;  // NAME,NAME
   std::string out;
-  std::string plan; // --plan OUT.yaml
+  std::string report; // --report DIR
+  std::string plan;   // --plan OUT.yaml
   double mounting_tilt_deg = 0;
   bool json = false;
 };
@@ -49,7 +51,9 @@ std::vector<std::string> inputs_of(const CalibrateArgs& a) {
 }
 
 int plan_command(const CalibrateArgs& a) {
-  if (!a.request.logs.empty() || !a.out.empty()) throw InputError("--plan: writes a scenario; give no logs and no --out");
+  if (!a.request.logs.empty() || !a.out.empty() || !a.report.empty()) {
+    throw InputError("--plan: writes a scenario; give no logs, no --out and no --report");
+  }
   io::check_outputs({{"--plan", a.plan, io::OutputKind::File}}, inputs_of(a));
   PlanRequest p;
   p.load_gcm2 = a.request.load_gcm2;
@@ -70,7 +74,8 @@ int calibrate_command(CalibrateArgs a) {
   if (!a.plan.empty()) return plan_command(a);
   if (a.out.empty()) throw InputError("calibrate: give --out FIT.yaml (or --plan OUT.yaml for the identification program)");
   if (!a.fit.empty()) a.request.fit = split_names(a.fit);
-  io::check_outputs({{"--out", a.out, io::OutputKind::File}}, inputs_of(a));
+  if (!a.report.empty() && !calibration_reports_available()) throw InputError("--report: this build has no renders");
+  io::check_outputs({{"--out", a.out, io::OutputKind::File}, {"--report", a.report, io::OutputKind::Folder}}, inputs_of(a));
   CalibrateOutcome outcome;
   try {
     outcome = calibrate(a.request);
@@ -81,6 +86,7 @@ int calibrate_command(CalibrateArgs a) {
   }
   io::write_file_atomic(a.out, [&](std::ostream& out) { out << outcome.model_yaml; });
   const FitResult& fit = outcome.fit;
+  if (!a.report.empty()) write_calibration_report(a.report, outcome.cases, outcome.start, fit);
   if (a.json) {
     std::cout << fit_json(fit).dump(2) << "\n";
   } else {
@@ -91,7 +97,7 @@ int calibrate_command(CalibrateArgs a) {
       std::cout << fmt::format("  {:<22} {:>12.6g} {:<10} (start {:.6g}, 95 % [{:.6g}, {:.6g}]){}\n", f.name, f.value,
                                f.unit, f.start, f.ci95_lo, f.ci95_hi, f.identified ? "" : "  not identified: " + f.note);
     }
-    std::cout << "wrote " << a.out << "\n";
+    std::cout << "wrote " << a.out << (a.report.empty() ? "" : " and " + a.report + "/index.html") << "\n";
   }
   return fit.converged ? 0 : 1;
 }
@@ -115,6 +121,9 @@ SREH_REGISTER_COMMAND(57, [](CLI::App& app, int& exit_code) {
                   "Constants to fit, NAME,NAME... [default: coulomb_friction,viscous_friction,stribeck_excess,"
                   "torsional_stiffness,torsional_damping]");
   cmd->add_option("--out", args->out, "Write the fitted model file here (what --model reads)");
+  cmd->add_option("--report", args->report,
+                  "Write an HTML report into this folder: logged vs simulated position and error per log (start and "
+                  "fitted card), the constants with their intervals, the correlation");
   cmd->add_flag("--json", args->json, "Print {constants: {NAME: {value, start, ci95}}, rms_residual_deg, iterations, converged}");
   cmd->add_option("--threads", r.options.threads, "Replays in parallel [default: the CPUs this process may use]")
       ->check(CLI::Range(1, 256));

@@ -75,12 +75,13 @@ def size(**options):
         raise _python_names(e) from None
 
 
-def calibrate(logs, *, load_gcm2=None, load=None, setup=None, model=None, fit=(), out=None, threads=None,
-              max_iterations=25):
+def calibrate(logs, *, load_gcm2=None, load=None, setup=None, model=None, fit=(), out=None, report=None,
+              threads=None, max_iterations=25):
     """Fit model-card constants to master logs (``sreh-twin calibrate --json``,
     docs/calibration.md): a dict with constants {NAME: {value, start, ci95,
     unit, identified}}, rms_residual_deg, iterations, converged, and
-    model_yaml (the fitted model file, also written to ``out`` when given).
+    model_yaml (the fitted model file, also written to ``out`` when given);
+    ``report`` names a folder for the HTML report (``calibrate --report``).
     ``logs`` is one path or a list; ``fit`` a list of constant names. A bad
     log raises InputError naming file:line."""
     if isinstance(logs, (str, bytes)) or hasattr(logs, "__fspath__"):
@@ -90,7 +91,8 @@ def calibrate(logs, *, load_gcm2=None, load=None, setup=None, model=None, fit=()
                                load=None if load is None else _os.fspath(load),
                                setup=None if setup is None else _os.fspath(setup),
                                model=None if model is None else _os.fspath(model), fit=list(fit),
-                               out=None if out is None else _os.fspath(out), threads=threads,
+                               out=None if out is None else _os.fspath(out),
+                               report=None if report is None else _os.fspath(report), threads=threads,
                                max_iterations=max_iterations)
     except InputError as e:
         raise _python_names(e) from None

@@ -151,7 +151,8 @@ def size(*, angle_deg: float | None = ..., load_gcm2: float | None = ..., load: 
          emit_scenario: _Path | None = ...) -> dict[str, Any]: ...
 def calibrate(logs: _Path | Sequence[_Path], *, load_gcm2: float | None = ..., load: _Path | None = ...,
               setup: _Path | None = ..., model: _Path | None = ..., fit: Sequence[str] = ...,
-              out: _Path | None = ..., threads: int | None = ..., max_iterations: int = ...) -> dict[str, Any]: ...
+              out: _Path | None = ..., report: _Path | None = ..., threads: int | None = ...,
+              max_iterations: int = ...) -> dict[str, Any]: ...
 _Floats = float | Sequence[float] | npt.NDArray[np.floating[Any]]
 def sweep(*, loads_gcm2: _Floats, angles_deg: _Floats, voltages_V: _Floats = ..., speeds_dps: _Floats = ...,
           accel_pct: float = ..., jerk_pct: float = ..., dwell_s: float = ..., tolerance_deg: float = ...,

@@ -28,12 +28,16 @@ def test_master_log_has_one_row_per_cycle(short_log):
 
 def test_calibrate_is_the_cli(short_log, tmp_path):
     fit = ["coulomb_friction"]
-    py = sreh_twin.calibrate(short_log, load_gcm2=2000, fit=fit, out=tmp_path / "py.yaml", max_iterations=3)
+    py = sreh_twin.calibrate(short_log, load_gcm2=2000, fit=fit, out=tmp_path / "py.yaml", report=tmp_path / "py_report",
+                             max_iterations=3)
     js = cli_json("calibrate", short_log, "--load-gcm2", 2000, "--fit", ",".join(fit), "--out", tmp_path / "cli.yaml",
-                  "--max-iterations", 3, expect_exit=(0, 1))
+                  "--report", tmp_path / "cli_report", "--max-iterations", 3, expect_exit=(0, 1))
     model_yaml = py.pop("model_yaml")
     assert py == js
     assert (tmp_path / "py.yaml").read_text() == model_yaml == (tmp_path / "cli.yaml").read_text()
+    page = (tmp_path / "py_report" / "index.html").read_text()
+    assert page == (tmp_path / "cli_report" / "index.html").read_text()
+    assert "coulomb_friction" in page and page.count("<svg") == 2  # position and error of the one log
     c = py["constants"]["coulomb_friction"]
     assert c["ci95"][0] <= c["value"] <= c["ci95"][1] and c["start"] == 0.004
 
