@@ -99,6 +99,7 @@ struct CycleEvaluation : TraceFigures {
 
 struct CycleResult {
   CycleEvaluation evaluation;
+  std::vector<MotionSetting> settings; // per plan set, as evaluated last (given, recommended, slowed down)
   bool recommended = false;       // at least one set was searched
   int simulations = 0;            // twin runs, searches included
   int backoffs = 0;               // A-SIZE-20: times the recommended sets were slowed down

@@ -85,6 +85,7 @@ CycleResult size_cycle(const CycleRequest& rq) {
     result.evaluation = evaluate_cycle(rq, plan, settings, rq.keep_trace);
     ++result.simulations;
   }
+  result.settings = std::move(settings);
   return result;
 }
 

@@ -132,6 +132,11 @@ void refuse_with_cycle(const SizeOptions& a) {
   }
 }
 
+// The card the uncertainty samples: the model card with --model's values and ranges.
+ModelCard card_of(const SizeOptions& a) {
+  return a.model.empty() ? default_model_card() : apply_model_file(default_model_card(), a.model);
+}
+
 SizeOutcome run_cycle(const SizeOptions& a) {
   refuse_with_cycle(a);
   SizeOutcome out;
@@ -157,6 +162,12 @@ SizeOutcome run_cycle(const SizeOptions& a) {
   }
   out.feasible = out.cycle_result.evaluation.feasible;
   out.json = cycle_to_json(rq, out.cycle_result);
+  if (a.uncertainty) {
+    const UncertaintyResult u = cycle_uncertainty(rq, plan_sets(rq), out.cycle_result.settings, card_of(a),
+                                                  out.cycle_result.evaluation, a.samples, static_cast<uint64_t>(a.seed),
+                                                  io::usable_cpus());
+    add_uncertainty_json(out.json, u);
+  }
   io::round_figures(out.json); // issue 29: no float noise
   out.text = cycle_summary_text(rq, out.cycle_result);
   out.cycle = std::move(rq);
@@ -174,7 +185,6 @@ SizeOutcome run_size(const SizeOptions& a) {
   } catch (const io::PathError& e) {
     throw SizingInputError(e.what());
   }
-  if (a.uncertainty && !a.cycle.empty()) throw SizingInputError("--uncertainty: only for one move (--angle-deg), not yet with --cycle");
   if (a.uncertainty && (a.samples < 2 || a.samples > 1000)) {
     throw SizingInputError(fmt::format("--samples {}: expected 2 .. 1000", a.samples));
   }
@@ -199,8 +209,7 @@ SizeOutcome run_size(const SizeOptions& a) {
   out.feasible = out.result.feasible;
   out.json = to_json(out.request, out.result);
   if (a.uncertainty) {
-    const ModelCard card = a.model.empty() ? default_model_card() : apply_model_file(default_model_card(), a.model);
-    const UncertaintyResult u = size_uncertainty(out.request, card, out.result.evaluation, a.samples,
+    const UncertaintyResult u = size_uncertainty(out.request, card_of(a), out.result.evaluation, a.samples,
                                                  static_cast<uint64_t>(a.seed), io::usable_cpus());
     add_uncertainty_json(out.json, u);
   }

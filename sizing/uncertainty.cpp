@@ -56,33 +56,56 @@ std::vector<ModelCard> latin_hypercube_cards(const ModelCard& card, int samples,
   return cards;
 }
 
-UncertaintyResult size_uncertainty(const SizingRequest& request, const ModelCard& card, const Evaluation& nominal,
-                                   int samples, uint64_t seed, int threads) {
+namespace {
+
+// What the bands are made of, for one move or one cycle.
+struct Outcome {
+  bool completed = false;
+  bool feasible = false;
+  double positioning_s = 0, settling_s = 0, peak_torque_Nm = 0, temperature_C = 0;
+  std::optional<double> cycle_s;
+};
+
+Outcome outcome_of(const Evaluation& e) {
+  return {e.completed, e.feasible, e.positioning_s, e.settling_s, e.peak_torque_Nm, e.steady_temperature_C, {}};
+}
+
+// A cycle's times are its worst move's.
+Outcome outcome_of(const CycleEvaluation& e) {
+  Outcome o{e.completed, e.feasible, 0, 0, e.peak_torque_Nm, e.steady_temperature_C, e.cycle_s};
+  for (const SegmentResult& s : e.segments) {
+    if (s.kind != "move") continue;
+    o.positioning_s = std::max(o.positioning_s, s.positioning_s);
+    o.settling_s = std::max(o.settling_s, s.settling_s);
+  }
+  return o;
+}
+
+UncertaintyResult bands(const ModelCard& card, int samples, uint64_t seed, const Outcome& nominal,
+                        const std::vector<Outcome>& outcomes) {
   UncertaintyResult u;
   u.samples = samples;
   u.seed = seed;
   for (const ModelConstant& k : card.constants) {
     if (sampled(k)) u.sampled.push_back(k.name);
   }
-  const std::vector<ModelCard> cards = latin_hypercube_cards(card, samples, seed);
-  std::vector<Evaluation> evaluations(cards.size());
-  io::parallel_for(cards.size(), threads, [&](std::size_t i) {
-    SizingRequest rq = request;
-    rq.module = cards[i].module_model();
-    evaluations[i] = evaluate(rq, nominal.set, false);
-  });
   u.feasible_worst_case = nominal.feasible && nominal.completed;
   // An unfinished move has no times to band: only completed evaluations count.
-  auto add = [&](const Evaluation& e) {
+  auto add = [&](const Outcome& e) {
     if (!e.completed) return;
-    widen(u.positioning_s, e.positioning_s, u.banded == 0);
-    widen(u.settling_s, e.settling_s, u.banded == 0);
-    widen(u.peak_torque_Nm, e.peak_torque_Nm, u.banded == 0);
-    widen(u.max_temperature_C, e.steady_temperature_C, u.banded == 0);
+    const bool first = u.banded == 0;
+    widen(u.positioning_s, e.positioning_s, first);
+    widen(u.settling_s, e.settling_s, first);
+    widen(u.peak_torque_Nm, e.peak_torque_Nm, first);
+    widen(u.max_temperature_C, e.temperature_C, first);
+    if (e.cycle_s) {
+      if (!u.cycle_s) u.cycle_s = Band{};
+      widen(*u.cycle_s, *e.cycle_s, first);
+    }
     ++u.banded;
   };
   add(nominal);
-  for (const Evaluation& e : evaluations) {
+  for (const Outcome& e : outcomes) {
     add(e);
     if (!e.feasible || !e.completed) {
       u.feasible_worst_case = false;
@@ -91,6 +114,33 @@ UncertaintyResult size_uncertainty(const SizingRequest& request, const ModelCard
     if (!e.completed) ++u.incomplete_samples;
   }
   return u;
+}
+
+} // namespace
+
+UncertaintyResult size_uncertainty(const SizingRequest& request, const ModelCard& card, const Evaluation& nominal,
+                                   int samples, uint64_t seed, int threads) {
+  const std::vector<ModelCard> cards = latin_hypercube_cards(card, samples, seed);
+  std::vector<Outcome> outcomes(cards.size());
+  io::parallel_for(cards.size(), threads, [&](std::size_t i) {
+    SizingRequest rq = request;
+    rq.module = cards[i].module_model();
+    outcomes[i] = outcome_of(evaluate(rq, nominal.set, false));
+  });
+  return bands(card, samples, seed, outcome_of(nominal), outcomes);
+}
+
+UncertaintyResult cycle_uncertainty(const CycleRequest& request, const CyclePlan& plan,
+                                    const std::vector<MotionSetting>& settings, const ModelCard& card,
+                                    const CycleEvaluation& nominal, int samples, uint64_t seed, int threads) {
+  const std::vector<ModelCard> cards = latin_hypercube_cards(card, samples, seed);
+  std::vector<Outcome> outcomes(cards.size());
+  io::parallel_for(cards.size(), threads, [&](std::size_t i) {
+    CycleRequest rq = request;
+    rq.module = cards[i].module_model();
+    outcomes[i] = outcome_of(evaluate_cycle(rq, plan, settings, false));
+  });
+  return bands(card, samples, seed, outcome_of(nominal), outcomes);
 }
 
 void add_uncertainty_json(nlohmann::json& json, const UncertaintyResult& u) {
@@ -102,6 +152,7 @@ void add_uncertainty_json(nlohmann::json& json, const UncertaintyResult& u) {
   json["settling_s_range"] = time_band(u.settling_s);
   json["peak_torque_Nm_range"] = band(u.peak_torque_Nm);
   json["max_temperature_C_range"] = band(u.max_temperature_C);
+  if (u.cycle_s) json["cycle_s_range"] = time_band(*u.cycle_s);
   json["feasible_worst_case"] = u.feasible_worst_case;
   json["uncertainty"] = {{"samples", u.samples},
                          {"seed", u.seed},

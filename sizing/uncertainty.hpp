@@ -5,10 +5,12 @@
 // (narrow ranges, calibrate --out) narrows the band. A-SIZE-UNC-1.
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "sizing/cycle.hpp"
 #include "sizing/sizing.hpp"
 #include "twin/model_card.hpp"
 
@@ -24,6 +26,7 @@ struct UncertaintyResult {
   uint64_t seed = 0;
   std::vector<std::string> sampled; // the constants with a range wider than one value
   Band positioning_s, settling_s, peak_torque_Nm, max_temperature_C;
+  std::optional<Band> cycle_s;      // cycles only: the whole cycle's time
   bool feasible_worst_case = false; // every sample feasible
   int infeasible_samples = 0;
   int incomplete_samples = 0;        // a move did not reach Done: left out of the bands
@@ -37,9 +40,16 @@ struct UncertaintyResult {
 UncertaintyResult size_uncertainty(const SizingRequest& request, const ModelCard& card, const Evaluation& nominal,
                                    int samples, uint64_t seed, int threads);
 
+// The same for a cycle (`size --cycle --uncertainty`): the cycle run with
+// the nominal answer's sets on every sampled model; positioning and
+// settling are the worst move's, and the cycle time gets a band too.
+UncertaintyResult cycle_uncertainty(const CycleRequest& request, const CyclePlan& plan,
+                                    const std::vector<MotionSetting>& settings, const ModelCard& card,
+                                    const CycleEvaluation& nominal, int samples, uint64_t seed, int threads);
+
 // `size --json` keys: positioning_s_range, settling_s_range,
 // peak_torque_Nm_range, max_temperature_C_range ([lo, hi]),
-// feasible_worst_case, and `uncertainty` {samples, seed, sampling, sampled, infeasible_samples}.
+// cycle_s_range (cycles), feasible_worst_case, and `uncertainty` {samples, seed, sampling, sampled, infeasible_samples}.
 void add_uncertainty_json(nlohmann::json& json, const UncertaintyResult& u);
 
 // The sampled cards themselves (tests, docs).

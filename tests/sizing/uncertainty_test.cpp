@@ -44,6 +44,30 @@ TEST(Uncertainty, BandsBracketTheNominalAndRepeatWithTheSeed) {
   EXPECT_EQ(a.max_temperature_C.hi, b.max_temperature_C.hi);
 }
 
+// size --cycle --uncertainty: the cycle with the nominal answer's sets on
+// every sampled model; the bands bracket the nominal cycle and repeat.
+TEST(Uncertainty, CycleBandsBracketTheNominalCycle) {
+  const CycleRequest rq = parse_cycle_file(std::string(SREH_SOURCE_DIR) + "/examples/cycles/pick_and_place.yaml");
+  const CycleResult nominal = size_cycle(rq);
+  ASSERT_TRUE(nominal.evaluation.completed);
+  const CyclePlan plan = plan_sets(rq);
+  const auto run = [&](int threads) {
+    return cycle_uncertainty(rq, plan, nominal.settings, default_model_card(), nominal.evaluation, 6, 11, threads);
+  };
+  const UncertaintyResult a = run(2);
+  ASSERT_TRUE(a.cycle_s.has_value());
+  EXPECT_LE(a.cycle_s->lo, nominal.evaluation.cycle_s);
+  EXPECT_GE(a.cycle_s->hi, nominal.evaluation.cycle_s);
+  EXPECT_LE(a.peak_torque_Nm.lo, nominal.evaluation.peak_torque_Nm);
+  EXPECT_GE(a.peak_torque_Nm.hi, nominal.evaluation.peak_torque_Nm);
+  EXPECT_LT(a.peak_torque_Nm.lo, a.peak_torque_Nm.hi);
+  EXPECT_LT(a.max_temperature_C.lo, a.max_temperature_C.hi);
+  const UncertaintyResult b = run(1);
+  EXPECT_EQ(a.cycle_s->hi, b.cycle_s->hi);
+  EXPECT_EQ(a.max_temperature_C.hi, b.max_temperature_C.hi);
+  EXPECT_EQ(a.feasible_worst_case, b.feasible_worst_case);
+}
+
 TEST(Uncertainty, LatinHypercubeHasOneSampleInEveryStratum) {
   const ModelCard& card = default_model_card();
   const auto cards = latin_hypercube_cards(card, 8, 3);
