@@ -179,8 +179,9 @@ bool reports_available() { return true; }
 std::string size_report_html(const SizingRequest& rq, const SizingResult& r) {
   const Evaluation& e = r.evaluation;
   std::string o = page_head(fmt::format("Sizing: {} deg, {:.0f} g cm^2, {:.1f} V", rq.angle_deg, e.load_gcm2, rq.voltage_V));
-  o += fmt::format("<p><span class=\"result {}\">{}</span> {}</p>\n", e.feasible ? "ok" : "bad",
-                   e.feasible ? "FEASIBLE" : "NOT FEASIBLE", xml_escape(e.reason));
+  // The verdict first (issue 29), from the figures the text and JSON print.
+  o += report_parts::verdict_block({&e, r.feasible, r.binding_limit, rq.thermal_margin_K, rq.ambient_C, e.set.setting.speed_dps,
+                                    e.load_gcm2});
   o += "<h2>Numbers (manual 3.5.2 terms)</h2>\n" + numbers_table(rq, r);
   o += "<h2>ISDU writes</h2>\n<pre>";
   for (const IsduWrite& w : e.set.writes) o += xml_escape(isdu_write_line(w)) + "\n";
@@ -214,7 +215,8 @@ std::string size_report_html(const SizingRequest& rq, const SizingResult& r) {
     v.x = p.x;
     v.y = {"velocity", "deg/s", {}, {}};
     v.series = {{"velocity", t, vel, "#1f77b4", 1.5, false}};
-    v.hlines = {{e.set.setting.speed_dps, "set speed", "#d62728", true}, {-e.set.setting.speed_dps, "", "#d62728", true}};
+    v.hlines = {{e.set.setting.speed_dps, fmt::format("set speed +-{:.1f} deg/s", e.set.setting.speed_dps), "#d62728", true},
+                {-e.set.setting.speed_dps, "", "#d62728", true}};
     o += report::figure(v);
     svg::Plot q;
     q.id = "torque";
@@ -223,8 +225,8 @@ std::string size_report_html(const SizingRequest& rq, const SizingResult& r) {
     q.y = {"torque", "N m", {}, {}};
     q.series = {{"torque", t, tq, "#ff7f0e", 1.5, false}};
     const double cap = e.torque_capability_Nm, margin = kTorqueMargin * cap;
-    q.hlines = {{cap, "peak torque", "#d62728", false},  {-cap, "", "#d62728", false},
-                {margin, fmt::format("{:.0f} % margin", 100 * kTorqueMargin), "#9467bd", true},
+    q.hlines = {{cap, fmt::format("peak torque capability +-{:.3f} N m", cap), "#d62728", false},  {-cap, "", "#d62728", false},
+                {margin, fmt::format("{:.0f} % of capability (feasibility limit)", 100 * kTorqueMargin), "#9467bd", true},
                 {-margin, "", "#9467bd", true}};
     o += report::figure(q);
     o += speed_torque_plot(rq, e);
