@@ -29,7 +29,7 @@ p,li{overflow-wrap:anywhere}
 .fig .hint{display:none;color:#666;font-size:11px}.fig.live .hint{display:block}
 .verdict{border:1px solid #ccc;border-radius:6px;padding:8px 14px;margin:12px 0;break-inside:avoid}
 .verdict table.bars{display:table;width:100%;border:none}.verdict table.bars td{border:none;padding:2px 8px;vertical-align:middle}
-.verdict td.bar{width:45%}.verdict .track{position:relative;height:14px;background:#eee;border-radius:3px}
+.verdict td.bar{width:45%}.verdict table.bars td:first-child,.verdict table.bars td:nth-child(3){white-space:nowrap}.verdict .track{position:relative;height:14px;background:#eee;border-radius:3px}
 .verdict .fill{position:absolute;left:0;top:0;bottom:0;border-radius:3px}.verdict .fill.okb{background:#43a047}
 .verdict .fill.warnb{background:#f9a825}.verdict .fill.badb{background:#e53935}
 .verdict .mark{position:absolute;top:-3px;bottom:-3px;width:2px;background:#222}
@@ -140,10 +140,13 @@ DyData dy_data(const svg::Plot& p) {
 // line on the chart named (issue 29).
 std::string dy_key(const svg::Plot& p) {
   std::string key;
+  const auto [lo, hi] = svg::y_extent(p);
   for (const svg::HLine& h : p.hlines) {
     if (h.label.empty()) continue;
-    key += fmt::format("<span class=\"k\"><i style=\"border-top:2px {} {}\"></i>{}</span>", h.dashed ? "dashed" : "solid",
-                       svg::xml_escape(h.color), svg::xml_escape(h.label));
+    // A limit outside the drawn range (it does not stretch the axis) is named with its value, as on the SVG.
+    const std::string off = h.y > hi ? fmt::format(" (&#9650; {:g}, off scale)", h.y) : h.y < lo ? fmt::format(" (&#9660; {:g}, off scale)", h.y) : "";
+    key += fmt::format("<span class=\"k\"><i style=\"border-top:2px {} {}\"></i>{}{}</span>", h.dashed ? "dashed" : "solid",
+                       svg::xml_escape(h.color), svg::xml_escape(h.label), off);
   }
   for (const svg::Band& b : p.bands) {
     if (b.label.empty()) continue;

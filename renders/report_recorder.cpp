@@ -32,7 +32,7 @@ void ReportRecorder::add_check(const ReportCheck& ch) {
   checks_held_ += ch.passed ? 1 : 0;
   // A step inside a repeat checks once per pass under the same number
   // (issue 29: "4.2" twice): its scenario line and the pass tell them apart.
-  const int pass = ++step_passes_[ch.step];
+  const int pass = ++step_passes_[fmt::format("{}@{}", ch.step, ch.line)];
   const std::string where = ch.line > 0 ? fmt::format("line {}", ch.line) : std::string();
   const std::string which = pass > 1 ? fmt::format("{}{}pass {}", where, where.empty() ? "" : ", ", pass) : where;
   check_rows_.stream() << fmt::format(

@@ -144,7 +144,7 @@ struct Frame {
   std::vector<std::string> title_lines;
   struct Item {
     std::string label, color;
-    bool area = false, dashed = false;
+    bool area = false, dashed = false, dot = false;
     double x = 0, y = 0;
   };
   std::vector<Item> legend;
@@ -191,17 +191,17 @@ Frame frame(const Plot& p) {
   // Legend rows above the plot area, wrapped at the SVG's width (issue 29:
   // never on the data, never cut at the right edge).
   double x = f.left, row_y = y + kTextPx + 4;
-  auto add = [&](const std::string& label, const std::string& color, bool area, bool dashed) {
+  auto add = [&](const std::string& label, const std::string& color, bool area, bool dashed, bool dot = false) {
     if (label.empty()) return;
     const double item_w = 24 + text_width(label, kTextPx, false) + 14;
     if (x > f.left && x + item_w > f.w - 4) {
       x = f.left;
       row_y += kTextPx + 5;
     }
-    f.legend.push_back({label, color, area, dashed, x, row_y});
+    f.legend.push_back({label, color, area, dashed, dot, x, row_y});
     x += item_w;
   };
-  for (const Series& s : p.series) add(s.label, s.color, false, s.dashed);
+  for (const Series& s : p.series) add(s.label, s.color, false, s.dashed, s.markers);
   for (const HLine& l : p.hlines) add(l.label, l.color, false, l.dashed);
   for (const Band& b : p.bands) add(b.label, b.color, true, false);
   f.top = (f.legend.empty() ? y : row_y) + 12;
@@ -218,12 +218,14 @@ void draw_axes(std::string& o, const Plot& p, const Frame& f) {
   const auto yt = axis_ticks(f.yr.lo, f.yr.hi, std::max(5, static_cast<int>(f.ph / 40)));
   const double xstep = xt.size() > 1 ? xt[1] - xt[0] : 0, ystep = yt.size() > 1 ? yt[1] - yt[0] : 0;
   for (double t : xt) {
-    // A label at the right edge ends there rather than running past it.
+    // A label at the right edge ends there rather than running past it; one
+    // at the left edge starts at the axis, clear of the lowest y label.
     const std::string label = tick_label(t, xstep);
     const double x = f.px(t), half = text_width(label, kTextPx, false) / 2;
-    const char* anchor = x + half > f.w - 2 ? "end" : "middle";
+    const bool at_right = x + half > f.w - 2, at_left = x - half < f.left - 2;
+    const char* anchor = at_right ? "end" : at_left ? "start" : "middle";
     o += fmt::format(R"(<line x1="{0:.1f}" y1="{1:.1f}" x2="{0:.1f}" y2="{2:.1f}" stroke="#e4e4e4"/><text class="tick" x="{3:.1f}" y="{4:.1f}" text-anchor="{5}">{6}</text>)",
-                     x, f.top, f.top + f.ph, anchor[0] == 'e' ? f.w - 2 : x, f.top + f.ph + 14, anchor, label);
+                     x, f.top, f.top + f.ph, at_right ? f.w - 2 : x, f.top + f.ph + 15, anchor, label);
     o += '\n';
   }
   for (double t : yt) {
@@ -325,6 +327,8 @@ void draw_legend(std::string& o, const Frame& f) {
   for (const Frame::Item& it : f.legend) {
     if (it.area) {
       o += fmt::format(R"(<rect x="{:.1f}" y="{:.1f}" width="18" height="9" fill="{}" fill-opacity="0.35"/>)", it.x, it.y - 8, xml_escape(it.color));
+    } else if (it.dot) { // operating points: dots, as drawn
+      o += fmt::format(R"(<circle cx="{:.1f}" cy="{:.1f}" r="3.5" fill="{}"/>)", it.x + 9, it.y - 4, xml_escape(it.color));
     } else {
       o += fmt::format(R"(<line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}" stroke="{}" stroke-width="2"{}/>)", it.x, it.y - 4, it.x + 18,
                        it.y - 4, xml_escape(it.color), it.dashed ? R"( stroke-dasharray="5 2")" : "");

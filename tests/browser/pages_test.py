@@ -12,7 +12,6 @@ can fail). Skipped (77) without chromium.
 usage: pages_test.py SREH_TWIN SOURCE_DIR"""
 import os
 import shutil
-import subprocess
 import sys
 import tempfile
 import time
@@ -21,6 +20,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, here)
 sys.path.insert(0, os.path.join(here, "..", "serve"))
 from cdp import Cdp, browser_or_skip, fail  # noqa: E402
+from pages import make_pages  # noqa: E402
 
 WIDTHS = (1400, 800)
 CHECK_JS = open(os.path.join(here, "layout_check.js")).read()
@@ -34,31 +34,6 @@ SHOW_STATIC = "document.querySelectorAll('.fig.live').forEach((f) => f.classList
 def check(cond, msg):
     if not cond:
         fail(msg)
-
-
-def make_pages(exe, src, out):
-    """The four report pages, written by the CLI as a user would; returns {name: index.html}."""
-    jobs = {
-        "run": ["run", os.path.join(src, "scenarios", "demo.yaml"), "--quiet"],
-        "size": ["size", "--angle-deg", "90", "--load-gcm2", "2000"],
-        "cycle": ["size", "--cycle", os.path.join(src, "examples", "cycles", "pick_and_place.yaml")],
-        "sweep": ["sweep", "--loads-gcm2", "0,4000,8000", "--angles-deg", "30,90", "--speeds-dps", "1500",
-                  "--csv", os.path.join(out, "sweep.csv")],
-    }
-    procs = {}
-    for name, args in jobs.items():  # two at a time: the machine may be small
-        procs[name] = subprocess.Popen([exe, *args, "--report", os.path.join(out, name)], cwd=src,
-                                       stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-        if len(procs) % 2 == 0:
-            for p in procs.values():
-                p.wait(timeout=300)
-    pages = {}
-    for name, p in procs.items():
-        err = p.communicate(timeout=300)[1]
-        index = os.path.join(out, name, "index.html")
-        check(p.returncode in (0, 1) and os.path.exists(index), "%s: exit %d, no page: %s" % (name, p.returncode, err))
-        pages[name] = "file://" + index
-    return pages
 
 
 def layout_problems(cdp, label):
@@ -94,7 +69,7 @@ def check_the_check_can_fail(cdp, url):
     cdp.evaluate("""(() => {
       const svg = document.getElementById('svg-temperature');
       const t = document.createElementNS('http://www.w3.org/2000/svg', 'text');
-      t.setAttribute('x', '600'); t.setAttribute('y', '30'); t.setAttribute('class', 'broken');
+      t.setAttribute('x', '900'); t.setAttribute('y', '30'); t.setAttribute('class', 'broken');
       t.textContent = 'a deliberately long title that runs far past the right edge of its plot';
       svg.appendChild(t);
       const d = document.createElement('div'); d.id = 'too-wide'; d.style.width = '3000px'; d.textContent = 'x';
