@@ -29,12 +29,13 @@ p,li{overflow-wrap:anywhere}
 .fig .hint{display:none;color:#666;font-size:11px}.fig.live .hint{display:block}
 .verdict{border:1px solid #ccc;border-radius:6px;padding:8px 14px;margin:12px 0;break-inside:avoid}
 .verdict table.bars{display:table;width:100%;border:none}.verdict table.bars td{border:none;padding:2px 8px;vertical-align:middle}
-.verdict td.bar{width:45%}.verdict table.bars td:first-child,.verdict table.bars td:nth-child(3){white-space:nowrap}.verdict .track{position:relative;height:14px;background:#eee;border-radius:3px}
-.verdict .fill{position:absolute;left:0;top:0;bottom:0;border-radius:3px}.verdict .fill.okb{background:#43a047}
-.verdict .fill.warnb{background:#f9a825}.verdict .fill.badb{background:#e53935}
-.verdict .mark{position:absolute;top:-3px;bottom:-3px;width:2px;background:#222}
-.verdict .mark.req{background:#7b1fa2}.verdict dl{display:grid;grid-template-columns:max-content 1fr;gap:2px 14px;margin:8px 0;font-size:13px}
+.verdict td.bar{width:45%}.verdict .track{height:14px}.verdict table.bars td:first-child,.verdict table.bars td:nth-child(3){white-space:nowrap}.verdict dl{display:grid;grid-template-columns:max-content 1fr;gap:2px 14px;margin:8px 0;font-size:13px}
 .verdict dt{color:#555}.verdict dd{margin:0}
+table.verdicts td.mini{min-width:150px;white-space:nowrap}table.verdicts .track{display:inline-block;width:90px;height:10px;margin-right:6px;vertical-align:middle}
+.verdict .track,table.verdicts .track{position:relative;background:#eee;border-radius:3px}
+.verdict .fill,table.verdicts .fill{position:absolute;left:0;top:0;bottom:0;border-radius:3px}
+.fill.okb{background:#43a047}.fill.warnb{background:#f9a825}.fill.badb{background:#e53935}
+.verdict .mark,table.verdicts .mark{position:absolute;top:-3px;bottom:-3px;width:2px;background:#222}.mark.req{background:#7b1fa2!important}
 @media print{.fig.live .dy,.fig.live .hint,.fig.live .dytitle,.fig.live .dylegend,.fig.live .dykey{display:none}.fig.live .static{display:block}}
 )css";
 namespace {

@@ -259,6 +259,14 @@ std::string sweep_report_html(const SweepRequest& rq, const SweepResult& result,
                    result.points.size(), rq.base.dwell_s, rq.base.ambient_C,
                    rq.speeds_dps.empty() ? "recommended set per point"
                                          : fmt::format("given acceleration {} %, jerk {} %", rq.accel_pct, rq.jerk_pct));
+  // Every point's verdict (issue 29), from the figures its CSV row carries.
+  std::vector<std::pair<std::string, report_parts::VerdictInput>> verdicts;
+  for (const SweepPoint& pt : result.points) {
+    const Evaluation& e = pt.result.evaluation;
+    verdicts.push_back({fmt::format("{} deg, {} g cm^2, {:.1f} V, {:.1f} deg/s", pt.angle_deg, pt.load_gcm2, pt.voltage_V, e.set.tidy.speed_dps),
+                        {&e, e.feasible, e.binding_limit, rq.base.thermal_margin_K, rq.base.ambient_C, e.set.tidy.speed_dps, e.load_gcm2}});
+  }
+  o += "<h2>Verdict per point</h2>\n" + report_parts::verdict_table(verdicts, 200);
   const std::vector<SweepGroup> groups = sweep_groups(result);
   std::vector<double> angles;
   for (const SweepPoint& p : result.points) {

@@ -5,6 +5,8 @@
 #if SREH_SIZING_WITH_REPORT
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "renders/svg_plot.hpp"
 #include "sizing/sizing.hpp"
@@ -52,6 +54,10 @@ struct VerdictInput {
 // speed), the binding limit, the thermal and torque margins, the inertia
 // ratio J_load / J_intern and the supply figures (report_verdict.cpp).
 std::string verdict_block(const VerdictInput& in);
+// The sweep's points (it has no page per point), one row each: the answer,
+// the binding limit and the four bars of verdict_block, small; at most
+// `max_rows` rows.
+std::string verdict_table(const std::vector<std::pair<std::string, VerdictInput>>& points, std::size_t max_rows);
 
 } // namespace sreh::sizing::report_parts
 #endif

@@ -116,6 +116,9 @@ def main():
                 cdp.navigate(url, REPORT_READY)
                 if name in ("size", "cycle"):
                     check_sizing_page(cdp, name)
+                if name == "sweep":  # no page per point: a verdict row each
+                    rows = cdp.evaluate("document.querySelectorAll('#verdicts tr td.mini .fill').length")
+                    check(rows == 4 * 6, "sweep page: %s verdict bars, expected 4 for each of 6 points" % rows)
                 problems += layout_problems(cdp, "%s page at %d px" % (name, width))
         for width in WIDTHS:
             problems += check_live_page(cdp, exe, width)

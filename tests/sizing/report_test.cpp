@@ -108,6 +108,16 @@ TEST(Report, SweepReportHasBothPlots) {
   const std::string html = sweep_report_html(rq, r, targets);
   EXPECT_NE(html.find("Positioning time vs load"), std::string::npos);
   EXPECT_NE(html.find("Heaviest load"), std::string::npos);
+  // Issue 29: no page per point, so a verdict row per point, from its CSV row's figures.
+  const std::size_t table = html.find("<table class=\"verdicts\" id=\"verdicts\">");
+  ASSERT_NE(table, std::string::npos);
+  const std::string rows = html.substr(table, html.find("</table>", table) - table);
+  std::size_t n = 0;
+  for (std::size_t a = rows.find("<td class=\"mini\">"); a != std::string::npos; a = rows.find("<td class=\"mini\">", a + 1)) ++n;
+  EXPECT_EQ(n, 4u * r.points.size()); // four bars per point
+  const Evaluation& e = r.points.back().result.evaluation;
+  EXPECT_NE(rows.find(fmt::format("{:.0f} %", e.utilisation.peak_torque_pct)), std::string::npos);
+  EXPECT_NE(rows.find(fmt::format("{:.1f} K", e.utilisation.thermal_margin_K)), std::string::npos);
 }
 
 } // namespace
