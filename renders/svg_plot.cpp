@@ -154,7 +154,7 @@ struct Frame {
   double cy(double y) const { return std::clamp(py(y), top, top + ph); }
 };
 
-constexpr double kTitlePx = 13, kTextPx = 11, kLineGap = 4;
+constexpr double kTitlePx = 14, kTextPx = 12, kLineGap = 4;
 
 // Words of `text` in lines no wider than `width` (a single long word stays whole).
 std::vector<std::string> wrap(const std::string& text, double width, double font_px, bool bold) {

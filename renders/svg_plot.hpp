@@ -65,8 +65,8 @@ struct Plot {
   // The viewBox in user units; on a page the SVG takes the full width and
   // scales (issue 29), so these set the proportions and the text's size
   // relative to the plot. The height grows when the title and legend need it.
-  int width_px = 1000;
-  int height_px = 320;
+  int width_px = 900;
+  int height_px = 300;
 };
 
 // The SVG element (no XML prolog), ready to inline in HTML: the title

@@ -41,7 +41,8 @@ std::string bar(const std::string& id, const std::string& name, double value_pct
                      html_escape(name), track(value_pct, limit_pct), html_escape(value), html_escape(note));
 }
 
-// The four utilisations of verdict_block: {value %, limit %, shown value}.
+// The four bar lengths of verdict_block, in % of their scales, and the
+// thermal bar's own limit.
 struct Bars {
   double peak, rms, thermal, thermal_limit, speed;
 };

@@ -7,6 +7,8 @@
 
 #include <cmath>
 
+#include <fmt/format.h>
+
 #include "renders/svg_plot.hpp"
 
 namespace sreh::svg {
@@ -126,7 +128,7 @@ TEST(SvgPlot, TitleAndLegendWrapAboveThePlotAreaInsideTheViewBox) {
             "with a title long enough to need a second line at any width";
   for (int k = 0; k < 9; ++k) p.series.push_back({"a series with a long legend label " + std::to_string(k), {0, 1}, {0, 1.0 * k}});
   const std::string s = to_svg(p);
-  EXPECT_NE(s.find(R"(viewBox="0 0 1000 )"), std::string::npos);
+  EXPECT_NE(s.find(fmt::format(R"(viewBox="0 0 {} )", p.width_px)), std::string::npos);
   EXPECT_NE(s.find(R"(width="100%")"), std::string::npos);
   EXPECT_GE(count(s, "class=\"title\""), 2u);
   const double plot_top = attr(s, "rect", "y").front(); // the clip rectangle: the plot area
@@ -137,7 +139,7 @@ TEST(SvgPlot, TitleAndLegendWrapAboveThePlotAreaInsideTheViewBox) {
     rows.insert(y);
     EXPECT_LT(y, plot_top) << "legend on the data";
     const std::size_t text = s.find('>', a) + 1;
-    EXPECT_LE(x + text_width(s.substr(text, s.find('<', text) - text), 11), 1000.0) << "legend past the right edge";
+    EXPECT_LE(x + text_width(s.substr(text, s.find('<', text) - text), 12), p.width_px) << "legend past the right edge";
   }
   EXPECT_GE(rows.size(), 3u);
   for (double x : attr(s, "text", "x")) EXPECT_GE(x, 0.0);
@@ -156,7 +158,7 @@ TEST(SvgPlot, MarkerLabelsStayInsideAndApart) {
     ys.push_back(std::stod(s.substr(s.find("y=\"", a) + 3)));
   }
   ASSERT_EQ(xs.size(), 3u);
-  EXPECT_LE(xs[0] + text_width("not completed", 11), 1000.0 - 26 + 1); // inside the plot area
+  EXPECT_LE(xs[0] + text_width("not completed", 12), p.width_px - 26 + 1); // inside the plot area
   EXPECT_NE(ys[1], ys[2]);                                             // stepped down
 }
 
