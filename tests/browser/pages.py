@@ -6,12 +6,13 @@ import subprocess
 from cdp import fail
 
 
-def make_pages(exe, src, out):
-    """The four report pages, written by the CLI as a user would; returns {name: index.html}."""
+def make_pages(exe, src, out, cycle="tests/sizing/data/load_change_cycle.yaml"):
+    """The four report pages, written by the CLI as a user would; returns {name: index.html}.
+    `cycle`: the cycle file, relative to `src` (the default sizes in a fraction of a second)."""
     jobs = {
         "run": ["run", "scenarios/demo.yaml", "--quiet"],  # relative to src: the page shows the command
         "size": ["size", "--angle-deg", "90", "--load-gcm2", "2000"],
-        "cycle": ["size", "--cycle", "examples/cycles/pick_and_place.yaml"],
+        "cycle": ["size", "--cycle", cycle],
         "sweep": ["sweep", "--loads-gcm2", "0,4000,8000", "--angles-deg", "30,90", "--speeds-dps", "1500",
                   "--csv", os.path.join(out, "sweep.csv")],
     }

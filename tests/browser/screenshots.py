@@ -61,7 +61,7 @@ def main():
     tmp = tempfile.mkdtemp()
     cdp = None
     try:
-        pages = make_pages(exe, src, tmp)
+        pages = make_pages(exe, src, tmp, cycle="examples/cycles/pick_and_place.yaml")
         cdp = Cdp(os.path.join(tmp, "profile"), width=WIDTH)
         cdp.open_tab()
         cdp.set_width(WIDTH)
