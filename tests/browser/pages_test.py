@@ -7,10 +7,13 @@ axis label of an interactive plot outside its figure, nothing wider than the
 page; both the interactive and the static (print) rendering of each plot.
 The sizing pages carry the verdict block and the 70 / 75 degC lines. A
 deliberately broken plot and a too-wide element must be reported (the check
-can fail). Skipped (77) without chromium.
+can fail). Printed, the sizing page keeps every plot, table and the verdict
+whole and gives an A4 PDF. Skipped (77) without chromium.
 
 usage: pages_test.py SREH_TWIN SOURCE_DIR"""
+import base64
 import os
+import re
 import shutil
 import sys
 import tempfile
@@ -60,6 +63,27 @@ def check_sizing_page(cdp, name):
     check(got["binding"] and "J_load / J_intern" in got["ratio"], "%s: verdict without binding limit or ratio: %s" % (name, got))
     check(got["warning"] and got["trip"] and got["limits"] >= 2 and got["offscale"] == 0,
           "%s: the temperature plot lacks the 70 / 75 degC lines on scale: %s" % (name, got))
+
+
+def check_print(cdp, url):
+    """Printed (media print): every plot, table and the verdict one unbreakable block, static plots
+    shown instead of the dygraphs, and Chromium makes an A4 PDF of it."""
+    cdp.navigate(url, REPORT_READY)
+    cdp.send("Emulation.setEmulatedMedia", {"media": "print"})
+    got = cdp.evaluate("""(() => {
+      const style = (e) => getComputedStyle(e);
+      const blocks = [...document.querySelectorAll('.fig, svg.plot, table, .verdict')];
+      return {blocks: blocks.length, whole: blocks.filter((e) => style(e).breakInside === 'avoid').length,
+              statics: [...document.querySelectorAll('.fig .static')].filter((e) => style(e).display !== 'none').length,
+              figs: document.querySelectorAll('.fig').length,
+              dygraphs: [...document.querySelectorAll('.fig .dy')].filter((e) => style(e).display !== 'none').length};
+    })()""")
+    check(got["blocks"] > 5 and got["whole"] == got["blocks"], "print: blocks a page break may cut: %s" % got)
+    check(got["statics"] == got["figs"] and got["dygraphs"] == 0, "print: not the static plots: %s" % got)
+    pdf = base64.b64decode(cdp.send("Page.printToPDF", {"preferCSSPageSize": True}, timeout=60)["data"])
+    check(pdf[:5] == b"%PDF-" and re.search(rb"/MediaBox ?\[0 0 59[45]\.?[0-9]* 84[12]", pdf) is not None,  # A4: 595 x 842 pt
+          "print: no A4 PDF (%d bytes)" % len(pdf))
+    cdp.send("Emulation.setEmulatedMedia", {"media": ""})
 
 
 def check_the_check_can_fail(cdp, url):
@@ -125,6 +149,7 @@ def main():
         check(not problems, "%d layout problems:\n  %s" % (len(problems), "\n  ".join(problems[:40])))
         console = cdp.problems()
         check(not console, "console errors: %s" % str(console)[:2000])
+        check_print(cdp, pages["size"])
         check_the_check_can_fail(cdp, pages["size"])
     finally:
         if cdp:
