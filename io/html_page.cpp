@@ -2,6 +2,19 @@
 
 namespace sreh::io {
 
+// Every page prints as a clean A4 PDF from a browser (issue 29): each plot,
+// table and verdict is one block that a page break never cuts, headings stay
+// with what follows, plots fit the paper's width.
+const char* const kPrintCss =
+    "<style media=\"print\">\n"
+    "@page{size:A4;margin:12mm}\n"
+    "body{max-width:none;margin:0;padding:0}\n"
+    ".fig,svg,table,pre,.verdict,.port,figure,img,tr{break-inside:avoid;page-break-inside:avoid}\n"
+    "h1,h2,h3{break-after:avoid;page-break-after:avoid}\n"
+    "svg,img,canvas{max-width:100%!important;height:auto}\n"
+    "button,input,video,.hint{display:none!important}\n"
+    "</style>\n";
+
 std::string html_escape(std::string_view text) {
   std::string out;
   out.reserve(text.size());
@@ -23,6 +36,7 @@ std::string html_page_open(std::string_view title, std::string_view head) {
   o += html_escape(title);
   o += "</title>\n";
   o += head;
+  o += kPrintCss;
   o += "</head>\n<body>\n";
   return o;
 }

@@ -14,7 +14,12 @@ namespace sreh::io {
 // Text for HTML/XML content and attribute values: & < > " ' escaped.
 std::string html_escape(std::string_view text);
 
-// "<!DOCTYPE html>...<title>TITLE</title>\n" + head + "</head>\n<body>\n".
+// The print stylesheet every page carries (A4, no plot or table cut by a
+// page break), after the page's own <head> content.
+extern const char* const kPrintCss;
+
+// "<!DOCTYPE html>...<title>TITLE</title>\n" + head + kPrintCss +
+// "</head>\n<body>\n".
 // `title` is plain text (escaped here); `head` is markup (<style>, <link>,
 // <script>), each element ending its own line.
 std::string html_page_open(std::string_view title, std::string_view head);

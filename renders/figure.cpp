@@ -11,21 +11,33 @@
 namespace sreh::report {
 
 const char* const kPageCss = R"css(
-body{font-family:system-ui,-apple-system,"Segoe UI",sans-serif;margin:24px auto;max-width:1100px;color:#222;padding:0 16px}
-h1{font-size:22px;margin-bottom:4px}h2{font-size:17px;margin-top:28px;border-bottom:1px solid #ddd;padding-bottom:4px}
+body{font-family:system-ui,-apple-system,"Segoe UI",sans-serif;margin:24px auto;max-width:1240px;color:#222;padding:0 16px}
+h1{font-size:22px;margin-bottom:4px;overflow-wrap:anywhere}h2{font-size:17px;margin-top:28px;border-bottom:1px solid #ddd;padding-bottom:4px}
 .result{display:inline-block;padding:3px 12px;border-radius:4px;font-weight:bold;color:#fff}
 .pass,.ok{background:#2e7d32}.fail,.bad{background:#c62828}
-table{border-collapse:collapse;font-size:13px}td,th{border:1px solid #ccc;padding:3px 8px;text-align:right}
+table{border-collapse:collapse;font-size:13px;display:block;overflow-x:auto;max-width:100%}td,th{border:1px solid #ccc;padding:3px 8px;text-align:right}
 th{background:#f2f2f2}td.l,th.l{text-align:left}td.okc{color:#2e7d32;font-weight:bold}td.badc{color:#c62828;font-weight:bold}
-svg.plot{display:block;margin:10px 0;max-width:100%;height:auto}video,img.video{max-width:100%;background:#000}
-pre,code.cmd{background:#f7f7f7;padding:6px 8px;font-size:13px;overflow-x:auto;display:block;white-space:pre-wrap}
+svg.plot{display:block;margin:10px 0;width:100%;height:auto}video,img.video{max-width:100%;height:auto;background:#000}
+pre,code.cmd{background:#f7f7f7;padding:6px 8px;font-size:13px;overflow-x:auto;display:block;white-space:pre-wrap;overflow-wrap:anywhere}
+p,li{overflow-wrap:anywhere}
 .note{color:#666;font-size:12px}ul.failed li{color:#c62828;margin:3px 0}
-.fig{margin:12px 0}.fig .dy{display:none;width:760px;max-width:100%;height:300px}
-.fig.live .dy{display:block}.fig.live .static{display:none}
+.fig{margin:12px 0}.fig .dy{display:none;width:100%;height:340px}
+.fig .dytitle,.fig .dylegend,.fig .dykey{display:none;font-size:13px}.fig .dytitle{font-weight:bold;font-size:14px;margin:4px 0}
+.fig .dylegend{min-height:1.3em}.fig .dykey span.k{margin-right:14px;white-space:nowrap}
+.fig .dykey i{display:inline-block;width:18px;vertical-align:middle;margin-right:4px}
+.fig.live .dy,.fig.live .dytitle,.fig.live .dylegend,.fig.live .dykey{display:block}.fig.live .static{display:none}
 .fig .hint{display:none;color:#666;font-size:11px}.fig.live .hint{display:block}
-@media print{.fig.live .dy,.fig.live .hint{display:none}.fig.live .static{display:block}video{display:none}}
+.verdict{border:1px solid #ccc;border-radius:6px;padding:8px 14px;margin:12px 0;break-inside:avoid}
+.verdict table.bars{display:table;width:100%;border:none}.verdict table.bars td{border:none;padding:2px 8px;vertical-align:middle}
+.verdict td.bar{width:45%}.verdict .track{height:14px}.verdict table.bars td:first-child,.verdict table.bars td:nth-child(3){white-space:nowrap}.verdict dl{display:grid;grid-template-columns:max-content 1fr;gap:2px 14px;margin:8px 0;font-size:13px}
+.verdict dt{color:#555}.verdict dd{margin:0}
+table.verdicts td.mini{min-width:150px;white-space:nowrap}table.verdicts .track{display:inline-block;width:90px;height:10px;margin-right:6px;vertical-align:middle}
+.verdict .track,table.verdicts .track{position:relative;background:#eee;border-radius:3px}
+.verdict .fill,table.verdicts .fill{position:absolute;left:0;top:0;bottom:0;border-radius:3px}
+.fill.okb{background:#43a047}.fill.warnb{background:#f9a825}.fill.badb{background:#e53935}
+.verdict .mark,table.verdicts .mark{position:absolute;top:-3px;bottom:-3px;width:2px;background:#222}.mark.req{background:#7b1fa2!important}
+@media print{.fig.live .dy,.fig.live .hint,.fig.live .dytitle,.fig.live .dylegend,.fig.live .dykey{display:none}.fig.live .static{display:block}}
 )css";
-
 namespace {
 
 constexpr const char* kHelperJs = R"js(
@@ -34,10 +46,13 @@ function srehPlot(id, s) {
   el.parentNode.classList.add('live'); // laid out before dygraphs measures it
   var series = {};
   var fmt = function (v) { return String(+v.toPrecision(6)); };
-  s.dashed.forEach(function (d, i) { if (d) series[s.labels[i + 1]] = {strokePattern: [6, 3]}; });
+  s.dashed.forEach(function (d, i) { if (d) series[s.labels[i + 1]] = {strokePattern: [7, 4], strokeWidth: 2}; });
+  // Title, legend and the key of the limit lines are HTML outside the chart
+  // (issue 29): they wrap instead of colliding with the data or each other.
   new Dygraph(el, s.data, {
-    labels: s.labels, colors: s.colors, title: s.title, xlabel: s.xlabel, ylabel: s.ylabel,
-    legend: 'always', labelsSeparateLines: false, strokeWidth: 1.3, series: series,
+    labels: s.labels, colors: s.colors, xlabel: s.xlabel, ylabel: s.ylabel,
+    labelsDiv: document.getElementById(id + '-legend'), legend: 'always', labelsSeparateLines: false,
+    strokeWidth: 1.3, series: series, valueRange: s.yrange, dateWindow: s.xrange,
     axes: {x: {axisLabelFormatter: fmt, valueFormatter: fmt}, y: {axisLabelWidth: 70, axisLabelFormatter: fmt, valueFormatter: fmt}},
     underlayCallback: function (ctx, area, g) {
       s.bands.forEach(function (b) {
@@ -46,7 +61,7 @@ function srehPlot(id, s) {
         ctx.globalAlpha = b[5]; ctx.fillStyle = b[4]; ctx.fillRect(x0, y0, x1 - x0, y1 - y0); ctx.globalAlpha = 1;
       });
       s.hlines.forEach(function (h) {
-        var y = g.toDomYCoord(h[0]); ctx.strokeStyle = h[1]; ctx.setLineDash([6, 4]);
+        var y = g.toDomYCoord(h[0]); ctx.strokeStyle = h[1]; ctx.lineWidth = 1.2; ctx.setLineDash(h[2] ? [6, 4] : []);
         ctx.beginPath(); ctx.moveTo(area.x, y); ctx.lineTo(area.x + area.w, y); ctx.stroke(); ctx.setLineDash([]);
       });
     }
@@ -84,59 +99,99 @@ std::string interactive_head() {
 
 std::string page_head() { return fmt::format("<style>{}</style>\n{}", kPageCss, interactive_head()); }
 
+namespace {
+
+// The dygraph's data: the min/max decimation of every series over ~1500
+// columns, as JSON rows [x, y1, y2, ...]; labels made unique.
+struct DyData {
+  std::string labels, colors, dashed, rows;
+};
+
+DyData dy_data(const svg::Plot& p) {
+  const std::vector<double>& x = p.series.front().x;
+  const auto [lo, hi] = svg::x_extent(p);
+  std::set<std::size_t> keep;
+  for (const svg::Series& s : p.series) {
+    for (std::size_t i : svg::decimate_min_max(x, s.y, lo, hi, 1500)) keep.insert(i);
+  }
+  DyData d;
+  d.labels = js_string(axis_title(p.x));
+  std::set<std::string> seen;
+  for (std::size_t k = 0; k < p.series.size(); ++k) {
+    // An unlabelled series is the other side of the one before (e.g. -limit).
+    std::string label = !p.series[k].label.empty() ? p.series[k].label
+                        : k > 0 && !p.series[k - 1].label.empty() ? p.series[k - 1].label + " (-)"
+                                                                 : fmt::format("({})", k + 1);
+    while (!seen.insert(label).second) label.push_back('\'');
+    d.labels.append(",").append(js_string(label));
+    if (k) d.colors.append(","), d.dashed.append(",");
+    d.colors.append(js_string(p.series[k].color));
+    d.dashed.append(p.series[k].dashed ? "true" : "false");
+  }
+  for (std::size_t i : keep) {
+    if (!d.rows.empty()) d.rows += ',';
+    d.rows.append("[").append(num(x[i]));
+    for (const svg::Series& s : p.series) d.rows.append(",").append(num(s.y[i]));
+    d.rows.append("]");
+  }
+  return d;
+}
+
+// The key of the limit lines and bands under the dygraph's legend: every
+// line on the chart named (issue 29).
+std::string dy_key(const svg::Plot& p) {
+  std::string key;
+  const auto [lo, hi] = svg::y_extent(p);
+  for (const svg::HLine& h : p.hlines) {
+    if (h.label.empty()) continue;
+    // A limit outside the drawn range (it does not stretch the axis) is named with its value, as on the SVG.
+    const std::string off = h.y > hi ? fmt::format(" (&#9650; {:g}, off scale)", h.y) : h.y < lo ? fmt::format(" (&#9660; {:g}, off scale)", h.y) : "";
+    key += fmt::format("<span class=\"k\"><i style=\"border-top:2px {} {}\"></i>{}{}</span>", h.dashed ? "dashed" : "solid",
+                       svg::xml_escape(h.color), svg::xml_escape(h.label), off);
+  }
+  for (const svg::Band& b : p.bands) {
+    if (b.label.empty()) continue;
+    key += fmt::format("<span class=\"k\"><i style=\"height:9px;background:{};opacity:0.4\"></i>{}</span>",
+                       svg::xml_escape(b.color), svg::xml_escape(b.label));
+  }
+  return key;
+}
+
+std::string dy_script(const svg::Plot& p, const std::string& id) {
+  const DyData d = dy_data(p);
+  std::string hlines, bands;
+  for (const svg::HLine& h : p.hlines) {
+    if (!hlines.empty()) hlines.append(",");
+    hlines.append(fmt::format("[{},{},{}]", num(h.y), js_string(h.color), h.dashed ? "true" : "false"));
+  }
+  for (const svg::Band& b : p.bands) {
+    if (!bands.empty()) bands.append(",");
+    bands.append(fmt::format("[{},{},{},{},{},{}]", opt(b.x_lo), opt(b.x_hi), opt(b.y_lo), opt(b.y_hi), js_string(b.color), num(b.opacity)));
+  }
+  const auto [x_lo, x_hi] = svg::x_extent(p);
+  const auto [y_lo, y_hi] = svg::y_extent(p); // the SVG's range: limit lines stay on the chart
+  return fmt::format("<script>srehPlot(\"{}\",{{xlabel:{},ylabel:{},labels:[{}],colors:[{}],dashed:[{}],"
+                     "xrange:[{},{}],yrange:[{},{}],hlines:[{}],bands:[{}],data:[{}]}});</script>\n",
+                     id, js_string(axis_title(p.x)), js_string(axis_title(p.y)), d.labels, d.colors, d.dashed, num(x_lo), num(x_hi),
+                     num(y_lo), num(y_hi), hlines, bands, d.rows);
+}
+
+} // namespace
+
 std::string figure(const svg::Plot& p, bool interactive) {
   bool shared_x = interactive && !p.series.empty();
   for (const svg::Series& s : p.series) {
     shared_x = shared_x && !s.markers && s.x == p.series.front().x && s.y.size() == s.x.size();
   }
   std::string o = fmt::format("<div class=\"fig\" id=\"fig-{}\">\n", svg::xml_escape(p.id));
+  const std::string id = "dy-" + svg::xml_escape(p.id);
   if (shared_x) {
-    const std::string id = "dy-" + svg::xml_escape(p.id);
+    o += fmt::format("<div class=\"dytitle\">{}</div><div class=\"dylegend\" id=\"{}-legend\"></div><div class=\"dykey\">{}</div>\n",
+                     svg::xml_escape(p.title), id, dy_key(p));
     o += fmt::format("<div class=\"dy\" id=\"{}\"></div><div class=\"hint\">drag to zoom, shift-drag to pan, double-click to reset</div>\n", id);
   }
   o += "<div class=\"static\">" + svg::to_svg(p) + "</div>\n";
-  if (shared_x) {
-    // Rows kept: the min/max decimation of every series over ~1500 columns.
-    const std::vector<double>& x = p.series.front().x;
-    const double lo = p.x.min.value_or(x.empty() ? 0.0 : x.front()), hi = p.x.max.value_or(x.empty() ? 1.0 : x.back());
-    std::set<std::size_t> rows;
-    for (const svg::Series& s : p.series) {
-      for (std::size_t i : svg::decimate_min_max(x, s.y, lo, hi, 1500)) rows.insert(i);
-    }
-    std::string labels = js_string(axis_title(p.x)), colors, dashed, data;
-    std::set<std::string> seen;
-    for (std::size_t k = 0; k < p.series.size(); ++k) {
-      // An unlabelled series is the other side of the one before (e.g. -limit).
-      std::string label = !p.series[k].label.empty() ? p.series[k].label
-                          : k > 0 && !p.series[k - 1].label.empty() ? p.series[k - 1].label + " (-)"
-                                                                   : fmt::format("({})", k + 1);
-      while (!seen.insert(label).second) label.push_back('\'');
-      labels.append(",").append(js_string(label));
-      if (k) colors.append(","), dashed.append(",");
-      colors.append(js_string(p.series[k].color));
-      dashed.append(p.series[k].dashed ? "true" : "false");
-    }
-    for (std::size_t i : rows) {
-      if (!data.empty()) data += ',';
-      data.append("[").append(num(x[i]));
-      for (const svg::Series& s : p.series) data.append(",").append(num(s.y[i]));
-      data.append("]");
-    }
-    std::string hlines, bands;
-    for (const svg::HLine& h : p.hlines) {
-      if (!hlines.empty()) hlines.append(",");
-      hlines.append(fmt::format("[{},{}]", num(h.y), js_string(h.color)));
-    }
-    for (const svg::Band& b : p.bands) {
-      if (!bands.empty()) bands.append(",");
-      bands.append(fmt::format("[{},{},{},{},{},{}]", opt(b.x_lo), opt(b.x_hi), opt(b.y_lo), opt(b.y_hi),
-                               js_string(b.color), num(b.opacity)));
-    }
-    o += fmt::format("<script>srehPlot(\"dy-{}\",{{title:{},xlabel:{},ylabel:{},labels:[{}],colors:[{}],dashed:[{}],"
-                     "hlines:[{}],bands:[{}],data:[{}]}});</script>\n",
-                     svg::xml_escape(p.id), js_string(p.title), js_string(axis_title(p.x)), js_string(axis_title(p.y)), labels,
-                     colors, dashed, hlines, bands, data);
-  }
+  if (shared_x) o += dy_script(p, id);
   return o + "</div>\n";
 }
 

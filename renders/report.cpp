@@ -147,7 +147,9 @@ std::string overview_plots(const ReportSummary& in, const Columns& c) {
   std::string out;
   {
     svg::Plot p = time_plot("p-position", "Setpoint and actual position", "position", "deg");
-    p.series = {{"setpoint (A)", c.t, c.setpoint, kSetpointColor, 1.5, false}, {"actual (B)", c.t, c.position, kActualColor, 1.2, false}};
+    // The setpoint dashed and wider under the actual (issue 29): both stay visible where they coincide.
+    p.series = {{"setpoint (A), dashed", c.t, c.setpoint, kSetpointColor, 2.2, true},
+                {"actual (B)", c.t, c.position, kActualColor, 1.2, false}};
     out += report::figure(p);
   }
   {
@@ -226,7 +228,7 @@ std::string settling_plot(ReportRecorder& run, const MoveRecord& mv, std::size_t
                         mv.parameter_set);
   p.x = {"time", "s", x_lo, x_hi};
   p.y = {"deviation from target", "deg", -y_half, y_half};
-  p.series = {{"setpoint - target (A)", c.t, dev_setpoint, kSetpointColor, 1.5, false},
+  p.series = {{"setpoint - target (A), dashed", c.t, dev_setpoint, kSetpointColor, 2.2, true},
               {"actual - target (B)", c.t, dev_actual, kActualColor, 1.4, false}};
   if (tol > 0) {
     p.bands.push_back({{}, {}, -tol, tol, fmt::format("tolerance window (5) +-{:.3g} deg", tol), "#2ca02c", 0.14});

@@ -30,14 +30,19 @@ void ReportRecorder::add_row(const TraceRow& row) {
 void ReportRecorder::add_check(const ReportCheck& ch) {
   ++checks_;
   checks_held_ += ch.passed ? 1 : 0;
+  // A step inside a repeat checks once per pass under the same number
+  // (issue 29: "4.2" twice): its scenario line and the pass tell them apart.
+  const int pass = ++step_passes_[fmt::format("{}@{}", ch.step, ch.line)];
+  const std::string where = ch.line > 0 ? fmt::format("line {}", ch.line) : std::string();
+  const std::string which = pass > 1 ? fmt::format("{}{}pass {}", where, where.empty() ? "" : ", ", pass) : where;
   check_rows_.stream() << fmt::format(
-      "<tr><td>{}</td><td class=\"l\">{}</td><td class=\"l\">{}</td><td class=\"{}\">{}</td></tr>\n", html_escape(ch.step),
-      html_escape(ch.description), html_escape(ch.actual), ch.passed ? "okc" : "badc", ch.passed ? "pass" : "FAIL");
+      "<tr><td>{}{}</td><td class=\"l\">{}</td><td class=\"l\">{}</td><td class=\"{}\">{}</td></tr>\n", html_escape(ch.step),
+      which.empty() ? std::string() : " <span class=\"note\">(" + which + ")</span>", html_escape(ch.description),
+      html_escape(ch.actual), ch.passed ? "okc" : "badc", ch.passed ? "pass" : "FAIL");
   if (ch.passed) return;
   failed_items_.stream() << fmt::format("<li>step {}{}: {} &mdash; got {} at t = {:.3f} s</li>\n", html_escape(ch.step),
-                                        ch.line > 0 ? fmt::format(" (line {})", ch.line) : std::string(),
-                                        html_escape(ch.description), html_escape(ch.actual.empty() ? "-" : ch.actual),
-                                        ch.t_s);
+                                        which.empty() ? std::string() : " (" + which + ")", html_escape(ch.description),
+                                        html_escape(ch.actual.empty() ? "-" : ch.actual), ch.t_s);
 }
 
 void ReportRecorder::add_move(const MoveRecord& m) {

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <iosfwd>
+#include <map>
 #include <span>
 #include <string>
 #include <vector>
@@ -67,6 +68,7 @@ class ReportRecorder {
   io::Spool trace_, check_rows_, failed_items_, move_rows_;
   std::size_t rows_ = 0, checks_ = 0, checks_held_ = 0, moves_ = 0, moves_completed_ = 0;
   std::vector<MoveRecord> zoomed_moves_;
+  std::map<std::string, int> step_passes_; // checks seen per step number and line (a repeat's passes)
 };
 
 } // namespace sreh

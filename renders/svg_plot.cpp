@@ -107,20 +107,17 @@ struct Range {
   }
 };
 
-std::string axis_title(const Axis& a) { return a.unit.empty() ? a.label : fmt::format("{} [{}]", a.label, a.unit); }
-
-} // namespace
-
-std::string to_svg(const Plot& p) {
-  const double left = 70, right = 18, top = 46, bottom = 44;
-  const double w = p.width_px, h = p.height_px;
-  const double pw = w - left - right, ph = h - top - bottom;
-
-  Range xr, yr;
+Range x_range(const Plot& p) {
+  Range xr;
   for (const Series& s : p.series)
     for (double v : s.x) xr.add(v);
   for (const VLine& v : p.vlines) xr.add(v.x);
   xr.settle(p.x.min, p.x.max, 0.0);
+  return xr;
+}
+
+Range y_range(const Plot& p, const Range& xr) {
+  Range yr;
   for (const Series& s : p.series) {
     const std::size_t n = std::min(s.x.size(), s.y.size());
     for (std::size_t i = 0; i < n; ++i)
@@ -133,121 +130,258 @@ std::string to_svg(const Plot& p) {
     if (b.y_hi) yr.add(*b.y_hi);
   }
   yr.settle(p.y.min, p.y.max, 0.06);
+  return yr;
+}
 
-  auto px = [&](double x) { return left + (x - xr.lo) / (xr.hi - xr.lo) * pw; };
-  auto py = [&](double y) { return top + (yr.hi - y) / (yr.hi - yr.lo) * ph; };
-  auto cx = [&](double x) { return std::clamp(px(x), left, left + pw); };
-  auto cy = [&](double y) { return std::clamp(py(y), top, top + ph); };
+std::string axis_title(const Axis& a) { return a.unit.empty() ? a.label : fmt::format("{} [{}]", a.label, a.unit); }
 
-  std::string o;
-  o += fmt::format(R"(<svg xmlns="http://www.w3.org/2000/svg" class="plot" width="{}" height="{}" viewBox="0 0 {} {}" font-family="sans-serif" font-size="11">)",
-                   p.width_px, p.height_px, p.width_px, p.height_px);
-  o += '\n';
-  const std::string clip = xml_escape(p.id) + "-clip";
-  o += fmt::format(R"(<defs><clipPath id="{}"><rect x="{:.1f}" y="{:.1f}" width="{:.1f}" height="{:.1f}"/></clipPath></defs>)", clip,
-                   left, top, pw, ph);
-  o += '\n';
-  o += fmt::format(R"(<text x="{:.1f}" y="15" font-size="13" font-weight="bold">{}</text>)", left, xml_escape(p.title));
-  o += '\n';
-  o += fmt::format(R"(<rect x="{:.1f}" y="{:.1f}" width="{:.1f}" height="{:.1f}" fill="#fcfcfc" stroke="#999"/>)", left, top, pw, ph);
-  o += '\n';
+// Everything of one plot in SVG user units: the ranges, the plot area, the
+// title's lines and the legend's rows, all inside the viewBox (issue 29: no
+// clipped text at any page width, since the SVG only scales).
+struct Frame {
+  Range xr, yr;
+  double w = 0, h = 0, left = 74, right = 26, top = 0, bottom = 44, pw = 0, ph = 0;
+  std::vector<std::string> title_lines;
+  struct Item {
+    std::string label, color;
+    bool area = false, dashed = false, dot = false;
+    double x = 0, y = 0;
+  };
+  std::vector<Item> legend;
+  double px(double x) const { return left + (x - xr.lo) / (xr.hi - xr.lo) * pw; }
+  double py(double y) const { return top + (yr.hi - y) / (yr.hi - yr.lo) * ph; }
+  double cx(double x) const { return std::clamp(px(x), left, left + pw); }
+  double cy(double y) const { return std::clamp(py(y), top, top + ph); }
+};
 
-  // Grid and ticks.
-  const auto xt = axis_ticks(xr.lo, xr.hi, std::max(5, static_cast<int>(pw / 90)));
-  const auto yt = axis_ticks(yr.lo, yr.hi, std::max(5, static_cast<int>(ph / 40)));
+constexpr double kTitlePx = 14, kTextPx = 12, kLineGap = 4;
+
+// Words of `text` in lines no wider than `width` (a single long word stays whole).
+std::vector<std::string> wrap(const std::string& text, double width, double font_px, bool bold) {
+  std::vector<std::string> lines;
+  std::string line, word;
+  auto flush_word = [&] {
+    if (word.empty()) return;
+    const std::string joined = line.empty() ? word : line + " " + word;
+    if (!line.empty() && text_width(joined, font_px, bold) > width) {
+      lines.push_back(line);
+      line = word;
+    } else {
+      line = joined;
+    }
+    word.clear();
+  };
+  for (char c : text) {
+    if (c == ' ') flush_word();
+    else word.push_back(c);
+  }
+  flush_word();
+  if (!line.empty()) lines.push_back(line);
+  return lines;
+}
+
+Frame frame(const Plot& p) {
+  Frame f;
+  f.w = p.width_px;
+  f.h = p.height_px;
+  f.xr = x_range(p);
+  f.yr = y_range(p, f.xr);
+  f.title_lines = wrap(p.title, f.w - 16, kTitlePx, true);
+  double y = 4 + (kTitlePx + kLineGap) * static_cast<double>(f.title_lines.size());
+  // Legend rows above the plot area, wrapped at the SVG's width (issue 29:
+  // never on the data, never cut at the right edge).
+  double x = f.left, row_y = y + kTextPx + 4;
+  auto add = [&](const std::string& label, const std::string& color, bool area, bool dashed, bool dot = false) {
+    if (label.empty()) return;
+    const double item_w = 24 + text_width(label, kTextPx, false) + 14;
+    if (x > f.left && x + item_w > f.w - 4) {
+      x = f.left;
+      row_y += kTextPx + 5;
+    }
+    f.legend.push_back({label, color, area, dashed, dot, x, row_y});
+    x += item_w;
+  };
+  for (const Series& s : p.series) add(s.label, s.color, false, s.dashed, s.markers);
+  for (const HLine& l : p.hlines) add(l.label, l.color, false, l.dashed);
+  for (const Band& b : p.bands) add(b.label, b.color, true, false);
+  f.top = (f.legend.empty() ? y : row_y) + 12;
+  f.h = std::max(f.h, f.top + f.bottom + 120); // a tall header does not squash the data
+  f.pw = f.w - f.left - f.right;
+  f.ph = f.h - f.top - f.bottom;
+  return f;
+}
+
+void draw_axes(std::string& o, const Plot& p, const Frame& f) {
+  o += fmt::format(R"(<rect x="{:.1f}" y="{:.1f}" width="{:.1f}" height="{:.1f}" fill="#fcfcfc" stroke="#999"/>)", f.left, f.top, f.pw, f.ph);
+  o += '\n';
+  const auto xt = axis_ticks(f.xr.lo, f.xr.hi, std::max(5, static_cast<int>(f.pw / 90)));
+  const auto yt = axis_ticks(f.yr.lo, f.yr.hi, std::max(5, static_cast<int>(f.ph / 40)));
   const double xstep = xt.size() > 1 ? xt[1] - xt[0] : 0, ystep = yt.size() > 1 ? yt[1] - yt[0] : 0;
   for (double t : xt) {
-    o += fmt::format(R"(<line x1="{0:.1f}" y1="{1:.1f}" x2="{0:.1f}" y2="{2:.1f}" stroke="#e4e4e4"/><text x="{0:.1f}" y="{3:.1f}" text-anchor="middle">{4}</text>)",
-                     px(t), top, top + ph, top + ph + 14, tick_label(t, xstep));
+    // A label at the right edge ends there rather than running past it; one
+    // at the left edge starts at the axis, clear of the lowest y label.
+    const std::string label = tick_label(t, xstep);
+    const double x = f.px(t), half = text_width(label, kTextPx, false) / 2;
+    const bool at_right = x + half > f.w - 2, at_left = x - half < f.left - 2;
+    const char* anchor = at_right ? "end" : at_left ? "start" : "middle";
+    o += fmt::format(R"(<line x1="{0:.1f}" y1="{1:.1f}" x2="{0:.1f}" y2="{2:.1f}" stroke="#e4e4e4"/><text class="tick" x="{3:.1f}" y="{4:.1f}" text-anchor="{5}">{6}</text>)",
+                     x, f.top, f.top + f.ph, at_right ? f.w - 2 : x, f.top + f.ph + 15, anchor, label);
     o += '\n';
   }
   for (double t : yt) {
-    o += fmt::format(R"(<line x1="{0:.1f}" y1="{1:.1f}" x2="{2:.1f}" y2="{1:.1f}" stroke="#e4e4e4"/><text x="{3:.1f}" y="{4:.1f}" text-anchor="end">{5}</text>)",
-                     left, py(t), left + pw, left - 5, py(t) + 4, tick_label(t, ystep));
+    o += fmt::format(R"(<line x1="{0:.1f}" y1="{1:.1f}" x2="{2:.1f}" y2="{1:.1f}" stroke="#e4e4e4"/><text class="tick" x="{3:.1f}" y="{4:.1f}" text-anchor="end">{5}</text>)",
+                     f.left, f.py(t), f.left + f.pw, f.left - 5, f.py(t) + 4, tick_label(t, ystep));
     o += '\n';
   }
-  o += fmt::format(R"(<text x="{:.1f}" y="{:.1f}" text-anchor="middle">{}</text>)", left + pw / 2, h - 8, xml_escape(axis_title(p.x)));
-  o += fmt::format(R"~(<text transform="translate(14 {:.1f}) rotate(-90)" text-anchor="middle">{}</text>)~", top + ph / 2,
+  o += fmt::format(R"(<text x="{:.1f}" y="{:.1f}" text-anchor="middle">{}</text>)", f.left + f.pw / 2, f.h - 8, xml_escape(axis_title(p.x)));
+  o += fmt::format(R"~(<text transform="translate(14 {:.1f}) rotate(-90)" text-anchor="middle">{}</text>)~", f.top + f.ph / 2,
                    xml_escape(axis_title(p.y)));
   o += '\n';
+}
 
-  o += fmt::format(R"~(<g clip-path="url(#{})">)~", clip);
-  o += '\n';
+void draw_limits(std::string& o, const Plot& p, const Frame& f) {
   for (const Band& b : p.bands) {
-    const double x0 = b.x_lo ? cx(*b.x_lo) : left, x1 = b.x_hi ? cx(*b.x_hi) : left + pw;
-    const double y0 = b.y_hi ? cy(*b.y_hi) : top, y1 = b.y_lo ? cy(*b.y_lo) : top + ph;
+    const double x0 = b.x_lo ? f.cx(*b.x_lo) : f.left, x1 = b.x_hi ? f.cx(*b.x_hi) : f.left + f.pw;
+    const double y0 = b.y_hi ? f.cy(*b.y_hi) : f.top, y1 = b.y_lo ? f.cy(*b.y_lo) : f.top + f.ph;
     o += fmt::format(R"(<rect class="band" x="{:.1f}" y="{:.1f}" width="{:.1f}" height="{:.1f}" fill="{}" fill-opacity="{:.2f}"/>)", x0, y0,
                      std::max(0.0, x1 - x0), std::max(0.0, y1 - y0), xml_escape(b.color), b.opacity);
     o += '\n';
   }
+  double offscale_top = f.top + 12, offscale_bottom = f.top + f.ph - 5;
   for (const HLine& l : p.hlines) {
-    if (l.y > yr.hi || l.y < yr.lo) {
+    if (l.y > f.yr.hi || l.y < f.yr.lo) {
       // Off scale: an arrow at the edge it lies beyond, with its value.
-      const bool above = l.y > yr.hi;
+      const bool above = l.y > f.yr.hi;
       if (!l.label.empty() || !above) {
+        double& y = above ? offscale_top : offscale_bottom;
         o += fmt::format(R"(<text class="offscale" x="{:.1f}" y="{:.1f}" text-anchor="end" fill="{}">{} {} ({:g}, off scale)</text>)",
-                         left + pw - 4, above ? top + 12 : top + ph - 5, xml_escape(l.color), above ? "&#9650;" : "&#9660;",
+                         f.left + f.pw - 4, y, xml_escape(l.color), above ? "&#9650;" : "&#9660;",
                          xml_escape(l.label.empty() ? std::string("limit") : l.label), l.y);
+        y += above ? 13 : -13;
         o += '\n';
       }
       continue;
     }
-    o += fmt::format(R"(<line class="limit" x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}" stroke="{}" stroke-width="1.2"{}/>)", left, py(l.y),
-                     left + pw, py(l.y), xml_escape(l.color), l.dashed ? R"( stroke-dasharray="6 4")" : "");
+    o += fmt::format(R"(<line class="limit" x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}" stroke="{}" stroke-width="1.2"{}/>)", f.left,
+                     f.py(l.y), f.left + f.pw, f.py(l.y), xml_escape(l.color), l.dashed ? R"( stroke-dasharray="6 4")" : "");
     o += '\n';
   }
+}
+
+void draw_series(std::string& o, const Plot& p, const Frame& f) {
   for (const Series& s : p.series) {
     if (s.markers) {
       // Unordered points: at most ~3000 dots, evenly strided.
       const std::size_t n = std::min(s.x.size(), s.y.size()), stride = std::max<std::size_t>(1, n / 3000);
       o += fmt::format(R"(<g class="series" fill="{}" fill-opacity="0.6">)", xml_escape(s.color));
       for (std::size_t i = 0; i < n; i += stride) {
-        if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i]) || s.x[i] < xr.lo || s.x[i] > xr.hi) continue;
-        o += fmt::format(R"(<circle cx="{:.1f}" cy="{:.1f}" r="1.8"/>)", px(s.x[i]), py(s.y[i]));
+        if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i]) || s.x[i] < f.xr.lo || s.x[i] > f.xr.hi) continue;
+        o += fmt::format(R"(<circle cx="{:.1f}" cy="{:.1f}" r="{:.1f}"/>)", f.px(s.x[i]), f.py(s.y[i]), std::max(1.8, s.width_px / 2));
       }
       o += "</g>\n";
       continue;
     }
-    const auto keep = decimate_min_max(s.x, s.y, xr.lo, xr.hi, static_cast<int>(pw));
+    const auto keep = decimate_min_max(s.x, s.y, f.xr.lo, f.xr.hi, static_cast<int>(f.pw));
     std::string points;
     points.reserve(keep.size() * 14);
     for (std::size_t i : keep) {
       if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) continue;
-      points += fmt::format("{:.1f},{:.1f} ", px(s.x[i]), py(s.y[i]));
+      points += fmt::format("{:.1f},{:.1f} ", f.px(s.x[i]), f.py(s.y[i]));
     }
     if (!points.empty()) points.pop_back();
-    o += fmt::format(R"(<polyline class="series" fill="none" stroke="{}" stroke-width="{:.1f}"{} points="{}"/>)", xml_escape(s.color), s.width_px,
-                     s.dashed ? R"( stroke-dasharray="5 3")" : "", points);
+    o += fmt::format(R"(<polyline class="series" fill="none" stroke="{}" stroke-width="{:.1f}"{} points="{}"/>)", xml_escape(s.color),
+                     s.width_px, s.dashed ? R"( stroke-dasharray="7 4")" : "", points);
     o += '\n';
   }
-  for (const VLine& v : p.vlines) {
-    o += fmt::format(R"(<line class="marker" x1="{0:.1f}" y1="{1:.1f}" x2="{0:.1f}" y2="{2:.1f}" stroke="{3}" stroke-dasharray="3 3"/>)",
-                     px(v.x), top, top + ph, xml_escape(v.color));
-    if (!v.label.empty()) {
-      o += fmt::format(R"(<text x="{:.1f}" y="{:.1f}" fill="{}">{}</text>)", px(v.x) + 3, top + 12, xml_escape(v.color), xml_escape(v.label));
-    }
-    o += '\n';
-  }
-  o += "</g>\n";
+}
 
-  // Legend: one row above the plot area.
-  double lx = left;
-  const double ly = 32;
-  auto legend_item = [&](const std::string& label, const std::string& color, bool area, bool dashed) {
-    if (label.empty()) return;
-    if (area) {
-      o += fmt::format(R"(<rect x="{:.1f}" y="{:.1f}" width="16" height="9" fill="{}" fill-opacity="0.35"/>)", lx, ly - 8, xml_escape(color));
-    } else {
-      o += fmt::format(R"(<line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}" stroke="{}" stroke-width="2"{}/>)", lx, ly - 4, lx + 16, ly - 4,
-                       xml_escape(color), dashed ? R"( stroke-dasharray="4 2")" : "");
+// Marker lines with their labels at the top of the plot area: a label that
+// would run past the right edge is set to the left of its line, and labels
+// that would overlap step down a row.
+void draw_markers(std::string& o, const Plot& p, const Frame& f) {
+  std::vector<std::vector<std::pair<double, double>>> rows;
+  for (const VLine& v : p.vlines) {
+    const double x = f.cx(v.x);
+    o += fmt::format(R"(<line class="marker" x1="{0:.1f}" y1="{1:.1f}" x2="{0:.1f}" y2="{2:.1f}" stroke="{3}" stroke-dasharray="3 3"/>)", x,
+                     f.top, f.top + f.ph, xml_escape(v.color));
+    if (!v.label.empty()) {
+      const double tw = text_width(v.label, kTextPx, false);
+      const bool left_of = x + 3 + tw > f.left + f.pw - 2;
+      const double x0 = left_of ? x - 3 - tw : x + 3;
+      std::size_t row = 0;
+      for (; row < rows.size(); ++row) {
+        bool clash = false;
+        for (const auto& [a, b] : rows[row]) clash = clash || (x0 < b + 4 && x0 + tw > a - 4);
+        if (!clash) break;
+      }
+      if (row == rows.size()) rows.emplace_back();
+      rows[row].push_back({x0, x0 + tw});
+      o += fmt::format(R"(<text class="marker-label" x="{:.1f}" y="{:.1f}" fill="{}">{}</text>)", x0, f.top + 12 + 13 * static_cast<double>(row),
+                       xml_escape(v.color), xml_escape(v.label));
     }
-    o += fmt::format(R"(<text x="{:.1f}" y="{:.1f}">{}</text>)", lx + 20, ly, xml_escape(label));
-    lx += 28 + 6.0 * static_cast<double>(label.size());
-  };
-  for (const Series& s : p.series) legend_item(s.label, s.color, false, s.dashed);
-  for (const HLine& l : p.hlines) legend_item(l.label, l.color, false, l.dashed);
-  for (const Band& b : p.bands) legend_item(b.label, b.color, true, false);
-  o += "\n</svg>\n";
+    o += '\n';
+  }
+}
+
+void draw_legend(std::string& o, const Frame& f) {
+  for (const Frame::Item& it : f.legend) {
+    if (it.area) {
+      o += fmt::format(R"(<rect x="{:.1f}" y="{:.1f}" width="18" height="9" fill="{}" fill-opacity="0.35"/>)", it.x, it.y - 8, xml_escape(it.color));
+    } else if (it.dot) { // operating points: dots, as drawn
+      o += fmt::format(R"(<circle cx="{:.1f}" cy="{:.1f}" r="3.5" fill="{}"/>)", it.x + 9, it.y - 4, xml_escape(it.color));
+    } else {
+      o += fmt::format(R"(<line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}" stroke="{}" stroke-width="2"{}/>)", it.x, it.y - 4, it.x + 18,
+                       it.y - 4, xml_escape(it.color), it.dashed ? R"( stroke-dasharray="5 2")" : "");
+    }
+    o += fmt::format(R"(<text class="legend" x="{:.1f}" y="{:.1f}">{}</text>)", it.x + 24, it.y, xml_escape(it.label));
+    o += '\n';
+  }
+}
+
+} // namespace
+
+double text_width(std::string_view text, double font_px, bool bold) {
+  // Code points (UTF-8 continuation bytes do not count) times a generous
+  // average advance of sans-serif digits and letters.
+  std::size_t n = 0;
+  for (unsigned char c : text) n += (c & 0xC0) != 0x80 ? 1 : 0;
+  return static_cast<double>(n) * font_px * (bold ? 0.64 : 0.6);
+}
+
+std::pair<double, double> x_extent(const Plot& p) {
+  const Range r = x_range(p);
+  return {r.lo, r.hi};
+}
+
+std::pair<double, double> y_extent(const Plot& p) {
+  const Range r = y_range(p, x_range(p));
+  return {r.lo, r.hi};
+}
+
+std::string to_svg(const Plot& p) {
+  const Frame f = frame(p);
+  std::string o = fmt::format(R"(<svg xmlns="http://www.w3.org/2000/svg" class="plot" id="svg-{0}" viewBox="0 0 {1} {2}" width="100%" )"
+                              R"(font-family="sans-serif" font-size="{3}"><title>{4}</title>)",
+                              xml_escape(p.id), f.w, f.h, kTextPx, xml_escape(p.title));
+  o += '\n';
+  const std::string clip = xml_escape(p.id) + "-clip";
+  o += fmt::format(R"(<defs><clipPath id="{}"><rect x="{:.1f}" y="{:.1f}" width="{:.1f}" height="{:.1f}"/></clipPath></defs>)", clip,
+                   f.left, f.top, f.pw, f.ph);
+  o += '\n';
+  for (std::size_t k = 0; k < f.title_lines.size(); ++k) {
+    o += fmt::format(R"(<text class="title" x="8" y="{:.1f}" font-size="{}" font-weight="bold">{}</text>)",
+                     4 + kTitlePx + (kTitlePx + kLineGap) * static_cast<double>(k), kTitlePx, xml_escape(f.title_lines[k]));
+    o += '\n';
+  }
+  draw_axes(o, p, f);
+  o += fmt::format(R"~(<g class="data" clip-path="url(#{})">)~", clip);
+  o += '\n';
+  draw_limits(o, p, f);
+  draw_series(o, p, f);
+  o += "</g>\n";
+  draw_markers(o, p, f);
+  draw_legend(o, f);
+  o += "</svg>\n";
   return o;
 }
 

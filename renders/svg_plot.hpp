@@ -1,4 +1,4 @@
-// Dependency-free SVG line plots (issue 7; design/mujoco.md "Plots": no C++
+// Dependency-free SVG line plots (issue 7, 29; design/mujoco.md "Plots": no C++
 // plotting library is packaged in Debian 12). Axes with "nice" ticks, units,
 // a legend, horizontal limit lines, vertical markers and shaded bands.
 // Long series are decimated to min/max per pixel column, so a plot stays a
@@ -62,12 +62,27 @@ struct Plot {
   std::vector<HLine> hlines;
   std::vector<VLine> vlines;
   std::vector<Band> bands;
-  int width_px = 760;
-  int height_px = 280;
+  // The viewBox in user units; on a page the SVG takes the full width and
+  // scales (issue 29), so these set the proportions and the text's size
+  // relative to the plot. The height grows when the title and legend need it.
+  int width_px = 900;
+  int height_px = 300;
 };
 
-// The SVG element (no XML prolog), ready to inline in HTML.
+// The SVG element (no XML prolog), ready to inline in HTML: the title
+// wrapped to the width, the legend in rows above the plot area (never on the
+// data), every text inside the viewBox.
 std::string to_svg(const Plot& plot);
+
+// The axis ranges to_svg draws (the interactive figure uses the same): x
+// from the data and markers unless fixed; y from the data within that x
+// range, the autoscaling limit lines and the bands, padded 6 %.
+std::pair<double, double> x_extent(const Plot& plot);
+std::pair<double, double> y_extent(const Plot& plot);
+
+// A generous estimate of the width of `text` at `font_px` in a sans-serif
+// font, for laying text out inside the viewBox.
+double text_width(std::string_view text, double font_px, bool bold = false);
 
 // Tick values of one axis as drawn: nice_ticks with at least 4 inside the
 // range (issue 16: every plot readable without guessing).

@@ -115,7 +115,11 @@ std::string temperature_plot(double mean_loss_W, double ambient_C, double therma
   p.id = "temperature";
   p.title = "Module temperature under continuous cycling, from ambient (twin's thermal model, mean loss)";
   p.x = {"time", "s", 0.0, {}};
-  p.y = {"temperature", "degC", {}, {}};
+  // Always up to past the 75 degC trip (issue 29): the curve is read against
+  // the warning and the trip, whatever its own range.
+  double top_C = kTemperatureTrip_C + 5.0;
+  for (const TemperaturePoint& q : curve) top_C = std::max(top_C, q.C + 5.0);
+  p.y = {"temperature", "degC", {}, top_C};
   svg::Series s{fmt::format("sensor ({:.2f} W)", mean_loss_W), {}, {}, "#d62728", 1.6, false, false};
   for (const TemperaturePoint& q : curve) {
     s.x.push_back(q.t_s);
@@ -123,7 +127,7 @@ std::string temperature_plot(double mean_loss_W, double ambient_C, double therma
   }
   p.series.push_back(std::move(s));
   p.hlines = {{kTemperatureWarning_C, "70 degC warning (115.1)", "#ff7f0e", true},
-              {kTemperatureTrip_C, "75 degC error (114.3)", "#d62728", true},
+              {kTemperatureTrip_C, "75 degC trip (error 114.3)", "#d62728", true},
               {kTemperatureWarning_C - thermal_margin_K, fmt::format("required margin {:.0f} K", thermal_margin_K),
                "#2ca02c", true}};
   return report::figure(p);
@@ -133,8 +137,13 @@ std::string cycle_report_html(const CycleRequest& rq, const CycleResult& r) {
   const CycleEvaluation& e = r.evaluation;
   const std::string title = fmt::format("Sizing: cycle {}", std::filesystem::path(rq.file).filename().string());
   std::string o = report_parts::page_head(title);
-  o += fmt::format("<p><span class=\"result {}\">{}</span> binding limit: {}. {}</p>\n", e.feasible ? "ok" : "bad",
-                   e.feasible ? "FEASIBLE" : "NOT FEASIBLE", xml_escape(e.binding_limit), xml_escape(e.reason));
+  // The verdict first (issue 29): the same block as the single move's.
+  double speed_dps = 0, load_gcm2 = 0;
+  for (const ParameterSetValues& set : e.sets) speed_dps = std::max(speed_dps, set.tidy.speed_dps);
+  for (const SegmentResult& s : e.segments) {
+    if (s.kind == "move") load_gcm2 = std::max(load_gcm2, s.load_gcm2);
+  }
+  o += report_parts::verdict_block({&e, e.feasible, e.binding_limit, rq.thermal_margin_K, rq.ambient_C, speed_dps, load_gcm2});
   o += "<h2>Numbers</h2>\n<table>\n";
   o += row("supply / ambient / mounting", fmt::format("{:.1f} V / {:.1f} degC / tilt {} deg", rq.voltage_V, rq.ambient_C,
                                                       rq.mounting_tilt_deg));
@@ -144,13 +153,8 @@ std::string cycle_report_html(const CycleRequest& rq, const CycleResult& r) {
   o += row("peak / RMS torque", fmt::format("{:.3f} / {:.3f} N m (capability {:.3f}, continuous {:.3f} N m)",
                                             e.peak_torque_Nm, e.rms_torque_Nm, e.torque_capability_Nm,
                                             e.continuous_torque_Nm));
-  o += row("utilisation", fmt::format("peak {:.0f} % at speed, RMS {:.0f} %, thermal margin {:.1f} K",
-                                      e.utilisation.peak_torque_pct, e.utilisation.rms_torque_pct,
-                                      e.utilisation.thermal_margin_K));
   o += row("steady temperature", fmt::format("{:.1f} degC ({:.2f} W mean loss)", e.steady_temperature_C, e.mean_loss_W));
   o += row("time to 70 degC warning / 75 degC trip", when(e.time_to_warning_s) + " / " + when(e.time_to_trip_s));
-  o += row("supply", fmt::format("peak {:.2f} A, RMS {:.2f} A, regen {:.3f} J, bus peak {:.2f} V", e.supply.peak_current_A,
-                                 e.supply.rms_current_A, e.supply.regen_energy_J, e.supply.peak_bus_V));
   o += row("simulations", fmt::format("{} (back-offs {})", r.simulations, r.backoffs));
   o += "</table>\n<h2>Parameter sets and ISDU writes</h2>\n<pre>";
   for (const ParameterSetValues& s : e.sets) {

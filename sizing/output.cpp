@@ -68,6 +68,12 @@ std::string tracking_text(const TraceFigures& f) {
                      f.tracking_limit_deg);
 }
 
+std::string supply_text(const SupplyFigures& s) {
+  return fmt::format("peak {:.2f} A, RMS {:.2f} A, regenerated {:.3f} J per braking, bus peak {:.2f} V (window max {:.1f} V){}",
+                     s.peak_current_A, s.rms_current_A, s.regen_energy_J, s.peak_bus_V, s.bus_max_V,
+                     s.overvoltage_advice ? ": manual 7.2 114.4 applies, add capacity or a chopper" : "");
+}
+
 std::string verdict_text(const TraceFigures& f, double required_thermal_margin_K, const std::string& binding_limit,
                          bool feasible) {
   std::string s;
@@ -75,11 +81,7 @@ std::string verdict_text(const TraceFigures& f, double required_thermal_margin_K
                    "thermal margin {:.1f} K (required {:.1f} K)\n",
                    f.utilisation.peak_torque_pct, f.utilisation.rms_torque_pct, f.continuous_torque_Nm,
                    f.utilisation.thermal_margin_K, required_thermal_margin_K);
-  s += fmt::format("  supply            peak {:.2f} A, RMS {:.2f} A, regenerated {:.3f} J per braking, bus peak {:.2f} V "
-                   "(window max {:.1f} V){}\n",
-                   f.supply.peak_current_A, f.supply.rms_current_A, f.supply.regen_energy_J, f.supply.peak_bus_V,
-                   f.supply.bus_max_V,
-                   f.supply.overvoltage_advice ? ": manual 7.2 114.4 applies, add capacity or a chopper" : "");
+  s += "  supply            " + supply_text(f.supply) + "\n";
   s += fmt::format("  binding limit     {}\n", binding_limit);
   s += fmt::format("  feasible          {}{}\n", feasible ? "yes" : "NO", feasible ? "" : ": " + f.reason);
   return s;

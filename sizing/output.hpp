@@ -32,6 +32,9 @@ nlohmann::json json_parameter_set(const ParameterSetValues& s);
 
 // The summary's lines both texts share.
 std::string tracking_text(const TraceFigures& f);
+// "peak 1.20 A, RMS 0.80 A, regenerated ...": the supply line of the text
+// and of the pages' verdict block (one wording, issue 29).
+std::string supply_text(const SupplyFigures& s);
 // Utilisation, supply, binding limit, feasible (with the reason).
 std::string verdict_text(const TraceFigures& f, double required_thermal_margin_K, const std::string& binding_limit,
                          bool feasible);

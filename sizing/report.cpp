@@ -179,8 +179,9 @@ bool reports_available() { return true; }
 std::string size_report_html(const SizingRequest& rq, const SizingResult& r) {
   const Evaluation& e = r.evaluation;
   std::string o = page_head(fmt::format("Sizing: {} deg, {:.0f} g cm^2, {:.1f} V", rq.angle_deg, e.load_gcm2, rq.voltage_V));
-  o += fmt::format("<p><span class=\"result {}\">{}</span> {}</p>\n", e.feasible ? "ok" : "bad",
-                   e.feasible ? "FEASIBLE" : "NOT FEASIBLE", xml_escape(e.reason));
+  // The verdict first (issue 29), from the figures the text and JSON print.
+  o += report_parts::verdict_block({&e, r.feasible, r.binding_limit, rq.thermal_margin_K, rq.ambient_C, e.set.setting.speed_dps,
+                                    e.load_gcm2});
   o += "<h2>Numbers (manual 3.5.2 terms)</h2>\n" + numbers_table(rq, r);
   o += "<h2>ISDU writes</h2>\n<pre>";
   for (const IsduWrite& w : e.set.writes) o += xml_escape(isdu_write_line(w)) + "\n";
@@ -214,7 +215,8 @@ std::string size_report_html(const SizingRequest& rq, const SizingResult& r) {
     v.x = p.x;
     v.y = {"velocity", "deg/s", {}, {}};
     v.series = {{"velocity", t, vel, "#1f77b4", 1.5, false}};
-    v.hlines = {{e.set.setting.speed_dps, "set speed", "#d62728", true}, {-e.set.setting.speed_dps, "", "#d62728", true}};
+    v.hlines = {{e.set.setting.speed_dps, fmt::format("set speed +-{:.1f} deg/s", e.set.setting.speed_dps), "#d62728", true},
+                {-e.set.setting.speed_dps, "", "#d62728", true}};
     o += report::figure(v);
     svg::Plot q;
     q.id = "torque";
@@ -223,8 +225,8 @@ std::string size_report_html(const SizingRequest& rq, const SizingResult& r) {
     q.y = {"torque", "N m", {}, {}};
     q.series = {{"torque", t, tq, "#ff7f0e", 1.5, false}};
     const double cap = e.torque_capability_Nm, margin = kTorqueMargin * cap;
-    q.hlines = {{cap, "peak torque", "#d62728", false},  {-cap, "", "#d62728", false},
-                {margin, fmt::format("{:.0f} % margin", 100 * kTorqueMargin), "#9467bd", true},
+    q.hlines = {{cap, fmt::format("peak torque capability +-{:.3f} N m", cap), "#d62728", false},  {-cap, "", "#d62728", false},
+                {margin, fmt::format("{:.0f} % of capability (feasibility limit)", 100 * kTorqueMargin), "#9467bd", true},
                 {-margin, "", "#9467bd", true}};
     o += report::figure(q);
     o += speed_torque_plot(rq, e);
@@ -257,6 +259,14 @@ std::string sweep_report_html(const SweepRequest& rq, const SweepResult& result,
                    result.points.size(), rq.base.dwell_s, rq.base.ambient_C,
                    rq.speeds_dps.empty() ? "recommended set per point"
                                          : fmt::format("given acceleration {} %, jerk {} %", rq.accel_pct, rq.jerk_pct));
+  // Every point's verdict (issue 29), from the figures its CSV row carries.
+  std::vector<std::pair<std::string, report_parts::VerdictInput>> verdicts;
+  for (const SweepPoint& pt : result.points) {
+    const Evaluation& e = pt.result.evaluation;
+    verdicts.push_back({fmt::format("{} deg, {} g cm^2, {:.1f} V, {:.1f} deg/s", pt.angle_deg, pt.load_gcm2, pt.voltage_V, e.set.tidy.speed_dps),
+                        {&e, e.feasible, e.binding_limit, rq.base.thermal_margin_K, rq.base.ambient_C, e.set.tidy.speed_dps, e.load_gcm2}});
+  }
+  o += "<h2>Verdict per point</h2>\n" + report_parts::verdict_table(verdicts, 200);
   const std::vector<SweepGroup> groups = sweep_groups(result);
   std::vector<double> angles;
   for (const SweepPoint& p : result.points) {

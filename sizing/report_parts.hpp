@@ -5,6 +5,8 @@
 #if SREH_SIZING_WITH_REPORT
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "renders/svg_plot.hpp"
 #include "sizing/sizing.hpp"
@@ -33,6 +35,29 @@ svg::Series motor_envelope(const MotorModel& motor, double voltage_V, double top
 // the torque margin and continuous torque lines (A-SIZE-14) on `plot`.
 void add_rms_point(svg::Plot& plot, double rms_speed_dps, double rms_torque_Nm, double torque_capability_Nm,
                    double continuous_torque_Nm);
+
+// What the verdict block shows (issue 29): the figures `size` prints in its
+// text and JSON (TraceFigures, the same fields), the answer, and what the
+// page adds to them.
+struct VerdictInput {
+  const TraceFigures* figures = nullptr; // utilisation, supply, reason
+  bool feasible = false;                 // the answer `size` prints
+  std::string binding_limit;
+  double required_thermal_margin_K = 0;
+  double ambient_C = 25;
+  double speed_dps = 0;  // the fastest set's speed (index 64+n.1)
+  double load_gcm2 = 0;  // the heaviest load moved
+};
+
+// The block every sizing page opens with (single move, cycle): feasible or
+// not, utilisation bars against 100 % (peak torque, RMS torque, thermal,
+// speed), the binding limit, the thermal and torque margins, the inertia
+// ratio J_load / J_intern and the supply figures (report_verdict.cpp).
+std::string verdict_block(const VerdictInput& in);
+// The sweep's points (it has no page per point), one row each: the answer,
+// the binding limit and the four bars of verdict_block, small; at most
+// `max_rows` rows.
+std::string verdict_table(const std::vector<std::pair<std::string, VerdictInput>>& points, std::size_t max_rows);
 
 } // namespace sreh::sizing::report_parts
 #endif

@@ -84,6 +84,9 @@ class PortView {
     this.dial = dial();
     this.facts = el('div', { class: 'facts' });
     this.errBox = el('div', { class: 'error', id: id('error') });
+    // Each chart's legend above it, outside the data (issue 29).
+    const errLegend = el('div', { class: 'chart-legend' });
+    const torqueLegend = el('div', { class: 'chart-legend' });
     const errChart = el('div', { class: 'chart' });
     const torqueChart = el('div', { class: 'chart' });
     this.target = el('input', { id: id('target'), type: 'number', value: '90', step: '0.1' });
@@ -116,15 +119,15 @@ class PortView {
           btn('ambient-btn', 'Apply', () => this.fault({ ambient_C: Number(this.ambientIn.value) })))));
     this.root = el('section', { class: 'port', id: id('card') },
       el('h2', {}, this.led, `Port ${this.p}: ${info.device}`, ' \u2014 ', this.stateText),
-      el('div', { class: 'row' }, el('div', {}, this.dial, this.facts), el('div', {}, errChart, torqueChart)),
+      el('div', { class: 'row' }, el('div', {}, this.dial, this.facts), el('div', {}, errLegend, errChart, torqueLegend, torqueChart)),
       controls, this.errBox);
     document.getElementById('ports').append(this.root);
-    const opts = (label, unit, color) => ({ labels: ['t_s', label], colors: [color], legend: 'always', ylabel: unit,
-                                      xlabel: 't / s', axisLabelFontSize: 11, strokeWidth: 1.5,
-                                      axes: { y: { axisLabelWidth: 50, pixelsPerLabel: 18,
+    const opts = (label, unit, color, legend) => ({ labels: ['t_s', label], colors: [color], legend: 'always', labelsDiv: legend,
+                                      ylabel: unit, xlabel: 't / s', axisLabelFontSize: 11, strokeWidth: 1.5,
+                                      axes: { y: { axisLabelWidth: 50, pixelsPerLabel: 14,
                                                    axisLabelFormatter: (v) => String(Number(v.toPrecision(3))) } } });
-    this.errPlot = new Dygraph(errChart, [[0, 0]], opts('tracking error / deg', 'deg', '#dc2626'));
-    this.torquePlot = new Dygraph(torqueChart, [[0, 0]], opts('torque / N m', 'N m', '#2563eb'));
+    this.errPlot = new Dygraph(errChart, [[0, 0]], opts('tracking error / deg', 'deg', '#dc2626', errLegend));
+    this.torquePlot = new Dygraph(torqueChart, [[0, 0]], opts('torque / N m', 'N m', '#2563eb', torqueLegend));
     this.setLed(info.led);
     this.connect();
   }

@@ -174,6 +174,28 @@ TEST(Report, FailedRunAndIncompleteMoveAreMarked) {
   EXPECT_NE(html.find("<td>200.0</td><td>&mdash;</td><td>&mdash;</td>"), std::string::npos);
 }
 
+// Issue 29: a step inside a repeat checks once per pass under one number;
+// the table tells the passes apart by the scenario line and the pass.
+TEST(Report, RepeatedStepsAreToldApart) {
+  ReportInput in = sample_run();
+  in.checks = {{"position_deg in [179.98, 180.02]", true, "4.6", 30, 0.5, "180.001"},
+               {"position_deg in [179.98, 180.02]", false, "4.6", 30, 1.5, "179.9"}};
+  in.passed = false;
+  const std::string html = report_html(in);
+  EXPECT_NE(html.find("<td>4.6 <span class=\"note\">(line 30)</span></td>"), std::string::npos);
+  EXPECT_NE(html.find("<td>4.6 <span class=\"note\">(line 30, pass 2)</span></td>"), std::string::npos);
+  EXPECT_NE(html.find("<li>step 4.6 (line 30, pass 2): position_deg"), std::string::npos);
+}
+
+// Issue 29: setpoint and actual told apart by more than colour.
+TEST(Report, SetpointIsDashedUnderTheActual) {
+  const std::string html = report_html(sample_run());
+  EXPECT_NE(html.find("setpoint (A), dashed"), std::string::npos);
+  const std::size_t svg = html.find("id=\"svg-p-position\"");
+  ASSERT_NE(svg, std::string::npos);
+  EXPECT_NE(html.find("stroke-dasharray", svg), std::string::npos);
+}
+
 TEST(Report, CommissioningHintsStandAtTheTop_Issue28) {
   ReportInput in = sample_run();
   in.hints = {"hint: parameter set 1 is configured for 0 g cm^2, the attached load is 7200 g cm^2 (manual 3.5.6, 7.2)"};

@@ -7,6 +7,8 @@
 
 #include <cmath>
 
+#include <fmt/format.h>
+
 #include "renders/svg_plot.hpp"
 
 namespace sreh::svg {
@@ -104,6 +106,60 @@ TEST(SvgPlot, ConstantAndEmptySeriesStillDraw) {
   EXPECT_EQ(s.find("nan"), std::string::npos);
   EXPECT_EQ(s.find("inf"), std::string::npos);
   EXPECT_NE(s.find("</svg>"), std::string::npos);
+}
+
+// The numbers of every attribute `name`="..." of `tag` elements in `svg`.
+std::vector<double> attr(const std::string& svg, const std::string& tag, const std::string& name) {
+  std::vector<double> out;
+  for (std::size_t a = svg.find("<" + tag + " "); a != std::string::npos; a = svg.find("<" + tag + " ", a + 1)) {
+    const std::size_t end = svg.find('>', a), at = svg.find(" " + name + "=\"", a);
+    if (at < end) out.push_back(std::stod(svg.substr(at + name.size() + 3)));
+  }
+  return out;
+}
+
+// Issue 29: the SVG scales to the page (viewBox, width 100 %); a title too
+// long for one line wraps; a legend too long for one row wraps into rows
+// above the plot area, never on the data; every text starts inside the width.
+TEST(SvgPlot, TitleAndLegendWrapAboveThePlotAreaInsideTheViewBox) {
+  Plot p;
+  p.id = "wrap";
+  p.title = "Module temperature under continuous cycling, from ambient (twin's thermal model, mean loss), "
+            "with a title long enough to need a second line at any width";
+  for (int k = 0; k < 9; ++k) p.series.push_back({"a series with a long legend label " + std::to_string(k), {0, 1}, {0, 1.0 * k}});
+  const std::string s = to_svg(p);
+  EXPECT_NE(s.find(fmt::format(R"(viewBox="0 0 {} )", p.width_px)), std::string::npos);
+  EXPECT_NE(s.find(R"(width="100%")"), std::string::npos);
+  EXPECT_GE(count(s, "class=\"title\""), 2u);
+  const double plot_top = attr(s, "rect", "y").front(); // the clip rectangle: the plot area
+  std::set<double> rows;
+  for (std::size_t a = s.find("class=\"legend\""); a != std::string::npos; a = s.find("class=\"legend\"", a + 1)) {
+    const double y = std::stod(s.substr(s.find("y=\"", a) + 3));
+    const double x = std::stod(s.substr(s.find("x=\"", a) + 3));
+    rows.insert(y);
+    EXPECT_LT(y, plot_top) << "legend on the data";
+    const std::size_t text = s.find('>', a) + 1;
+    EXPECT_LE(x + text_width(s.substr(text, s.find('<', text) - text), 12), p.width_px) << "legend past the right edge";
+  }
+  EXPECT_GE(rows.size(), 3u);
+  for (double x : attr(s, "text", "x")) EXPECT_GE(x, 0.0);
+}
+
+// A marker label at the right edge is set to the left of its line, and two
+// labels at the same place step down instead of overlapping.
+TEST(SvgPlot, MarkerLabelsStayInsideAndApart) {
+  Plot p;
+  p.series = {{"x", {0, 1}, {0, 1}}};
+  p.vlines = {{1.0, "not completed"}, {0.5, "(b)"}, {0.501, "(f) complete"}};
+  const std::string s = to_svg(p);
+  std::vector<double> xs, ys;
+  for (std::size_t a = s.find("class=\"marker-label\""); a != std::string::npos; a = s.find("class=\"marker-label\"", a + 1)) {
+    xs.push_back(std::stod(s.substr(s.find("x=\"", a) + 3)));
+    ys.push_back(std::stod(s.substr(s.find("y=\"", a) + 3)));
+  }
+  ASSERT_EQ(xs.size(), 3u);
+  EXPECT_LE(xs[0] + text_width("not completed", 12), p.width_px - 26 + 1); // inside the plot area
+  EXPECT_NE(ys[1], ys[2]);                                             // stepped down
 }
 
 } // namespace

@@ -7,97 +7,19 @@ chromium (SREH_WITH_BROWSER=1 ./setup.sh installs it)."""
 import base64
 import json
 import os
-import select
 import shutil
-import subprocess
 import sys
 import tempfile
 import time
 
-from harness import Serve, check, fail, wait_until
+from harness import Serve, check, wait_until
+
+# The DevTools client all browser tests share (tests/browser/cdp.py).
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "browser"))
+from cdp import Cdp, browser_or_skip  # noqa: E402
 
 exe = sys.argv[1]
-browser = shutil.which("chromium")
-if not browser:
-    print("SKIP: chromium not installed")
-    sys.exit(77)
-
-
-class Cdp:
-    """DevTools protocol over the pipe: NUL-terminated JSON on fds 3 (to Chromium) and 4 (from it)."""
-
-    def __init__(self, url_dir):
-        to_r, self.to_w = os.pipe()
-        self.from_r, from_w = os.pipe()
-        self.proc = subprocess.Popen(
-            [browser, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
-             "--disable-background-networking", "--disable-component-update", "--disable-sync",
-             "--remote-debugging-pipe", "--user-data-dir=" + url_dir, "--window-size=1400,900", "about:blank"],
-            pass_fds=(3, 4), preexec_fn=lambda: (os.dup2(to_r, 3), os.dup2(from_w, 4)),
-            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-        os.close(to_r)
-        os.close(from_w)
-        self.buf = b""
-        self.next_id = 0
-        self.events = []
-        self.session = None
-
-    def send(self, method, params=None, session=True, timeout=20):
-        self.next_id += 1
-        msg = {"id": self.next_id, "method": method, "params": params or {}}
-        if session and self.session:
-            msg["sessionId"] = self.session
-        os.write(self.to_w, json.dumps(msg).encode() + b"\0")
-        end = time.monotonic() + timeout
-        while True:
-            for m in self.pump(end):
-                if m.get("id") == self.next_id:
-                    if "error" in m:
-                        fail("CDP %s: %s" % (method, m["error"]))
-                    return m["result"]
-
-    def pump(self, end):
-        if time.monotonic() > end:
-            fail("Chromium did not answer in time")
-        r, _, _ = select.select([self.from_r], [], [], max(0.0, min(0.2, end - time.monotonic())))
-        if r:
-            chunk = os.read(self.from_r, 1 << 20)
-            if not chunk:
-                fail("Chromium closed the pipe")
-            self.buf += chunk
-        out = []
-        while b"\0" in self.buf:
-            raw, self.buf = self.buf.split(b"\0", 1)
-            m = json.loads(raw)
-            if "method" in m:
-                self.events.append(m)
-            out.append(m)
-        return out
-
-    def evaluate(self, expr):
-        r = self.send("Runtime.evaluate", {"expression": expr, "returnByValue": True, "awaitPromise": True})
-        if "exceptionDetails" in r:
-            fail("page script failed: %s" % r["exceptionDetails"])
-        return r["result"].get("value")
-
-    def click(self, element_id):
-        """A real mouse click at the button's centre."""
-        box = self.evaluate("(() => { const r = document.getElementById(%s).getBoundingClientRect();"
-                            " return [r.x + r.width / 2, r.y + r.height / 2]; })()" % json.dumps(element_id))
-        for kind in ("mousePressed", "mouseReleased"):
-            self.send("Input.dispatchMouseEvent", {"type": kind, "x": box[0], "y": box[1], "button": "left",
-                                                   "clickCount": 1})
-
-    def close(self):
-        try:
-            self.send("Browser.close", session=False, timeout=5)
-        except SystemExit:
-            pass
-        try:
-            self.proc.wait(timeout=10)
-        except subprocess.TimeoutExpired:
-            self.proc.kill()
-            self.proc.wait()
+browser_or_skip()
 
 
 tmp = tempfile.mkdtemp()
@@ -105,10 +27,7 @@ shot = os.path.join(os.getcwd(), "serve_live_page.png")
 s = Serve(exe, "--ports", "2")
 cdp = Cdp(os.path.join(tmp, "profile"))
 try:
-    target = cdp.send("Target.createTarget", {"url": "about:blank"}, session=False)["targetId"]
-    cdp.session = cdp.send("Target.attachToTarget", {"targetId": target, "flatten": True}, session=False)["sessionId"]
-    for domain in ("Runtime.enable", "Log.enable", "Page.enable"):
-        cdp.send(domain)
+    cdp.open_tab()
     cdp.send("Page.navigate", {"url": s.http + "/"})
     end = time.monotonic() + 20
     while not cdp.evaluate("!!document.getElementById('p2-card') && document.getElementById('status').textContent === 'live'"):
@@ -132,9 +51,7 @@ try:
     check(png[:8] == b"\x89PNG\r\n\x1a\n" and len(png) > 20000, "screenshot is not a plausible PNG")
     with open(shot, "wb") as f:
         f.write(png)
-    problems = [e for e in cdp.events if e["method"] == "Runtime.exceptionThrown"
-                or (e["method"] == "Runtime.consoleAPICalled" and e["params"]["type"] in ("error", "warning", "assert"))
-                or (e["method"] == "Log.entryAdded" and e["params"]["entry"]["level"] in ("error", "warning"))]
+    problems = cdp.problems()
     check(not problems, "console errors: %s" % json.dumps(problems)[:2000])
 finally:
     cdp.close()

@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <string>
 
+#include <fmt/format.h>
+
 #include "sizing/cycle.hpp"
 #include "sizing/report.hpp"
 #include "tests/sizing/report_checks.hpp"
@@ -29,6 +31,13 @@ TEST(CycleReport, HasTheSpeedTorquePlaneSegmentTimesAndTemperature) {
   EXPECT_NE(html.find("move 2 (segment 4)"), std::string::npos); // operating points per move
   EXPECT_NE(html.find("Time per segment"), std::string::npos);
   EXPECT_NE(html.find("Module temperature"), std::string::npos);
+  // Issue 29: the same verdict block as the single move's, before the numbers.
+  const std::size_t verdict = html.find("id=\"verdict\"");
+  ASSERT_NE(verdict, std::string::npos);
+  EXPECT_LT(verdict, html.find("<h2>Numbers</h2>"));
+  EXPECT_NE(html.find(fmt::format("<b id=\"binding-limit\">{}</b>", r.evaluation.binding_limit)), std::string::npos);
+  EXPECT_NE(html.find(fmt::format("<td>margin {:.1f} K</td>", r.evaluation.utilisation.thermal_margin_K)), std::string::npos);
+  EXPECT_NE(html.find("75 degC trip (error 114.3)"), std::string::npos);
   EXPECT_NE(html.find("- isdu_write: {index: 66, subindex: 4, value: 12000}"), std::string::npos);
   EXPECT_EQ(html.find("<script src"), std::string::npos);
   const std::size_t svgs = test::count_svgs_with_ticks(html);
