@@ -1,6 +1,6 @@
 #!/bin/sh
 # Regenerates the screenshots of every page in docs/img/ (issue 29): run
-# report, sizing, cycle and sweep pages, serve's live page, at 1400 px in
+# report, sizing, cycle, sweep and calibration pages, serve's live page, at 1400 px in
 # headless Chromium (tests/browser/screenshots.py, the browser test's DevTools
 # client), and the video's title-card frame (frame 20, docs/img/video-title-card.png)
 # when a demo video exists (default out/demo.mp4, from ./demo.sh).

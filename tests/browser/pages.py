@@ -7,7 +7,7 @@ from cdp import fail
 
 
 def make_pages(exe, src, out, cycle="tests/sizing/data/load_change_cycle.yaml"):
-    """The four report pages, written by the CLI as a user would; returns {name: index.html}.
+    """The five report pages (run, size, cycle, sweep, calibration), written by the CLI as a user would; returns {name: index.html}.
     `cycle`: the cycle file, relative to `src` (the default sizes in a fraction of a second)."""
     jobs = {
         "run": ["run", "scenarios/demo.yaml", "--quiet"],  # relative to src: the page shows the command
@@ -24,6 +24,15 @@ def make_pages(exe, src, out, cycle="tests/sizing/data/load_change_cycle.yaml"):
         if len(procs) % 2 == 0:
             for p in procs.values():
                 p.wait(timeout=300)
+    # The calibration report (issue 26): a master log of a short scenario, fitted briefly.
+    log = os.path.join(out, "master-log.csv")
+    subprocess.run([exe, "run", "scenarios/t03_t05_t07_absolute_move.yaml", "--quiet", "--master-log", log], cwd=src,
+                   stdout=subprocess.DEVNULL, check=True, timeout=120)
+    with open(os.path.join(out, "calibration.err"), "w") as err:
+        procs["calibration"] = subprocess.Popen(
+            [exe, "calibrate", log, "--load-gcm2", "0", "--fit", "coulomb_friction,viscous_friction",
+             "--max-iterations", "2", "--out", os.path.join(out, "fit.yaml"), "--report", os.path.join(out, "calibration")],
+            cwd=src, stdout=subprocess.DEVNULL, stderr=err)
     pages = {}
     for name, p in procs.items():
         p.wait(timeout=300)

@@ -68,7 +68,7 @@ def main():
         ready = ("document.readyState === 'complete' && "
                  "document.querySelectorAll('.fig .dy').length === document.querySelectorAll('.fig.live').length")
         for name, file in (("run", "run-report.png"), ("size", "sizing-report.png"), ("cycle", "cycle-report.png"),
-                           ("sweep", "sweep-report.png")):
+                           ("sweep", "sweep-report.png"), ("calibration", "calibration-report.png")):
             cdp.navigate(pages[name], ready)
             time.sleep(0.3)
             shoot(cdp, os.path.join(out, file))
