@@ -15,6 +15,7 @@
 #include "sizing/report.hpp"
 #include "sizing/report_parts.hpp"
 #include "sizing/thermal_estimate.hpp"
+#include "sizing/uncertainty.hpp"
 
 #if SREH_SIZING_WITH_REPORT
 #include "device_logic/motor_model.hpp"
@@ -107,7 +108,8 @@ std::string segment_time_plot(const CycleEvaluation& e) {
 } // namespace
 
 std::string temperature_plot(double mean_loss_W, double ambient_C, double thermal_margin_K,
-                             const std::optional<double>& time_to_trip_s, const ThermalConstants& constants) {
+                             const std::optional<double>& time_to_trip_s, const ThermalConstants& constants,
+                             const UncertaintyResult* steady_band) {
   // Long enough to see the steady state (housing: 20 min) or the trip.
   const double duration_s = time_to_trip_s ? std::max(60.0, 1.3 * *time_to_trip_s) : 6000.0;
   const std::vector<TemperaturePoint> curve = temperature_curve(mean_loss_W, ambient_C, duration_s, duration_s / 600.0, constants);
@@ -130,10 +132,15 @@ std::string temperature_plot(double mean_loss_W, double ambient_C, double therma
               {kTemperatureTrip_C, "75 degC trip (error 114.3)", "#d62728", true},
               {kTemperatureWarning_C - thermal_margin_K, fmt::format("required margin {:.0f} K", thermal_margin_K),
                "#2ca02c", true}};
+  if (steady_band && steady_band->banded > 0) { // issue 26: where the curve may level off on the sampled models
+    const Band& b = steady_band->max_temperature_C;
+    p.bands.push_back({{}, {}, b.lo, b.hi, "steady temperature over the sampled models", "#d62728", 0.12});
+    p.y.max = std::max(*p.y.max, b.hi + 5.0);
+  }
   return report::figure(p);
 }
 
-std::string cycle_report_html(const CycleRequest& rq, const CycleResult& r) {
+std::string cycle_report_html(const CycleRequest& rq, const CycleResult& r, const UncertaintyResult* u) {
   const CycleEvaluation& e = r.evaluation;
   const std::string title = fmt::format("Sizing: cycle {}", std::filesystem::path(rq.file).filename().string());
   std::string o = report_parts::page_head(title);
@@ -144,6 +151,10 @@ std::string cycle_report_html(const CycleRequest& rq, const CycleResult& r) {
     if (s.kind == "move") load_gcm2 = std::max(load_gcm2, s.load_gcm2);
   }
   o += report_parts::verdict_block({&e, e.feasible, e.binding_limit, rq.thermal_margin_K, rq.ambient_C, speed_dps, load_gcm2});
+  if (u) {
+    const WorstMove w = worst_move(e);
+    o += report_parts::uncertainty_section(*u, {w.positioning_s, w.settling_s, e.peak_torque_Nm, e.steady_temperature_C, e.cycle_s});
+  }
   o += "<h2>Numbers</h2>\n<table>\n";
   o += row("supply / ambient / mounting", fmt::format("{:.1f} V / {:.1f} degC / tilt {} deg", rq.voltage_V, rq.ambient_C,
                                                       rq.mounting_tilt_deg));
@@ -180,7 +191,7 @@ std::string cycle_report_html(const CycleRequest& rq, const CycleResult& r) {
   o += "</table>\n<h2>Plots</h2>\n";
   o += segment_time_plot(e);
   if (!e.trace.empty()) o += cycle_speed_torque_plot(rq, e);
-  o += temperature_plot(e.mean_loss_W, rq.ambient_C, rq.thermal_margin_K, e.time_to_trip_s, rq.module.thermal);
+  o += temperature_plot(e.mean_loss_W, rq.ambient_C, rq.thermal_margin_K, e.time_to_trip_s, rq.module.thermal, u);
   if (!e.trace.empty()) {
     svg::Plot q;
     q.id = "cycle-torque";
@@ -201,8 +212,9 @@ std::string cycle_report_html(const CycleRequest& rq, const CycleResult& r) {
   return o;
 }
 
-std::filesystem::path write_cycle_report(const std::filesystem::path& dir, const CycleRequest& rq, const CycleResult& r) {
-  return report_parts::write_index(dir, cycle_report_html(rq, r));
+std::filesystem::path write_cycle_report(const std::filesystem::path& dir, const CycleRequest& rq, const CycleResult& r,
+                                         const UncertaintyResult* u) {
+  return report_parts::write_index(dir, cycle_report_html(rq, r, u));
 }
 
 #else
@@ -210,11 +222,13 @@ std::filesystem::path write_cycle_report(const std::filesystem::path& dir, const
 namespace {
 [[noreturn]] void no_reports() { throw std::runtime_error("this build has no reports (SREH_WITH_RENDER=OFF)"); }
 } // namespace
-std::string temperature_plot(double, double, double, const std::optional<double>&, const ThermalConstants&) {
+std::string temperature_plot(double, double, double, const std::optional<double>&, const ThermalConstants&,
+                             const UncertaintyResult*) {
   no_reports();
 }
-std::string cycle_report_html(const CycleRequest&, const CycleResult&) { no_reports(); }
-std::filesystem::path write_cycle_report(const std::filesystem::path&, const CycleRequest&, const CycleResult&) {
+std::string cycle_report_html(const CycleRequest&, const CycleResult&, const UncertaintyResult*) { no_reports(); }
+std::filesystem::path write_cycle_report(const std::filesystem::path&, const CycleRequest&, const CycleResult&,
+                                         const UncertaintyResult*) {
   no_reports();
 }
 

@@ -1,5 +1,7 @@
 #include "sizing/report.hpp"
 
+#include "sizing/uncertainty.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <ostream>
@@ -176,12 +178,16 @@ void add_rms_point(svg::Plot& p, double rms_speed_dps, double rms_torque_Nm, dou
 
 bool reports_available() { return true; }
 
-std::string size_report_html(const SizingRequest& rq, const SizingResult& r) {
+std::string size_report_html(const SizingRequest& rq, const SizingResult& r, const UncertaintyResult* u) {
   const Evaluation& e = r.evaluation;
   std::string o = page_head(fmt::format("Sizing: {} deg, {:.0f} g cm^2, {:.1f} V", rq.angle_deg, e.load_gcm2, rq.voltage_V));
   // The verdict first (issue 29), from the figures the text and JSON print.
   o += report_parts::verdict_block({&e, r.feasible, r.binding_limit, rq.thermal_margin_K, rq.ambient_C, e.set.setting.speed_dps,
                                     e.load_gcm2});
+  if (u) {
+    o += report_parts::uncertainty_section(
+        *u, {e.positioning_s, e.settling_s, e.peak_torque_Nm, e.steady_temperature_C, std::nullopt});
+  }
   o += "<h2>Numbers (manual 3.5.2 terms)</h2>\n" + numbers_table(rq, r);
   o += "<h2>ISDU writes</h2>\n<pre>";
   for (const IsduWrite& w : e.set.writes) o += xml_escape(isdu_write_line(w)) + "\n";
@@ -228,6 +234,7 @@ std::string size_report_html(const SizingRequest& rq, const SizingResult& r) {
     q.hlines = {{cap, fmt::format("peak torque capability +-{:.3f} N m", cap), "#d62728", false},  {-cap, "", "#d62728", false},
                 {margin, fmt::format("{:.0f} % of capability (feasibility limit)", 100 * kTorqueMargin), "#9467bd", true},
                 {-margin, "", "#9467bd", true}};
+    if (u && u->banded > 0) q.bands.push_back(report_parts::peak_torque_band(*u));
     o += report::figure(q);
     o += speed_torque_plot(rq, e);
     svg::Plot te;
@@ -239,7 +246,7 @@ std::string size_report_html(const SizingRequest& rq, const SizingResult& r) {
     te.bands = {{{}, {}, -e.set.tolerance_deg, e.set.tolerance_deg, "tolerance window", "#2ca02c", 0.15}};
     o += report::figure(te);
   }
-  o += temperature_plot(e.mean_loss_W, rq.ambient_C, rq.thermal_margin_K, e.time_to_trip_s, rq.module.thermal);
+  o += temperature_plot(e.mean_loss_W, rq.ambient_C, rq.thermal_margin_K, e.time_to_trip_s, rq.module.thermal, u);
   o += "<p class=\"note\">Travel time from the device's planner; settling and positioning simulated; torque "
        "sampled per IO-Link cycle; temperature from the twin's lumped thermal model at the cycle's mean loss "
        "(docs/assumptions/sizing.md).</p>\n" + io::html_page_close();
@@ -247,8 +254,8 @@ std::string size_report_html(const SizingRequest& rq, const SizingResult& r) {
 }
 
 std::filesystem::path write_size_report(const std::filesystem::path& dir, const SizingRequest& rq,
-                                        const SizingResult& r) {
-  return write_index(dir, size_report_html(rq, r));
+                                        const SizingResult& r, const UncertaintyResult* u) {
+  return write_index(dir, size_report_html(rq, r, u));
 }
 
 std::string sweep_report_html(const SweepRequest& rq, const SweepResult& result, const std::vector<double>& targets) {
@@ -348,8 +355,11 @@ bool reports_available() { return false; }
 namespace {
 [[noreturn]] void no_reports() { throw std::runtime_error("this build has no reports (SREH_WITH_RENDER=OFF)"); }
 } // namespace
-std::string size_report_html(const SizingRequest&, const SizingResult&) { no_reports(); }
-std::filesystem::path write_size_report(const std::filesystem::path&, const SizingRequest&, const SizingResult&) { no_reports(); }
+std::string size_report_html(const SizingRequest&, const SizingResult&, const UncertaintyResult*) { no_reports(); }
+std::filesystem::path write_size_report(const std::filesystem::path&, const SizingRequest&, const SizingResult&,
+                                        const UncertaintyResult*) {
+  no_reports();
+}
 std::string sweep_report_html(const SweepRequest&, const SweepResult&, const std::vector<double>&) { no_reports(); }
 std::filesystem::path write_sweep_report(const std::filesystem::path&, const SweepRequest&, const SweepResult&,
                                          const std::vector<double>&) { no_reports(); }

@@ -4,11 +4,13 @@
 #pragma once
 #if SREH_SIZING_WITH_REPORT
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "renders/svg_plot.hpp"
+#include "sizing/report.hpp"
 #include "sizing/sizing.hpp"
 
 namespace sreh::sizing::report_parts {
@@ -58,6 +60,17 @@ std::string verdict_block(const VerdictInput& in);
 // the binding limit and the four bars of verdict_block, small; at most
 // `max_rows` rows.
 std::string verdict_table(const std::vector<std::pair<std::string, VerdictInput>>& points, std::size_t max_rows);
+
+// size --uncertainty on a page (report_uncertainty.cpp, issue 26): the
+// nominal figures the bands are read against (a cycle: the worst move's times
+// and the cycle time), the section with the table and the verdict over all
+// samples, and the peak torque's band for the torque plot.
+struct UncertainFigures {
+  double positioning_s = 0, settling_s = 0, peak_torque_Nm = 0, temperature_C = 0;
+  std::optional<double> cycle_s;
+};
+std::string uncertainty_section(const UncertaintyResult& u, const UncertainFigures& nominal);
+svg::Band peak_torque_band(const UncertaintyResult& u);
 
 } // namespace sreh::sizing::report_parts
 #endif

@@ -145,9 +145,14 @@ SizeOutcome run_cycle(const SizeOptions& a) {
   if (!a.model.empty()) rq.model_file = std::filesystem::absolute(a.model).lexically_normal().string(); // --emit-scenario names it
   rq.keep_trace = !a.report.empty();
   out.cycle_result = size_cycle(rq);
+  std::optional<UncertaintyResult> u;
+  if (a.uncertainty) {
+    u = cycle_uncertainty(rq, plan_sets(rq), out.cycle_result.settings, card_of(a), out.cycle_result.evaluation,
+                          a.samples, static_cast<uint64_t>(a.seed), io::usable_cpus());
+  }
   if (!a.report.empty()) {
     try {
-      write_cycle_report(a.report, rq, out.cycle_result);
+      write_cycle_report(a.report, rq, out.cycle_result, u ? &*u : nullptr);
     } catch (const std::runtime_error& e) {
       throw SizingInputError(fmt::format("--report {}: {}", a.report, e.what()));
     }
@@ -162,12 +167,7 @@ SizeOutcome run_cycle(const SizeOptions& a) {
   }
   out.feasible = out.cycle_result.evaluation.feasible;
   out.json = cycle_to_json(rq, out.cycle_result);
-  if (a.uncertainty) {
-    const UncertaintyResult u = cycle_uncertainty(rq, plan_sets(rq), out.cycle_result.settings, card_of(a),
-                                                  out.cycle_result.evaluation, a.samples, static_cast<uint64_t>(a.seed),
-                                                  io::usable_cpus());
-    add_uncertainty_json(out.json, u);
-  }
+  if (u) add_uncertainty_json(out.json, *u);
   io::round_figures(out.json); // issue 29: no float noise
   out.text = cycle_summary_text(rq, out.cycle_result);
   out.cycle = std::move(rq);
@@ -192,9 +192,14 @@ SizeOutcome run_size(const SizeOptions& a) {
   SizeOutcome out;
   out.request = make_request(a);
   out.result = size(out.request);
+  std::optional<UncertaintyResult> u;
+  if (a.uncertainty) {
+    u = size_uncertainty(out.request, card_of(a), out.result.evaluation, a.samples, static_cast<uint64_t>(a.seed),
+                         io::usable_cpus());
+  }
   if (!a.report.empty()) {
     try {
-      write_size_report(a.report, out.request, out.result);
+      write_size_report(a.report, out.request, out.result, u ? &*u : nullptr);
     } catch (const std::runtime_error& e) {
       throw SizingInputError(fmt::format("--report {}: {}", a.report, e.what()));
     }
@@ -208,11 +213,7 @@ SizeOutcome run_size(const SizeOptions& a) {
   }
   out.feasible = out.result.feasible;
   out.json = to_json(out.request, out.result);
-  if (a.uncertainty) {
-    const UncertaintyResult u = size_uncertainty(out.request, card_of(a), out.result.evaluation, a.samples,
-                                                 static_cast<uint64_t>(a.seed), io::usable_cpus());
-    add_uncertainty_json(out.json, u);
-  }
+  if (u) add_uncertainty_json(out.json, *u);
   io::round_figures(out.json); // issue 29: no float noise
   out.text = summary_text(out.request, out.result);
   return out;

@@ -70,15 +70,9 @@ Outcome outcome_of(const Evaluation& e) {
   return {e.completed, e.feasible, e.positioning_s, e.settling_s, e.peak_torque_Nm, e.steady_temperature_C, {}};
 }
 
-// A cycle's times are its worst move's.
 Outcome outcome_of(const CycleEvaluation& e) {
-  Outcome o{e.completed, e.feasible, 0, 0, e.peak_torque_Nm, e.steady_temperature_C, e.cycle_s};
-  for (const SegmentResult& s : e.segments) {
-    if (s.kind != "move") continue;
-    o.positioning_s = std::max(o.positioning_s, s.positioning_s);
-    o.settling_s = std::max(o.settling_s, s.settling_s);
-  }
-  return o;
+  const WorstMove w = worst_move(e);
+  return {e.completed, e.feasible, w.positioning_s, w.settling_s, e.peak_torque_Nm, e.steady_temperature_C, e.cycle_s};
 }
 
 UncertaintyResult bands(const ModelCard& card, int samples, uint64_t seed, const Outcome& nominal,
@@ -117,6 +111,16 @@ UncertaintyResult bands(const ModelCard& card, int samples, uint64_t seed, const
 }
 
 } // namespace
+
+WorstMove worst_move(const CycleEvaluation& e) {
+  WorstMove w;
+  for (const SegmentResult& s : e.segments) {
+    if (s.kind != "move") continue;
+    w.positioning_s = std::max(w.positioning_s, s.positioning_s);
+    w.settling_s = std::max(w.settling_s, s.settling_s);
+  }
+  return w;
+}
 
 UncertaintyResult size_uncertainty(const SizingRequest& request, const ModelCard& card, const Evaluation& nominal,
                                    int samples, uint64_t seed, int threads) {

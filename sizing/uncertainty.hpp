@@ -47,6 +47,13 @@ UncertaintyResult cycle_uncertainty(const CycleRequest& request, const CyclePlan
                                     const std::vector<MotionSetting>& settings, const ModelCard& card,
                                     const CycleEvaluation& nominal, int samples, uint64_t seed, int threads);
 
+// A cycle's times as the bands read them: its worst move's.
+struct WorstMove {
+  double positioning_s = 0;
+  double settling_s = 0;
+};
+WorstMove worst_move(const CycleEvaluation& evaluation);
+
 // `size --json` keys: positioning_s_range, settling_s_range,
 // peak_torque_Nm_range, max_temperature_C_range ([lo, hi]),
 // cycle_s_range (cycles), feasible_worst_case, and `uncertainty` {samples, seed, sampling, sampled, infeasible_samples}.

@@ -8,6 +8,7 @@
 
 #include "sizing/output.hpp"
 #include "sizing/report.hpp"
+#include "sizing/uncertainty.hpp"
 #include "tests/sizing/report_checks.hpp"
 
 namespace sreh::sizing {
@@ -93,6 +94,31 @@ TEST(Report, SizeReportOpensWithTheVerdictOfTheJson) {
   EXPECT_GE(limits, 2u);
   EXPECT_EQ(svg.find("off scale"), std::string::npos);
   EXPECT_NE(svg.find(">80<"), std::string::npos); // a tick at or above the trip
+}
+
+// size --report --uncertainty (issue 26): the bands on the page, read
+// against the nominal: a table with the ranges, shaded bands in the torque
+// and temperature plots; none of it without --uncertainty.
+TEST(Report, SizeReportShowsTheUncertaintyBands) {
+  if (!reports_available()) GTEST_SKIP() << "built without renders";
+  SizingRequest rq;
+  rq.angle_deg = 90;
+  rq.load = InertiaLoad{5000};
+  rq.setting = MotionSetting{2000, 100, 100};
+  rq.cycles = 1;
+  rq.keep_trace = true;
+  const SizingResult r = size(rq);
+  const UncertaintyResult u = size_uncertainty(rq, default_model_card(), r.evaluation, 4, 5, 2);
+  ASSERT_GT(u.banded, 0);
+  const std::string html = size_report_html(rq, r, &u);
+  EXPECT_NE(html.find("Over the model's uncertainty"), std::string::npos);
+  EXPECT_NE(html.find(fmt::format("<td>{:.3f}</td><td>{:.3f}</td>", u.peak_torque_Nm.lo, u.peak_torque_Nm.hi)),
+            std::string::npos);
+  EXPECT_NE(html.find("peak torque over the sampled models"), std::string::npos);
+  EXPECT_NE(html.find("steady temperature over the sampled models"), std::string::npos);
+  const std::string plain = size_report_html(rq, r);
+  EXPECT_EQ(plain.find("Over the model's uncertainty"), std::string::npos);
+  EXPECT_EQ(plain.find("over the sampled models"), std::string::npos);
 }
 
 TEST(Report, SweepReportHasBothPlots) {
