@@ -2,7 +2,7 @@
 # Quick start, command 2: install, build, run every test (unit tests, the
 # scenario suite, command-line checks) with CTest. CI runs this (.ci/run).
 #   ./test.sh              Release build in build/
-#   ./test.sh --sanitize   AddressSanitizer + UBSan build in build-asan/ (no rendering)
+#   ./test.sh --sanitize   AddressSanitizer + UBSan build in build-asan/ (clang, no rendering; with the fuzz targets)
 # Any other arguments go to ctest (e.g. -L scenario, -R Planner).
 # Tests are always configured on, whatever an earlier ./demo.sh left in the
 # CMake cache, and ctest refuses a run with no tests (issue 12).
@@ -13,7 +13,15 @@ config=(-DCMAKE_BUILD_TYPE=Release -DSREH_BUILD_TESTS=ON -DSREH_BUILD_BENCH=ON -
 if [ "${1:-}" = "--sanitize" ]; then
   shift
   build=build-asan
-  config=(-DCMAKE_BUILD_TYPE=Debug -DSREH_BUILD_TESTS=ON -DSREH_SANITIZE=ON -DSREH_WITH_RENDER=OFF -DSREH_BUILD_BENCH=OFF)
+  # clang: it compiles this build ~40 % faster than GCC, and the same build
+  # carries the libFuzzer targets (SREH_FUZZ), so CI's fuzz stage builds
+  # nothing of its own (SREH_FUZZ_BUILD=build-asan tests/fuzz/run.sh).
+  export CC=clang CXX=clang++
+  config=(-DCMAKE_BUILD_TYPE=Debug -DSREH_BUILD_TESTS=ON -DSREH_SANITIZE=ON -DSREH_FUZZ=ON -DSREH_WITH_RENDER=OFF -DSREH_BUILD_BENCH=OFF)
+  # A build-asan/ that an older test.sh configured with GCC cannot switch compilers.
+  if [ -f "$build/CMakeCache.txt" ] && ! grep -q "^CMAKE_CXX_COMPILER:.*clang" "$build/CMakeCache.txt"; then
+    rm -rf "$build"
+  fi
 fi
 ./setup.sh
 cmake -S . -B "$build" "${config[@]}"

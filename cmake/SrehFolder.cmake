@@ -31,5 +31,8 @@ function(sreh_gtest_folder name)
   add_executable(${name} ${sources})
   target_link_libraries(${name} PRIVATE ${ARG_DEPS} GTest::gtest_main GTest::gmock sreh_warnings)
   target_compile_definitions(${name} PRIVATE SREH_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  # Test code is glue around the libraries (compiled -O3, where the time is
+  # spent); at -O1 it compiles ~40 % faster, which keeps CI short.
+  target_compile_options(${name} PRIVATE $<$<CONFIG:Release>:-O1>)
   gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES LABELS unit)
 endfunction()

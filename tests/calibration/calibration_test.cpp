@@ -71,7 +71,7 @@ void expect_predicts_held_out(const ModelCard& fitted, const ModelCard& hidden, 
 
 // A fit of a minute of CPU in Release is several under AddressSanitizer:
 // the sanitizer stage (CI) runs the cheap fit below instead.
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(SREH_SANITIZED)
 constexpr bool kSanitized = true;
 #else
 constexpr bool kSanitized = false;
