@@ -5,12 +5,14 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <regex>
 #include <stdexcept>
 
 #include "device_logic/units.hpp"
 #include "twin/load_parts.hpp"
 #include "twin/mjcf_load.hpp"
+#include "twin/model_cache.hpp"
 
 namespace sreh {
 namespace {
@@ -324,11 +326,28 @@ std::string without_texture_detail(std::string xml) {
 
 BuiltModel build(const LoadSpec& load, const std::vector<HardStop>& hard_stops, double physics_dt_s,
                  const MechanicsConstants& mechanics, const std::string& module_model_path, bool for_rendering);
+
+// What a built model depends on (twin/model_cache.hpp).
+ModelKey model_key(const LoadSpec& load, const std::vector<HardStop>& hard_stops, double physics_dt_s,
+                   const MechanicsConstants& mechanics, const std::string& module_model_path, bool for_rendering) {
+  ComposedModel composed = compose_model(load, hard_stops, module_model_path);
+  return ModelKey{for_rendering ? std::move(composed.xml) : without_texture_detail(composed.xml),
+                  std::move(composed.files), physics_dt_s, mechanics};
+}
 } // namespace
 
+double built_load_inertia_kgm2(const LoadSpec& load, const std::vector<HardStop>& hard_stops, double physics_dt_s,
+                               const MechanicsConstants& mechanics, const std::string& module_model_path) {
+  // Coarse textures: the model a sizing twin runs (same key, one compile).
+  if (const auto kept = cached_figures(model_key(load, hard_stops, physics_dt_s, mechanics, module_model_path, false))) {
+    return kept->load_inertia_kgm2;
+  }
+  return build(load, hard_stops, physics_dt_s, mechanics, module_model_path, false).load_inertia_kgm2;
+}
+
 BuiltModel build_model(const LoadSpec& load, const std::vector<HardStop>& hard_stops, double physics_dt_s,
-                       const MechanicsConstants& mechanics, const std::string& module_model_path) {
-  return build(load, hard_stops, physics_dt_s, mechanics, module_model_path, true);
+                       const MechanicsConstants& mechanics, const std::string& module_model_path, bool visual_detail) {
+  return build(load, hard_stops, physics_dt_s, mechanics, module_model_path, visual_detail);
 }
 
 BuiltModel check_load(const LoadSpec& load) {
@@ -342,9 +361,10 @@ BuiltModel build(const LoadSpec& load, const std::vector<HardStop>& hard_stops, 
     throw std::invalid_argument("physics_dt_s must be positive, got " + num(physics_dt_s));
   }
   const std::string origin = describe_load(load);
+  ModelKey key = model_key(load, hard_stops, physics_dt_s, mechanics, module_model_path, for_rendering);
+  if (std::optional<BuiltModel> kept = cached_model(key)) return std::move(*kept); // issue 31: compiled once
   BuiltModel built;
-  const ComposedModel composed = compose_model(load, hard_stops, module_model_path);
-  built.model = compile_mjcf(for_rendering ? composed.xml : without_texture_detail(composed.xml), origin, composed.files);
+  built.model = compile_mjcf(key.xml, origin, key.files);
   mjModel* m = built.model.get();
   m->opt.timestep = physics_dt_s;
   apply_mechanics(m, mechanics, origin);
@@ -374,6 +394,7 @@ BuiltModel build(const LoadSpec& load, const std::vector<HardStop>& hard_stops, 
     throw std::invalid_argument(origin + ": load inertia about the axis is " + round_gcm2(load_gcm2) +
                                 " g cm^2, above the module's limit of 15000 g cm^2 (manual 3.5.6, 6.2 index 64.4)");
   }
+  remember_model(std::move(key), built);
   return built;
 }
 } // namespace
