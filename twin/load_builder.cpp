@@ -341,15 +341,16 @@ BuiltModel build(const LoadSpec& load, const std::vector<HardStop>& hard_stops, 
 // What a built model depends on (twin/model_cache.hpp).
 ModelKey model_key(const ComposedModel& composed, double physics_dt_s, const MechanicsConstants& mechanics,
                    Detail detail) {
-  std::string xml = detail == Detail::Full    ? composed.xml
-                    : detail == Detail::Coarse ? without_texture_detail(composed.xml)
-                                               : without_drawing_geoms(without_texture_detail(composed.xml));
-  return ModelKey{std::move(xml), composed.files, physics_dt_s, mechanics};
+  return ModelKey{composed.xml, composed.files, static_cast<int>(detail), physics_dt_s, mechanics};
 }
 
 // Compiled, with the card's drive train and the physics step (contacts only with hard stops).
 MjModelPtr compiled(const ModelKey& key, bool contacts, const std::string& origin) {
-  MjModelPtr model = compile_mjcf(key.xml, origin, key.files);
+  const auto detail = static_cast<Detail>(key.detail);
+  const std::string xml = detail == Detail::Full    ? key.xml
+                          : detail == Detail::Coarse ? without_texture_detail(key.xml)
+                                                     : without_drawing_geoms(without_texture_detail(key.xml));
+  MjModelPtr model = compile_mjcf(xml, origin, key.files);
   mjModel* m = model.get();
   m->opt.timestep = key.physics_dt_s;
   apply_mechanics(m, key.mechanics, origin);

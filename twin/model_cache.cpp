@@ -30,6 +30,7 @@ Cache& cache() {
 std::size_t hash_of(const ModelKey& key) {
   std::size_t h = std::hash<std::string>{}(key.xml);
   for (const VfsFile& f : key.files) h = h * 31 + std::hash<std::string>{}(f.bytes);
+  h = h * 31 + static_cast<std::size_t>(key.detail);
   return h;
 }
 

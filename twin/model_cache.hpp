@@ -15,11 +15,13 @@
 namespace sreh {
 
 // Everything a built model depends on (load_builder.cpp `build`): the
-// composed MJCF text as compiled, its files, the physics step, the card's
-// drive train. Content, not file names, so an edited load file is a new key.
+// composed MJCF text, its files, how much of it is kept for drawing, the
+// physics step, the card's drive train. Content, not file names, so an
+// edited load file is a new key.
 struct ModelKey {
   std::string xml;
   std::vector<VfsFile> files;
+  int detail = 0; // load_builder.cpp Detail: full, coarse textures, lean
   double physics_dt_s = 0;
   MechanicsConstants mechanics;
   bool operator==(const ModelKey&) const = default;
