@@ -178,16 +178,22 @@ std::optional<Evaluation> fastest(const SizingRequest& rq_in, double load_gcm2, 
   rq.max_cycle_ms.reset();
   std::vector<Candidate> cs = candidates(rq, load_gcm2);
   result.candidates += static_cast<int>(cs.size());
-  std::sort(cs.begin(), cs.end(), [](const Candidate& a, const Candidate& b) {
-    if (a.travel_s != b.travel_s) return a.travel_s < b.travel_s;
-    return std::tie(a.setting.accel_pct, a.setting.jerk_pct, a.setting.speed_dps) <
-           std::tie(b.setting.accel_pct, b.setting.jerk_pct, b.setting.speed_dps); // the gentler of equals
-  });
+  // Fastest travel first, the gentler of equals (settings are unique, so
+  // the order is total). A heap hands them out in that order without
+  // sorting all 21952: the search stops after a few hundred (issue 31).
+  const auto later = [](const Candidate& a, const Candidate& b) {
+    if (a.travel_s != b.travel_s) return a.travel_s > b.travel_s;
+    return std::tie(a.setting.accel_pct, a.setting.jerk_pct, a.setting.speed_dps) >
+           std::tie(b.setting.accel_pct, b.setting.jerk_pct, b.setting.speed_dps);
+  };
+  std::make_heap(cs.begin(), cs.end(), later);
   Runner runner{rq, load_gcm2, result, {}, {}, {}, {}};
   std::optional<Evaluation> best;
   const double wait_s = make_parameter_set(rq, MotionSetting{}, load_gcm2).wait_ms * 1e-3;
   const double fixed_s = fixed_per_move_s(rq, load_gcm2);
-  for (Candidate& c : cs) {
+  for (auto end = cs.end(); end != cs.begin(); --end) {
+    std::pop_heap(cs.begin(), end, later);
+    Candidate& c = *(end - 1);
     if (best && c.travel_s + wait_s >= best->positioning_s * (1 - kFastestTolerance)) break;
     with_proxies(rq, load_gcm2, fixed_s, c);
     if (runner.pruned(c)) continue;
