@@ -90,6 +90,8 @@ class ReplayCost final : public ceres::CostFunction {
     const double* x = parameters[0];
     if (!jacobians || !jacobians[0]) {
       residuals_into(cases_, card_at(start_, u_, x), residuals);
+      last_x_.assign(x, x + n); // Ceres asks for the Jacobian where a trial step succeeded
+      last_residuals_.assign(residuals, residuals + m);
       return true;
     }
     // Column 0: the point itself; columns 1 + 2i and 2 + 2i: constant i
@@ -100,7 +102,13 @@ class ReplayCost final : public ceres::CostFunction {
       up[i] = std::min(x[i] + step_, u_.hi[i]);
       down[i] = std::max(x[i] - step_, u_.lo[i]);
     }
-    io::parallel_for(2 * n + 1, threads_, [&](std::size_t j) {
+    // The point itself was replayed already when it was a trial step (the
+    // replay is deterministic): 2n replays instead of 2n + 1 (issue 31).
+    const bool known = last_x_.size() == n && std::equal(last_x_.begin(), last_x_.end(), x);
+    if (known) columns[0] = last_residuals_;
+    const std::size_t first = known ? 1 : 0;
+    io::parallel_for(2 * n + 1 - first, threads_, [&](std::size_t k) {
+      const std::size_t j = k + first;
       std::vector<double> xj(x, x + n);
       if (j > 0) xj[(j - 1) / 2] = (j % 2 == 1) ? up[(j - 1) / 2] : down[(j - 1) / 2];
       residuals_into(cases_, card_at(start_, u_, xj.data()), columns[j].data());
@@ -120,6 +128,9 @@ class ReplayCost final : public ceres::CostFunction {
   const Unknowns& u_;
   int threads_;
   double step_;
+  // The last point replayed without a Jacobian and its residuals (Ceres
+  // evaluates on one thread: options.num_threads = 1).
+  mutable std::vector<double> last_x_, last_residuals_;
 };
 
 double rms(const std::vector<double>& r) {

@@ -52,6 +52,7 @@ ReplaySetup replay_setup(const MasterLog& log, const LoadSpec& load, const Scena
   if (!std::holds_alternative<NoLoad>(load)) s.config.load = load;
   s.config.cycle_s = master_cycle_s(log, s.config.physics_dt_s);
   s.config.record_trace = false;
+  s.config.visual_detail = false; // never drawn: the lean model, faster builds and steps (issue 31, A-TWIN-42)
   return s;
 }
 

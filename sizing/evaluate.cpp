@@ -2,8 +2,9 @@
 // device only sees process data and ISDU): the set written to 64+n over
 // ISDU, Motor On, then 0 -> A -> 0 moves with the dwell after each Done.
 #include <algorithm>
-#include <utility>
 #include <cmath>
+#include <optional>
+#include <utility>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -16,6 +17,7 @@
 #include "device_logic/parameter_table.hpp"
 #include "device_logic/planner.hpp"
 #include "device_logic/units.hpp"
+#include "sizing/plc_handshake.hpp"
 #include "sizing/run_parts.hpp"
 #include "sizing/sizing.hpp"
 #include "sizing/thermal_estimate.hpp"
@@ -118,10 +120,112 @@ SupplyFigures supply_figures(const MotorModel& motor, const std::vector<TraceRow
   return f;
 }
 
+namespace {
+
+// Trace rows where the figures start (A-SIZE-8, A-SIZE-9).
+struct Rows {
+  std::size_t first_move = 0; // the first Move
+  std::size_t last_cycle = 0; // the last full back-and-forth cycle
+  std::size_t last_dwell = 0; // the last dwell
+};
+
+MoveResult move_result(const PlcHandshake::MoveEnd& end, double target_deg, double travel_s) {
+  MoveResult mr;
+  mr.target_deg = target_deg;
+  mr.travel_s = travel_s;
+  if (const std::optional<MoveRecord>& rec = end.record) {
+    mr.max_tracking_error_deg = rec->max_tracking_error_deg;
+    mr.overshoot_deg = rec->overshoot_deg;
+    mr.in_window_s = rec->in_window_s.value_or(-1);
+    mr.simulated_travel_s = rec->travel_s;
+    mr.completed = rec->completed() && end.in.done && !end.in.error;
+    if (mr.completed && rec->settling_s) {
+      // A-SIZE-7: settling as simulated, from the end of the trajectory (b)
+      // to Done (f); positioning = planned travel + settling (>= travel).
+      mr.settling_s = *rec->settling_s;
+      mr.positioning_s = travel_s + *rec->settling_s;
+    }
+  }
+  return mr;
+}
+
+// Motor On, then the moves 0 -> A -> 0 ... (A-SIZE-3) with the dwell after
+// each Done, until every move ran or one failed (its reason in `reasons`).
+Rows run_moves(Twin& twin, const SizingRequest& rq, const ParameterSetValues& set, double cycle_s, Evaluation& ev,
+               Reasons& reasons) {
+  PlcHandshake plc(twin);
+  if (auto failed = plc.switch_on(static_cast<uint8_t>(set.set))) reasons.add("switch_on", std::move(*failed));
+  const int32_t target_wire = static_cast<int32_t>(deg_to_wire_counts(rq.angle_deg));
+  const int move_cycles = cycles_for(ev.travel_s + set.timeout_ms * 1e-3 + kMoveSlack_s, cycle_s);
+  const double simulated_dwell_s = std::min(rq.dwell_s, kMaxSimulatedDwell_s);
+  const int dwell_cycles = std::max(1, cycles_for(simulated_dwell_s, cycle_s)); // Move must fall for one cycle (T7)
+  const int moves = 2 * std::max(1, rq.cycles);
+  Rows rows;
+  rows.first_move = twin.trace().size();
+  for (int i = 0; i < moves && reasons.list.empty(); ++i) {
+    if (i == moves - 2) rows.last_cycle = twin.trace().size();
+    const bool out = (i % 2) == 0;
+    const PlcHandshake::MoveEnd end = plc.move(out ? target_wire : 0, false, static_cast<uint8_t>(set.set), move_cycles);
+    ev.moves.push_back(move_result(end, out ? wire_counts_to_deg(target_wire) : 0.0, ev.travel_s));
+    const MoveResult& mr = ev.moves.back();
+    if (end.in.error) {
+      reasons.add(category_of_error(end.in.error_code),
+                  fmt::format("move {} to {} deg failed: {}", i + 1, mr.target_deg, error_text(end.in.error_code)));
+      break;
+    }
+    if (!end.ended || !mr.completed) {
+      reasons.add("settling", fmt::format("move {} to {} deg did not complete within {:.3f} s", i + 1, mr.target_deg,
+                                          move_cycles * cycle_s));
+      break;
+    }
+    plc.drop_move();
+    rows.last_dwell = twin.trace().size();
+    if (run_until(twin, [&] { return twin.pd_in().error; }, dwell_cycles)) {
+      reasons.add(category_of_error(twin.pd_in().error_code),
+                  fmt::format("after move {}: {}", i + 1, error_text(twin.pd_in().error_code)));
+    }
+    // Overshoot and the window entered for good are watched until the next move.
+    if (const std::optional<MoveRecord> rec = plc.last_record()) {
+      ev.moves.back().overshoot_deg = rec->overshoot_deg;
+      ev.moves.back().in_window_s = rec->in_window_s.value_or(-1);
+    }
+  }
+  return rows;
+}
+
+// RMS torque and mean loss over the last cycle; the unsimulated part of the
+// dwells (A-SIZE-9) counts with the mean of the last simulated dwell.
+void cycle_means(const SizingRequest& rq, const Thermal& thermal, const std::vector<TraceRow>& rows, const Rows& at,
+                 double cycle_s, Evaluation& ev) {
+  const MotorModel& motor = rq.module.drive.motor;
+  struct Sums { double torque_sq = 0, loss = 0; std::size_t n = 0; };
+  auto sums = [&](std::size_t from) {
+    Sums s;
+    for (std::size_t r = from; r < rows.size(); ++r) {
+      s.torque_sq += rows[r].torque_Nm * rows[r].torque_Nm;
+      s.loss += motor.copper_loss_W(rows[r].torque_Nm) + thermal.speed_loss_W(deg_to_rad(rows[r].velocity_dps));
+      ++s.n;
+    }
+    return s;
+  };
+  const Sums cycle = sums(at.last_cycle);
+  const Sums hold = sums(at.last_dwell);
+  const double extra_s = 2.0 * std::max(0.0, rq.dwell_s - std::min(rq.dwell_s, kMaxSimulatedDwell_s));
+  const double hold_sq = hold.n ? hold.torque_sq / static_cast<double>(hold.n) : 0.0;
+  const double hold_loss = hold.n ? hold.loss / static_cast<double>(hold.n) : 0.0;
+  const double sim_s = static_cast<double>(cycle.n) * cycle_s;
+  const double total_s = sim_s + extra_s;
+  if (total_s > 0) {
+    ev.rms_torque_Nm = std::sqrt((cycle.torque_sq * cycle_s + hold_sq * extra_s) / total_s);
+    ev.mean_loss_W = (cycle.loss * cycle_s + hold_loss * extra_s) / total_s;
+  }
+}
+
+} // namespace
+
 Evaluation evaluate(const SizingRequest& rq, const ParameterSetValues& set, bool keep_trace) {
   const TwinConfig cfg = sizing_twin_config(rq);
-  const std::unique_ptr<Twin> twin_owner = make_twin(cfg);
-  Twin& twin = *twin_owner;
+  Twin& twin = fresh_twin(cfg); // as make_twin(cfg) builds it (issue 31)
   const MotorModel& motor = rq.module.drive.motor;
   const Thermal thermal(cfg.thermal, rq.module.thermal);
 
@@ -142,73 +246,8 @@ Evaluation evaluate(const SizingRequest& rq, const ParameterSetValues& set, bool
                     .duration_s();
 
   Reasons reasons;
-  ProcessDataOut pd;
-  pd.motor_on = true;
-  pd.parameter_set = static_cast<uint8_t>(set.set);
-  twin.set_pd_out(pd);
-  if (!run_until(twin, [&] { return twin.pd_in().ready || twin.pd_in().error; }, kSwitchOnCycles) ||
-      !twin.pd_in().ready) {
-    reasons.add("switch_on", "motor did not switch on: " + error_text(twin.pd_in().error_code));
-  }
-
   const double cycle_s = cfg.cycle_s;
-  const int move_cycles = cycles_for(ev.travel_s + set.timeout_ms * 1e-3 + kMoveSlack_s, cycle_s);
-  const double simulated_dwell_s = std::min(rq.dwell_s, kMaxSimulatedDwell_s);
-  const int dwell_cycles = std::max(1, cycles_for(simulated_dwell_s, cycle_s)); // Move must fall for one cycle (T7)
-  const int moves = 2 * std::max(1, rq.cycles);
-  std::size_t last_cycle_row = 0; // trace row where the last full cycle starts
-  const std::size_t first_move_row = twin.trace().size();
-  std::size_t last_dwell_row = 0; // trace row where the last dwell starts
-  for (int i = 0; i < moves && reasons.list.empty(); ++i) {
-    if (i == moves - 2) last_cycle_row = twin.trace().size();
-    const bool out = (i % 2) == 0;
-    MoveResult mr;
-    mr.target_deg = out ? wire_counts_to_deg(target_wire) : 0.0;
-    mr.travel_s = ev.travel_s;
-    const std::size_t records_before = twin.moves().size();
-    pd.target_position = out ? target_wire : 0;
-    pd.move = true;
-    twin.set_pd_out(pd);
-    const bool ended = run_until(twin, [&] { const auto in = twin.pd_in(); return in.done || in.error; }, move_cycles);
-    const ProcessDataIn in = twin.pd_in();
-    if (twin.moves().size() > records_before) {
-      const MoveRecord& rec = twin.moves().back();
-      mr.max_tracking_error_deg = rec.max_tracking_error_deg;
-      mr.overshoot_deg = rec.overshoot_deg;
-      mr.in_window_s = rec.in_window_s.value_or(-1);
-      mr.simulated_travel_s = rec.travel_s;
-      mr.completed = rec.completed() && in.done && !in.error;
-      if (mr.completed && rec.settling_s) {
-        // A-SIZE-7: settling as simulated, from the end of the trajectory (b)
-        // to Done (f); positioning = planned travel + settling (>= travel).
-        mr.settling_s = *rec.settling_s;
-        mr.positioning_s = ev.travel_s + *rec.settling_s;
-      }
-    }
-    ev.moves.push_back(mr);
-    if (in.error) {
-      reasons.add(category_of_error(in.error_code),
-                  fmt::format("move {} to {} deg failed: {}", i + 1, mr.target_deg, error_text(in.error_code)));
-      break;
-    }
-    if (!ended || !mr.completed) {
-      reasons.add("settling", fmt::format("move {} to {} deg did not complete within {:.3f} s", i + 1, mr.target_deg,
-                                          move_cycles * cycle_s));
-      break;
-    }
-    pd.move = false;
-    twin.set_pd_out(pd);
-    last_dwell_row = twin.trace().size();
-    if (run_until(twin, [&] { return twin.pd_in().error; }, dwell_cycles)) {
-      reasons.add(category_of_error(twin.pd_in().error_code),
-                  fmt::format("after move {}: {}", i + 1, error_text(twin.pd_in().error_code)));
-    }
-    // Overshoot and the window entered for good are watched until the next move.
-    if (twin.moves().size() > records_before) {
-      ev.moves.back().overshoot_deg = twin.moves().back().overshoot_deg;
-      ev.moves.back().in_window_s = twin.moves().back().in_window_s.value_or(-1);
-    }
-  }
+  const Rows at = run_moves(twin, rq, set, cycle_s, ev, reasons);
   ev.sim_time_s = twin.time_s();
 
   // Worst move (A-SIZE-7).
@@ -223,35 +262,10 @@ Evaluation evaluate(const SizingRequest& rq, const ParameterSetValues& set, bool
 
   // Torque and losses from the trace (one sample per IO-Link cycle, A-SIZE-8).
   const std::vector<TraceRow>& rows = twin.trace();
-  const TorqueScan scan = scan_torque(rows, first_move_row, ev);
-  // Means over the last cycle; the unsimulated part of the dwells (A-SIZE-9)
-  // counts with the mean of the last simulated dwell.
-  struct Sums { double torque_sq = 0, loss = 0; std::size_t n = 0; };
-  auto sums = [&](std::size_t from) {
-    Sums s;
-    for (std::size_t r = from; r < rows.size(); ++r) {
-      s.torque_sq += rows[r].torque_Nm * rows[r].torque_Nm;
-      s.loss += motor.copper_loss_W(rows[r].torque_Nm) + thermal.speed_loss_W(deg_to_rad(rows[r].velocity_dps));
-      ++s.n;
-    }
-    return s;
-  };
-  const bool all_moves_ran = reasons.list.empty() && static_cast<int>(ev.moves.size()) == moves;
-  ev.completed = all_moves_ran;
-  if (all_moves_ran) {
-    const Sums cycle = sums(last_cycle_row);
-    const Sums hold = sums(last_dwell_row);
-    const double extra_s = 2.0 * std::max(0.0, rq.dwell_s - simulated_dwell_s);
-    const double hold_sq = hold.n ? hold.torque_sq / static_cast<double>(hold.n) : 0.0;
-    const double hold_loss = hold.n ? hold.loss / static_cast<double>(hold.n) : 0.0;
-    const double sim_s = static_cast<double>(cycle.n) * cycle_s;
-    const double total_s = sim_s + extra_s;
-    if (total_s > 0) {
-      ev.rms_torque_Nm = std::sqrt((cycle.torque_sq * cycle_s + hold_sq * extra_s) / total_s);
-      ev.mean_loss_W = (cycle.loss * cycle_s + hold_loss * extra_s) / total_s;
-    }
-  }
-  derive_figures(rq.module, rows, first_move_row, last_cycle_row, cycle_s, rq.ambient_C, rq.thermal_margin_K, ev);
+  const TorqueScan scan = scan_torque(rows, at.first_move, ev);
+  ev.completed = reasons.list.empty() && static_cast<int>(ev.moves.size()) == 2 * std::max(1, rq.cycles);
+  if (ev.completed) cycle_means(rq, thermal, rows, at, cycle_s, ev);
+  derive_figures(rq.module, rows, at.first_move, at.last_cycle, cycle_s, rq.ambient_C, rq.thermal_margin_K, ev);
   // Feasible with margin (A-SIZE-5); the same checks for a given set, for
   // every set the search tries and for cycles (judge(), limits.cpp).
   LimitFigures lf = limit_figures(ev, scan, rq.voltage_V, rq.ambient_C, rq.thermal_margin_K);

@@ -43,6 +43,7 @@ TwinConfig sizing_twin_config(const Request& rq) {
   cfg.thermal.ambient_C = rq.ambient_C;
   cfg.module = rq.module;
   cfg.record_trace = true;
+  cfg.visual_detail = false; // never rendered: coarse textures, faster builds (issue 31)
   return cfg;
 }
 

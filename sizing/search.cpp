@@ -44,19 +44,53 @@ struct Candidate {
   double rms_proxy = 0;     // RMS of the planned acceleration over one move, rad/s^2
   double heat_proxy = 0;    // mean of acc^2 over the whole cycle (moves, settling, handshakes, dwells)
   double torque_proxy = 0;  // max over the move of |acc| / motor capability at that speed (J-free)
+  bool proxies = false;     // the three proxies computed (with_proxies)
 };
 
 double round_tenth(double v) { return std::round(v * 10.0) / 10.0; } // the device stores 0.1 units
 
+double distance_rad(const SizingRequest& rq) {
+  return internal_counts_to_rad(deg_to_wire_counts(rq.angle_deg) * kInternalPerWireCount);
+}
+
+Profile planned(const SizingRequest& rq, const MotionSetting& s, double load_gcm2) {
+  return Profile::rest_to_rest(distance_rad(rq),
+                               limits_from_parameter_set(s.speed_dps, s.accel_pct, s.jerk_pct, load_gcm2));
+}
+
+// The proxies of a candidate from its planned move (planned again: the
+// planner is deterministic). The fastest search needs them only for the
+// candidates it reaches (issue 31: computing them for all 21952 grid points
+// was ~10 % of a sweep's CPU time), the gentlest one for all.
+void with_proxies(const SizingRequest& rq, double load_gcm2, double fixed_s, Candidate& c) {
+  if (c.proxies) return;
+  const MotorModel& motor = rq.module.drive.motor;
+  const Profile p = planned(rq, c.setting, load_gcm2);
+  constexpr int kSamples = 48;
+  double sq = 0;
+  for (int k = 0; k < kSamples; ++k) {
+    const KinematicState st = p.at((k + 0.5) * p.duration_s() / kSamples);
+    sq += st.acc * st.acc;
+    const double cap = motor.max_torque_Nm(std::abs(st.vel), rq.voltage_V, st.acc * st.vel >= 0 ? 1.0 : -1.0);
+    c.torque_proxy = std::max(c.torque_proxy, std::abs(st.acc) / std::max(cap, 1e-6));
+  }
+  c.rms_proxy = std::sqrt(sq / kSamples);
+  c.heat_proxy = sq / kSamples * c.travel_s / (c.travel_s + fixed_s);
+  c.proxies = true;
+}
+
+// Per move, besides travel: the waiting time, the handshake and the dwell.
+double fixed_per_move_s(const SizingRequest& rq, double load_gcm2) {
+  return make_parameter_set(rq, MotionSetting{}, load_gcm2).wait_ms * 1e-3 +
+         rq.handshake_cycles * TwinConfig{}.cycle_s + rq.dwell_s;
+}
+
 // Every grid point with its planned travel; speeds the move never reaches
 // collapse into the lowest such speed (same trajectory, same behaviour).
 std::vector<Candidate> candidates(const SizingRequest& rq, double load_gcm2) {
-  const MotorModel& motor = rq.module.drive.motor;
-  const double fixed_s = make_parameter_set(rq, MotionSetting{}, load_gcm2).wait_ms * 1e-3 +
-                         rq.handshake_cycles * TwinConfig{}.cycle_s + rq.dwell_s; // per move, besides travel
   const double v_top = voltage_speed_limit_dps(rq.voltage_V);
-  const double distance_rad = internal_counts_to_rad(deg_to_wire_counts(rq.angle_deg) * kInternalPerWireCount);
   std::vector<Candidate> out;
+  out.reserve(std::size(kLevels_pct) * std::size(kLevels_pct) * std::size(kLevels_pct));
   for (double a : kLevels_pct) {
     for (double j : kLevels_pct) {
       bool unreached_taken = false;
@@ -64,23 +98,15 @@ std::vector<Candidate> candidates(const SizingRequest& rq, double load_gcm2) {
       for (auto it = std::rbegin(kLevels_pct); it != std::rend(kLevels_pct); ++it) {
         const MotionSetting s{round_tenth(v_top * *it / 100.0), a, j};
         if (s.speed_dps < 0.1) continue;
-        const Profile p = Profile::rest_to_rest(distance_rad, limits_from_parameter_set(s.speed_dps, a, j, load_gcm2));
+        const Profile p = planned(rq, s, load_gcm2);
         const bool reached = std::abs(p.peak_velocity_rad_s()) >= deg_to_rad(s.speed_dps) * (1 - 1e-9);
         if (!reached) {
           if (unreached_taken) continue;
           unreached_taken = true;
         }
-        Candidate c{s, p.duration_s(), 0, 0, 0};
-        constexpr int kSamples = 48;
-        double sq = 0;
-        for (int k = 0; k < kSamples; ++k) {
-          const KinematicState st = p.at((k + 0.5) * p.duration_s() / kSamples);
-          sq += st.acc * st.acc;
-          const double cap = motor.max_torque_Nm(std::abs(st.vel), rq.voltage_V, st.acc * st.vel >= 0 ? 1.0 : -1.0);
-          c.torque_proxy = std::max(c.torque_proxy, std::abs(st.acc) / std::max(cap, 1e-6));
-        }
-        c.rms_proxy = std::sqrt(sq / kSamples);
-        c.heat_proxy = sq / kSamples * c.travel_s / (c.travel_s + fixed_s);
+        Candidate c;
+        c.setting = s;
+        c.travel_s = p.duration_s();
         out.push_back(c);
       }
     }
@@ -152,16 +178,24 @@ std::optional<Evaluation> fastest(const SizingRequest& rq_in, double load_gcm2, 
   rq.max_cycle_ms.reset();
   std::vector<Candidate> cs = candidates(rq, load_gcm2);
   result.candidates += static_cast<int>(cs.size());
-  std::sort(cs.begin(), cs.end(), [](const Candidate& a, const Candidate& b) {
-    if (a.travel_s != b.travel_s) return a.travel_s < b.travel_s;
-    return std::tie(a.setting.accel_pct, a.setting.jerk_pct, a.setting.speed_dps) <
-           std::tie(b.setting.accel_pct, b.setting.jerk_pct, b.setting.speed_dps); // the gentler of equals
-  });
+  // Fastest travel first, the gentler of equals (settings are unique, so
+  // the order is total). A heap hands them out in that order without
+  // sorting all 21952: the search stops after a few hundred (issue 31).
+  const auto later = [](const Candidate& a, const Candidate& b) {
+    if (a.travel_s != b.travel_s) return a.travel_s > b.travel_s;
+    return std::tie(a.setting.accel_pct, a.setting.jerk_pct, a.setting.speed_dps) >
+           std::tie(b.setting.accel_pct, b.setting.jerk_pct, b.setting.speed_dps);
+  };
+  std::make_heap(cs.begin(), cs.end(), later);
   Runner runner{rq, load_gcm2, result, {}, {}, {}, {}};
   std::optional<Evaluation> best;
   const double wait_s = make_parameter_set(rq, MotionSetting{}, load_gcm2).wait_ms * 1e-3;
-  for (const Candidate& c : cs) {
+  const double fixed_s = fixed_per_move_s(rq, load_gcm2);
+  for (auto end = cs.end(); end != cs.begin(); --end) {
+    std::pop_heap(cs.begin(), end, later);
+    Candidate& c = *(end - 1);
     if (best && c.travel_s + wait_s >= best->positioning_s * (1 - kFastestTolerance)) break;
+    with_proxies(rq, load_gcm2, fixed_s, c);
     if (runner.pruned(c)) continue;
     if (result.simulations >= kMaxRuns) break;
     Evaluation ev = runner.run(c);
@@ -210,6 +244,8 @@ SizingResult search_gentlest(const SizingRequest& rq, double load_gcm2) {
   std::vector<Candidate> cs = candidates(rq, load_gcm2);
   result.candidates = static_cast<int>(cs.size());
   std::erase_if(cs, [&](const Candidate& c) { return c.travel_s + wait_s > max_pos_s; });
+  const double fixed_s = fixed_per_move_s(rq, load_gcm2);
+  for (Candidate& c : cs) with_proxies(rq, load_gcm2, fixed_s, c);
   // Lowest RMS first: the planned acceleration's RMS over the whole cycle,
   // a proxy of the RMS torque the twin then measures.
   auto cycle_proxy = [&](const Candidate& c) { return std::sqrt(c.heat_proxy); };

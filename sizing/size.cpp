@@ -1,13 +1,14 @@
 // validate(), and size(): evaluate the given set, or search (search.cpp,
 // A-SIZE-10) the fastest feasible one or the gentlest one meeting a target.
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include <fmt/format.h>
 
 #include "device_logic/units.hpp"
 #include "sizing/sizing.hpp"
-#include "sizing/twin_factory.hpp"
+#include "twin/load_builder.hpp"
 #include "twin/model_card.hpp"
 
 namespace sreh::sizing {
@@ -69,10 +70,15 @@ double validate(const SizingRequest& rq) {
           j->inertia_gcm2));
     }
   }
-  TwinConfig cfg;
-  cfg.load = rq.load;
-  cfg.record_trace = false;
-  const double load = make_twin(cfg)->load_inertia_gcm2(); // the twin refuses > 15000 g cm^2 itself
+  // The load as a default twin builds it (the twin refuses > 15000 g cm^2
+  // itself); from the model cache after the first time (issue 31).
+  double load = 0;
+  try {
+    const TwinConfig cfg;
+    load = kgm2_to_gcm2(built_load_inertia_kgm2(rq.load, cfg.hard_stops, cfg.physics_dt_s, cfg.module.mechanics));
+  } catch (const std::invalid_argument& e) {
+    throw SizingInputError(e.what());
+  }
   if (load > kMaxLoad_gcm2 + 1e-6) {
     throw SizingInputError(fmt::format("load inertia {:.1f} g cm^2 is above the module's limit of 15000 g cm^2 "
                                        "(manual 3.5.6, 6.2 index 64.4)", load));

@@ -5,12 +5,15 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <regex>
 #include <stdexcept>
 
 #include "device_logic/units.hpp"
 #include "twin/load_parts.hpp"
 #include "twin/mjcf_load.hpp"
+#include "twin/model_cache.hpp"
+#include "twin/model_lean.hpp"
 
 namespace sreh {
 namespace {
@@ -322,35 +325,79 @@ std::string without_texture_detail(std::string xml) {
   return out + xml.substr(last);
 }
 
+// How much of the module a model keeps for drawing: full textures
+// (renderers), coarse textures (checks, figures), or neither textures nor
+// drawing geoms (twins never drawn, without contacts: twin/model_lean.hpp).
+enum class Detail { Full, Coarse, Lean };
+
+Detail detail_for(bool visual_detail, const std::vector<HardStop>& hard_stops) {
+  if (visual_detail) return Detail::Full;
+  return hard_stops.empty() ? Detail::Lean : Detail::Coarse; // with hard stops the geoms touch
+}
+
 BuiltModel build(const LoadSpec& load, const std::vector<HardStop>& hard_stops, double physics_dt_s,
-                 const MechanicsConstants& mechanics, const std::string& module_model_path, bool for_rendering);
+                 const MechanicsConstants& mechanics, const std::string& module_model_path, Detail detail);
+
+// What a built model depends on (twin/model_cache.hpp).
+ModelKey model_key(const ComposedModel& composed, double physics_dt_s, const MechanicsConstants& mechanics,
+                   Detail detail) {
+  return ModelKey{composed.xml, composed.files, static_cast<int>(detail), physics_dt_s, mechanics};
+}
+
+// Compiled, with the card's drive train and the physics step (contacts only with hard stops).
+MjModelPtr compiled(const ModelKey& key, bool contacts, const std::string& origin) {
+  const auto detail = static_cast<Detail>(key.detail);
+  const std::string xml = detail == Detail::Full    ? key.xml
+                          : detail == Detail::Coarse ? without_texture_detail(key.xml)
+                                                     : without_drawing_geoms(without_texture_detail(key.xml));
+  MjModelPtr model = compile_mjcf(xml, origin, key.files);
+  mjModel* m = model.get();
+  m->opt.timestep = key.physics_dt_s;
+  apply_mechanics(m, key.mechanics, origin);
+  if (!contacts) {
+    m->opt.disableflags |= mjDSBL_CONTACT; // nothing can touch: skip collision detection
+  }
+  return model;
+}
 } // namespace
 
+double built_load_inertia_kgm2(const LoadSpec& load, const std::vector<HardStop>& hard_stops, double physics_dt_s,
+                               const MechanicsConstants& mechanics, const std::string& module_model_path) {
+  // The model a sizing twin runs (same key, one compile for both).
+  const Detail detail = detail_for(false, hard_stops);
+  const ComposedModel composed = compose_model(load, hard_stops, module_model_path);
+  if (const auto kept = cached_figures(model_key(composed, physics_dt_s, mechanics, detail))) {
+    return kept->load_inertia_kgm2;
+  }
+  return build(load, hard_stops, physics_dt_s, mechanics, module_model_path, detail).load_inertia_kgm2;
+}
+
 BuiltModel build_model(const LoadSpec& load, const std::vector<HardStop>& hard_stops, double physics_dt_s,
-                       const MechanicsConstants& mechanics, const std::string& module_model_path) {
-  return build(load, hard_stops, physics_dt_s, mechanics, module_model_path, true);
+                       const MechanicsConstants& mechanics, const std::string& module_model_path, bool visual_detail) {
+  return build(load, hard_stops, physics_dt_s, mechanics, module_model_path, detail_for(visual_detail, hard_stops));
 }
 
 BuiltModel check_load(const LoadSpec& load) {
-  return build(load, {}, 1e-4, default_module_model().mechanics, default_module_model_path(), false);
+  return build(load, {}, 1e-4, default_module_model().mechanics, default_module_model_path(), Detail::Coarse);
 }
 
 namespace {
 BuiltModel build(const LoadSpec& load, const std::vector<HardStop>& hard_stops, double physics_dt_s,
-                 const MechanicsConstants& mechanics, const std::string& module_model_path, bool for_rendering) {
+                 const MechanicsConstants& mechanics, const std::string& module_model_path, Detail detail) {
   if (!(physics_dt_s > 0.0) || !std::isfinite(physics_dt_s)) {
     throw std::invalid_argument("physics_dt_s must be positive, got " + num(physics_dt_s));
   }
   const std::string origin = describe_load(load);
-  BuiltModel built;
   const ComposedModel composed = compose_model(load, hard_stops, module_model_path);
-  built.model = compile_mjcf(for_rendering ? composed.xml : without_texture_detail(composed.xml), origin, composed.files);
-  mjModel* m = built.model.get();
-  m->opt.timestep = physics_dt_s;
-  apply_mechanics(m, mechanics, origin);
-  if (hard_stops.empty()) {
-    m->opt.disableflags |= mjDSBL_CONTACT; // nothing can touch: skip collision detection
+  ModelKey key = model_key(composed, physics_dt_s, mechanics, detail);
+  if (std::optional<BuiltModel> kept = cached_model(key)) return std::move(*kept); // issue 31: compiled once
+  BuiltModel built;
+  built.model = compiled(key, !hard_stops.empty(), origin);
+  if (detail == Detail::Lean) { // A-TWIN-42: lean only where it steps exactly as the full model
+    MjModelPtr coarse = compiled(model_key(composed, physics_dt_s, mechanics, Detail::Coarse), !hard_stops.empty(), origin);
+    if (!same_dynamics(built.model.get(), coarse.get())) built.model = std::move(coarse);
   }
+  mjModel* m = built.model.get();
   // The module's own joints: "rotor" and "flange" (the compliance).
   if (m->njnt != 2) {
     throw std::invalid_argument(origin + ": a load must be rigid, but it adds " + std::to_string(m->njnt - 2) +
@@ -374,6 +421,7 @@ BuiltModel build(const LoadSpec& load, const std::vector<HardStop>& hard_stops, 
     throw std::invalid_argument(origin + ": load inertia about the axis is " + round_gcm2(load_gcm2) +
                                 " g cm^2, above the module's limit of 15000 g cm^2 (manual 3.5.6, 6.2 index 64.4)");
   }
+  remember_model(std::move(key), built);
   return built;
 }
 } // namespace

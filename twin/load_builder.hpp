@@ -54,10 +54,20 @@ struct BuiltModel {
 // and checks the load: inertia about the axis <= 15'000 g cm^2, rigid (no
 // joints of its own). Throws std::invalid_argument naming the load or file.
 // The drive train's constants (rotor inertia, compliance, friction) come
-// from the model card: `mechanics` (issue 25).
+// from the model card: `mechanics` (issue 25). Without `visual_detail` the
+// module's textures are left coarse (a model that is never rendered).
 BuiltModel build_model(const LoadSpec& load, const std::vector<HardStop>& hard_stops, double physics_dt_s,
                        const MechanicsConstants& mechanics = default_module_model().mechanics,
-                       const std::string& module_model_path = default_module_model_path());
+                       const std::string& module_model_path = default_module_model_path(),
+                       bool visual_detail = true);
+
+// build_model's load_inertia_kgm2 (after the same checks, the same
+// exceptions), without a model to keep: from the model cache when the same
+// world was built before (twin/model_cache.hpp), so a check costs no copy.
+// Built with coarse textures, as a sizing twin is (one compile for both).
+double built_load_inertia_kgm2(const LoadSpec& load, const std::vector<HardStop>& hard_stops, double physics_dt_s,
+                               const MechanicsConstants& mechanics = default_module_model().mechanics,
+                               const std::string& module_model_path = default_module_model_path());
 
 // build_model with the model card's defaults, for checks and figures that
 // never render: the module's textures are left coarse (7x faster to compile).

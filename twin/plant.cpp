@@ -47,7 +47,7 @@ Plant::Plant(const PlantConfig& config)
     throw std::invalid_argument("mounting tilt_deg must be within -180 .. 180, got " + std::to_string(config.mounting_tilt_deg));
   }
   adopt_model(build_model(config.load, config.hard_stops, config.physics_dt_s, config.module.mechanics,
-                          config.module_model_path));
+                          config.module_model_path, config.visual_detail));
   sensors_.encoder_counts = 0;
   sensors_.supply_V = supply_.bus_voltage_V();
   sensors_.temperature_C = thermal_.sensor_C();

@@ -10,7 +10,8 @@ namespace sreh {
 
 void Plant::set_load(const LoadSpec& load) {
   // Build first: a load the module cannot carry throws and nothing changes.
-  BuiltModel built = build_model(load, config_.hard_stops, dt_s_, config_.module.mechanics, config_.module_model_path);
+  BuiltModel built = build_model(load, config_.hard_stops, dt_s_, config_.module.mechanics, config_.module_model_path,
+                                 config_.visual_detail);
   const mjModel* old_m = model_.get();
   const mjData* old_d = data_.get();
   const double rotor_q = old_d->qpos[rotor_qpos_], twist_q = old_d->qpos[twist_qpos_];

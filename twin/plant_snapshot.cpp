@@ -61,7 +61,8 @@ void Plant::restore(const PlantSnapshot& s) {
     }
   };
   if (!(s.world.load == config_.load)) {
-    BuiltModel built = build_model(s.world.load, config_.hard_stops, dt_s_, config_.module.mechanics, config_.module_model_path);
+    BuiltModel built = build_model(s.world.load, config_.hard_stops, dt_s_, config_.module.mechanics,
+                                   config_.module_model_path, config_.visual_detail);
     check_fits(MjDataPtr(mj_makeData(built.model.get())).get());
     adopt_model(std::move(built));
     config_.load = s.world.load;

@@ -41,6 +41,7 @@ int periods_per_cycle(double cycle_s, double control_period_s) {
 PlantConfig plant_config(const TwinConfig& c) {
   PlantConfig p;
   static_cast<WorldSpec&>(p) = c; // the world is one struct (twin/specs.hpp)
+  p.visual_detail = c.visual_detail;
   return p;
 }
 

@@ -32,6 +32,9 @@ struct TwinConfig : WorldSpec {
   // When set, every finished move record goes here instead, in order; moves()
   // keeps only the record still open or held (memory flat with run length).
   std::function<void(const MoveRecord&)> move_sink;
+  // The module's textures at full size, for renderers; false for a twin
+  // never drawn (sizing): faster to build (PlantConfig::visual_detail).
+  bool visual_detail = true;
 };
 
 class Plant; // twin/plant.hpp
