@@ -2,7 +2,11 @@
 // due by integer index, output written atomically (F.tmp renamed).
 #include <gtest/gtest.h>
 
+#include <png.h>
+
 #include <fstream>
+
+#include <fmt/format.h>
 
 #include "render_fixture.hpp"
 #include "renders/video.hpp"
@@ -143,14 +147,13 @@ TEST_F(VideoTest, RejectsBadOptions) {
   EXPECT_TRUE(fs::exists(dir_ / "full" / "keep.txt"));
 }
 
-TEST(OverlayLines, ShowStepTargetSetCodesAndTimeScale) {
+TEST(OverlayLines, ShowStepTargetSetAndCodesButNotTheTimeScale) {
   FrameInfo f;
   f.row.t_s = 1.5;
   f.row.state = State::ErrorOn;
   f.row.error_code = 0x08;
   f.step = "4 wait_until";
   f.row.pd_out = encode(ProcessDataOut{.target_position = 16384, .parameter_set = 2}); // 90 deg (2^16 counts/rev)
-  f.time_scale = "slow motion 20x";
   const auto lines = overlay_lines(f);
   auto value = [&](const std::string& label) {
     for (const auto& [l, v] : lines)
@@ -159,15 +162,54 @@ TEST(OverlayLines, ShowStepTargetSetCodesAndTimeScale) {
   };
   EXPECT_EQ(value("t"), "1.5000 s");
   EXPECT_EQ(value("state"), "ErrorOn");
-  EXPECT_EQ(value("step"), "4 wait_until");
-  EXPECT_EQ(value("target"), "90.000 deg");
-  EXPECT_EQ(value("parameter set"), "2");
-  EXPECT_EQ(value("error / warning"), "0x08 / none");
-  EXPECT_EQ(value("time scale"), "slow motion 20x");
-  EXPECT_EQ(value("LED band"), "off");
-  f.time_scale.clear();
+  EXPECT_EQ(value(""), "step 4 wait_until"); // spans both columns
+  EXPECT_EQ(value("target"), "90.00 deg");
+  EXPECT_EQ(value("set"), "2");
+  EXPECT_EQ(value("err/warn"), "0x08/none");
+  EXPECT_EQ(value("LED"), "off");
+  // Issue 29: the time scale is the banner's alone, never a row as well.
+  for (const auto& [l, v] : lines) EXPECT_EQ(v.find("slow motion"), std::string::npos) << l;
   f.step.clear();
-  EXPECT_EQ(overlay_lines(f).size(), lines.size() - 2);
+  EXPECT_EQ(overlay_lines(f).size(), lines.size() - 1);
+}
+
+// Issue 29: the title card comes first for title_s, then the run's frames
+// at their usual indices shifted by the card's length.
+TEST_F(VideoTest, TitleCardPrecedesTheRunsFirstFrame) {
+  VideoOptions o = small({});
+  o.frames_dir = dir_ / "titled";
+  o.title = TitleCard{"a scenario", {{"load", "no load"}, {"set 1", "360 deg/s, accel 100 %, jerk 100 %"}}};
+  o.fps = 10;
+  o.title_s = 0.5;
+  VideoRecorder rec(md_.m, o);
+  EXPECT_EQ(rec.title_frames(), 5u); // 0.5 s at 10 fps
+  drive(rec, md_, 50);
+  const uint64_t run_frames = rec.frames_emitted() - rec.title_frames();
+  rec.finish();
+  std::size_t pngs = 0;
+  for (const auto& e : fs::directory_iterator(dir_ / "titled")) pngs += e.path().extension() == ".png" ? 1 : 0;
+  EXPECT_EQ(pngs, rec.frames_emitted());
+  EXPECT_GT(run_frames, 0u);
+  // The card (frames 0..4) is one image, the dimmed scene with text: many
+  // pixels differ from the run's first frame.
+  auto pixels = [&](uint64_t k) {
+    png_image png{};
+    png.version = PNG_IMAGE_VERSION;
+    const std::string file = (dir_ / "titled" / fmt::format("frame_{:06d}.png", k)).string();
+    std::vector<uint8_t> raw;
+    if (!png_image_begin_read_from_file(&png, file.c_str())) return raw;
+    png.format = PNG_FORMAT_GRAY;
+    raw.resize(PNG_IMAGE_SIZE(png));
+    if (!png_image_finish_read(&png, nullptr, raw.data(), 0, nullptr)) raw.clear();
+    return raw;
+  };
+  const std::vector<uint8_t> card = pixels(0), run = pixels(5);
+  ASSERT_EQ(card.size(), 160u * 120u);
+  ASSERT_EQ(run.size(), card.size());
+  EXPECT_EQ(pixels(4), card);
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < card.size(); ++i) differ += std::abs(card[i] - run[i]) > 12 ? 1 : 0;
+  EXPECT_GT(differ, card.size() / 4);
 }
 
 } // namespace
