@@ -38,7 +38,7 @@ struct VideoOptions {
   bool shadows = false;
   int shadow_size = 2048;
   bool reflections = false;
-  std::string x264_preset = "fast";
+  std::string x264_preset = "veryfast";
   int crf = 20;
   bool threaded = true;             // false: render and write on the caller's thread (the reference loop)
   bool overlay = true;
