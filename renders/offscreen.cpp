@@ -230,6 +230,12 @@ struct OffscreenRenderer::Impl {
   int ghost_mocap = -1;
   bool framed = false;
   bool sky_decided = false; // with the framing: see table_fills_view()
+  // redraw_changed_only: the image holds the last frame (no title card);
+  // the box that can change (pixels, origin bottom-left) and the overlay
+  // rectangles the last frame drew.
+  bool retained = false;
+  std::optional<mjrRect> scene_box;
+  mjrRect last_panel{0, 0, 0, 0}, last_banner{0, 0, 0, 0};
 
   void make_current() {
     if (!OSMesaMakeCurrent(osmesa, osmesa_buffer.data(), GL_UNSIGNED_BYTE, options.width_px, options.height_px)) {
@@ -494,6 +500,83 @@ struct OffscreenRenderer::Impl {
     return true;
   }
 
+  // The overlay's rectangles in GL pixels (origin bottom-left).
+  mjrRect panel_rect(const SceneState& state) const {
+    const OverlayPanel p = panel_for(state);
+    return {p.x, options.height_px - p.y - p.height, p.width, p.height};
+  }
+  mjrRect banner_rect(const std::string& banner) const {
+    if (banner.empty()) return {0, 0, 0, 0};
+    const bool big = banner_big();
+    const int ch = con.charHeight, h = (big ? con.charHeightBig : con.charHeight) + 2 * (ch / 4);
+    const int w = text_width(banner, big) + 2 * (ch / 3);
+    return {options.width_px - w - ch / 3, options.height_px - ch / 3 - h, w, h};
+  }
+
+  // Everything that turns, moves or changes colour lies in the hull of
+  // hull_points (rotation-invariant): its bounding box on screen, widened
+  // for the labels written right of and above their anchors. Fixed once
+  // the camera is.
+  mjrRect changing_box(const mjModel* m, const mjData* d) {
+    if (scene_box) return *scene_box;
+    const mjvGLCamera& c = scn.camera[0];
+    double right[3];
+    const double fwd[3] = {c.forward[0], c.forward[1], c.forward[2]}, up[3] = {c.up[0], c.up[1], c.up[2]};
+    mju_cross(right, fwd, up);
+    const double w = options.width_px, h = options.height_px;
+    const double px = (c.frustum_top - c.frustum_bottom) / h; // frustum units per pixel at the near plane
+    const double left = c.frustum_center - 0.5 * px * w;
+    double x0 = w, x1 = 0, y0 = h, y1 = 0;
+    for (const auto& p : hull_points(m, d, flange_jnt, ghost_body)) {
+      const double rel[3] = {p[0] - c.pos[0], p[1] - c.pos[1], p[2] - c.pos[2]};
+      const double z = std::max(mju_dot3(rel, fwd), 1e-6);
+      const double x = (mju_dot3(rel, right) * c.frustum_near / z - left) / px;
+      const double y = (mju_dot3(rel, up) * c.frustum_near / z - c.frustum_bottom) / px;
+      x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+    }
+    const int ch = con.charHeight;
+    const int l = std::clamp(static_cast<int>(x0) - ch, 0, options.width_px);
+    const int r = std::clamp(static_cast<int>(x1) + text_width("flange = setpoint", false) + ch, 0, options.width_px);
+    const int b = std::clamp(static_cast<int>(y0) - ch, 0, options.height_px);
+    const int t = std::clamp(static_cast<int>(y1) + 2 * ch, 0, options.height_px);
+    scene_box = mjrRect{l, b, std::max(0, r - l), std::max(0, t - b)};
+    return *scene_box;
+  }
+
+  // Renders only `box` of the frame: the camera's frustum narrowed to it,
+  // so the pixels match the full frame's (issue 31).
+  void render_box(const mjrRect& box) {
+    if (box.width <= 0 || box.height <= 0) return;
+    mjvGLCamera full[2] = {scn.camera[0], scn.camera[1]};
+    for (int e = 0; e < 2; ++e) {
+      mjvGLCamera& c = scn.camera[e];
+      const float px = (full[e].frustum_top - full[e].frustum_bottom) / static_cast<float>(options.height_px);
+      c.frustum_bottom = full[e].frustum_bottom + px * static_cast<float>(box.bottom);
+      c.frustum_top = full[e].frustum_bottom + px * static_cast<float>(box.bottom + box.height);
+      c.frustum_center = full[e].frustum_center + px * (static_cast<float>(box.left) + 0.5f * static_cast<float>(box.width) -
+                                                         0.5f * static_cast<float>(options.width_px));
+    }
+    mjr_render(box, &scn, &con);
+    scn.camera[0] = full[0];
+    scn.camera[1] = full[1];
+  }
+
+  static mjrRect bounding(const mjrRect& a, const mjrRect& b) {
+    if (a.width <= 0 || a.height <= 0) return b;
+    if (b.width <= 0 || b.height <= 0) return a;
+    const int l = std::min(a.left, b.left), bo = std::min(a.bottom, b.bottom);
+    const int r = std::max(a.left + a.width, b.left + b.width), t = std::max(a.bottom + a.height, b.bottom + b.height);
+    return {l, bo, r - l, t - bo};
+  }
+
+  // The part of the frame that can differ from the last one: the changing
+  // box, and under the overlay drawn last time and this time.
+  void render_changed(const mjModel* m, const mjData* d, const SceneState& state) {
+    render_box(changing_box(m, d));
+    render_box(bounding(last_panel, panel_rect(state)));
+    render_box(bounding(last_banner, banner_rect(state.banner)));
+  }
+
   void paint_led(LedColor c) {
     if (led_geom < 0) return;
     const LedLook look = led_look(c);
@@ -667,6 +750,8 @@ void OffscreenRenderer::set_camera(const CameraSpec& camera) {
   impl_->framed = false;
   impl_->sky_decided = false;
   impl_->scn.flags[mjRND_SKYBOX] = 1;
+  impl_->retained = false;
+  impl_->scene_box.reset();
 }
 
 int OffscreenRenderer::width() const { return impl_->options.width_px; }
@@ -689,13 +774,23 @@ void OffscreenRenderer::render_into(const mjModel* m, const mjData* d, const Sce
   if (state.degree_scale) s.add_scale(m, d, state.ghost_joint_rad, state.pointer_labels);
   s.paint_led(state.led);
   const mjrRect viewport{0, 0, s.options.width_px, s.options.height_px};
-  mjr_render(viewport, &s.scn, &s.con);
+  const bool partial = s.options.redraw_changed_only && !s.options.shadows && !s.options.reflections && s.flange_jnt >= 0;
+  // A full frame first where the image holds no last frame; its changing
+  // parts are then drawn as every later frame draws them, so that frames of
+  // the same state are pixel-identical (coplanar faces may resolve their
+  // depth ties differently under the narrowed frustum).
+  if (!partial || !s.retained) mjr_render(viewport, &s.scn, &s.con);
+  if (partial) s.render_changed(m, d, state);
   if (state.title) {
     s.draw_title(*state.title);
   } else {
     s.draw_panel(state);
     s.draw_banner(state.banner);
   }
+  // The image now holds this frame's overlay: the next frame redraws under it.
+  s.retained = !state.title;
+  s.last_panel = s.panel_rect(state);
+  s.last_banner = s.banner_rect(state.banner);
   mjr_readPixels(rgb, nullptr, viewport, &s.con);
   if (flip) flip_rows(rgb, s.options.width_px, s.options.height_px);
 }

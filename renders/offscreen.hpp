@@ -39,6 +39,12 @@ struct RenderOptions {
   int shadow_size = 2048;  // shadow map texture size when shadows are on
   bool reflections = false; // reflective materials (e.g. the table) mirror the module
   bool leave_overlay_room = false; // automatic framing keeps clear of the overlay's corners
+  // Video frames (issue 31): after a full first frame, redraw only the part
+  // of the image that can change -- the module and load's box with room
+  // for the labels, and the overlay's panel and banner -- and keep the rest
+  // of the multisampled image from the frame before. Off with shadows or
+  // reflections (they reach the table). A-RENDERS-18.
+  bool redraw_changed_only = false;
 };
 
 // A video's opening card (issue 29): a heading (the scenario's name) and

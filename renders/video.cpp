@@ -193,6 +193,7 @@ VideoRecorder::VideoRecorder(const mjModel* m, const VideoOptions& o) : impl_(st
   ro.shadow_size = o.shadow_size;
   ro.reflections = o.reflections;
   ro.leave_overlay_room = o.overlay;
+  ro.redraw_changed_only = o.redraw_changed_only;
   try {
     s.renderer = std::make_unique<OffscreenRenderer>(m, ro, o.camera);
     if (!o.path.empty()) {

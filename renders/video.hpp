@@ -41,6 +41,7 @@ struct VideoOptions {
   std::string x264_preset = "veryfast";
   int crf = 20;
   bool threaded = true;             // false: render and write on the caller's thread (the reference loop)
+  bool redraw_changed_only = true;  // RenderOptions::redraw_changed_only (issue 31, A-RENDERS-18)
   bool overlay = true;
   // Set: this card is shown for title_s before the run's first frame
   // (issue 29); run frame k is then video frame title_frames() + k.
