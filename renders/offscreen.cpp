@@ -13,6 +13,9 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "renders/offscreen_scene.hpp"
+#include "renders/offscreen_text.hpp"
+
 namespace sreh {
 
 LedLook led_look(LedColor c) {
@@ -58,18 +61,6 @@ void flip_rows(uint8_t* rgb, int width, int height) {
 }
 
 namespace {
-
-// Font scale by image height (issue 29): the largest MuJoCo scale whose
-// normal font (18 px at 100 %, 2.2.2 has no smaller one) is at most 4 % of
-// the frame height: 18 px up to 539 px, 28 px at 720, 37 px at 1080.
-int font_scale_for(int height_px) {
-  const int scale = 50 * static_cast<int>(height_px / 4.5 / 50.0);
-  return std::clamp(scale, static_cast<int>(mjFONTSCALE_100), static_cast<int>(mjFONTSCALE_300));
-}
-
-// The widest value the overlay's value column is sized for whatever the
-// frame shows, so that the panel keeps its width through a run.
-constexpr const char* kValueTemplate = "-000.00 deg";
 
 // Height along `up` of the top of everything that turns with the flange.
 double axial_half_extent(const mjModel* m, const mjData* d, int g, const double* up) {
@@ -229,13 +220,14 @@ struct OffscreenRenderer::Impl {
   int ghost_body = -1;
   int ghost_mocap = -1;
   bool framed = false;
-  bool sky_decided = false; // with the framing: see table_fills_view()
+  bool sky_decided = false; // with the framing: see planes_fill_view()
   // redraw_changed_only: the image holds the last frame (no title card);
   // the box that can change (pixels, origin bottom-left) and the overlay
   // rectangles the last frame drew.
   bool retained = false;
   std::optional<mjrRect> scene_box;
   mjrRect last_panel{0, 0, 0, 0}, last_banner{0, 0, 0, 0};
+  std::unique_ptr<FrameText> text; // overlay, banner, title card (on con)
 
   void make_current() {
     if (!OSMesaMakeCurrent(osmesa, osmesa_buffer.data(), GL_UNSIGNED_BYTE, options.width_px, options.height_px)) {
@@ -243,46 +235,14 @@ struct OffscreenRenderer::Impl {
     }
   }
 
-  int text_width(const std::string& text, bool big) const {
-    int w = 0;
-    for (unsigned char c : text) w += c < 127 ? (big ? con.charWidthBig[c] : con.charWidth[c]) : 0;
-    return w;
-  }
-
-  // The overlay panel (issue 29): every size a fraction of the normal
-  // font's height, which follows the frame height (font_scale_for). Rows
-  // with an empty label span both columns.
-  OverlayPanel panel_for(const SceneState& state) const {
-    OverlayPanel p;
-    if (state.overlay.empty()) return p;
-    const int ch = con.charHeight;
-    int labels = 0, values = text_width(kValueTemplate, false), spans = 0;
-    for (const auto& [l, v] : state.overlay) {
-      if (l.empty()) {
-        spans = std::max(spans, text_width(v, false));
-      } else {
-        labels = std::max(labels, text_width(l, false));
-        values = std::max(values, text_width(v, false));
-      }
-    }
-    p.x = p.y = ch / 4;
-    p.width = 2 * (ch / 3) + std::max(labels + ch / 3 + values, spans);
-    p.height = 2 * (ch / 3) + static_cast<int>(state.overlay.size()) * row_pitch();
-    p.char_height = ch;
-    return p;
-  }
-  int row_pitch() const { return con.charHeight + con.charHeight / 6; }
-  // The banner's font: big where it stays under 8 % of the frame height.
-  bool banner_big() const { return con.charHeightBig <= 0.08 * options.height_px; }
-
   // Normalised-device box the module may fill: right of the overlay panel
   // and below the banner.
   FitBox fit_box(const SceneState& state) const {
     if (!options.leave_overlay_room || state.overlay.empty()) return {-0.9, 0.9, -0.9, 0.9};
-    const OverlayPanel p = panel_for(state);
+    const OverlayPanel p = text->panel(state);
     const double w = options.width_px, h = options.height_px;
     const double right_px = p.x + p.width + 0.5 * p.char_height;
-    const double banner_px = (banner_big() ? con.charHeightBig : con.charHeight) + 0.75 * con.charHeight;
+    const double banner_px = (text->banner_big() ? con.charHeightBig : con.charHeight) + 0.75 * con.charHeight;
     return {std::min(0.2, -1.0 + 2.0 * right_px / w), 0.94, -0.94, std::max(-0.2, 1.0 - 2.0 * banner_px / h)};
   }
 
@@ -367,152 +327,6 @@ struct OffscreenRenderer::Impl {
     }
   }
 
-  // The degree scale on the housing top (issue 29, A-RENDERS-15): ticks
-  // every 10 deg (30 and 90 deg longer) on the ring between the collar and
-  // the housing's edge, numbers at 0/90/180/270 just outside it. Fixed to
-  // the housing: the flange's zero direction (all hinges at 0) turned about
-  // the flange axis by the factory angle (qpos sense, A-RENDERS-7).
-  void add_scale(const mjModel* m, const mjData* d, std::optional<double> ghost_rad, bool pointer_labels) {
-    if (flange_jnt < 0 || housing_geom < 0 || m->geom_type[housing_geom] != mjGEOM_CYLINDER) return;
-    const double* u = d->xaxis + 3 * flange_jnt;
-    const double sign = u[2] >= 0 ? 1.0 : -1.0;
-    const double up[3] = {sign * u[0], sign * u[1], sign * u[2]};
-    // Zero direction: the outermost hinge body's x axis in its parent's frame.
-    int outer = m->jnt_bodyid[flange_jnt];
-    while (m->body_parentid[outer] > 0 && m->body_jntnum[m->body_parentid[outer]] > 0) outer = m->body_parentid[outer];
-    double parent_quat[4], zero_quat[4], zero_dir[3];
-    mju_mat2Quat(parent_quat, d->xmat + 9 * m->body_parentid[outer]);
-    mju_mulQuat(zero_quat, parent_quat, m->body_quat + 4 * outer);
-    const double x_axis[3] = {1, 0, 0};
-    mju_rotVecQuat(zero_dir, x_axis, zero_quat);
-    const double* hc = d->geom_xpos + 3 * housing_geom;
-    const double r_out = m->geom_size[3 * housing_geom];
-    const double top = m->geom_size[3 * housing_geom + 1];
-    const double r_in = collar_geom >= 0 ? m->geom_size[3 * collar_geom] : 0.8 * r_out;
-    const double ring = 0.95 * (r_out - r_in);
-    const double flange_rad = flange_angle_rad(m, d);
-    const float tick_rgba[4] = {0.12f, 0.12f, 0.13f, 1.0f}, clear[4] = {0, 0, 0, 0};
-    for (int deg = 0; deg < 360 && scn.ngeom + 2 <= scn.maxgeom; deg += 10) {
-      double q[4], dir[3], side[3];
-      mju_axisAngle2Quat(q, u, deg * std::numbers::pi / 180.0);
-      mju_rotVecQuat(dir, zero_dir, q);
-      mju_cross(side, up, dir);
-      const double len = ring * (deg % 90 == 0 ? 1.0 : deg % 30 == 0 ? 0.6 : 0.35);
-      const double r = r_out - 0.02 * (r_out - r_in) - 0.5 * len;
-      const mjtNum size[3] = {0.5 * len, 0.00022 * (deg % 30 == 0 ? 1.5 : 1.0), 0.00012};
-      mjtNum pos[3], mat[9];
-      for (int k = 0; k < 3; ++k) {
-        pos[k] = hc[k] + (top + 0.0001) * up[k] + r * dir[k];
-        mat[3 * k] = dir[k], mat[3 * k + 1] = side[k], mat[3 * k + 2] = up[k];
-      }
-      mjvGeom& tick = scn.geoms[scn.ngeom++];
-      mjv_initGeom(&tick, mjGEOM_BOX, size, pos, mat, tick_rgba);
-      tick.category = mjCAT_DECOR;
-      if (deg % 90 != 0) continue;
-      // The number: an invisible marker carrying the label just outside the
-      // housing. MuJoCo draws labels over everything: a number the module
-      // or its load hides from the camera is left out.
-      const mjtNum dot[3] = {0.0005, 0.0005, 0.0005};
-      for (int k = 0; k < 3; ++k) pos[k] = hc[k] + (top + 0.0015) * up[k] + (r_out + 0.004) * dir[k];
-      if (!seen_by_camera(m, d, pos)) continue;
-      // Nor where a pointer's label would be written over it.
-      auto near = [&](double rad) {
-        return std::abs(std::remainder(rad - deg * std::numbers::pi / 180.0, 2 * std::numbers::pi)) < 0.35;
-      };
-      if (pointer_labels && (near(flange_rad) || (ghost_rad && near(*ghost_rad)))) continue;
-      mjvGeom& number = scn.geoms[scn.ngeom++];
-      mjv_initGeom(&number, mjGEOM_SPHERE, dot, pos, nullptr, clear);
-      number.category = mjCAT_DECOR;
-      std::snprintf(number.label, sizeof number.label, "%d", deg);
-    }
-  }
-
-  // True when nothing of the model lies between the camera and `p`.
-  bool seen_by_camera(const mjModel* m, const mjData* d, const mjtNum p[3]) const {
-    mjtNum eye[3], ray[3];
-    for (int k = 0; k < 3; ++k) {
-      eye[k] = 0.5 * (scn.camera[0].pos[k] + scn.camera[1].pos[k]);
-      ray[k] = p[k] - eye[k];
-    }
-    const mjtNum dist = mju_normalize3(ray);
-    int hit = -1;
-    const mjtNum at = mj_ray(m, d, eye, ray, nullptr, 1, ghost_body, &hit);
-    return at < 0 || at > dist - 1e-4;
-  }
-
-  // Near and far clipping planes in metres: MuJoCo scales them by the
-  // model's extent, which the floor's 20 m strips make 25 m (mj_setConst
-  // recomputes it for the twin's model whatever the MJCF says), so the near
-  // plane would cut into the module. The frustum is rescaled in the scene.
-  void set_clip_planes() {
-    constexpr float kNear_m = 0.002f, kFar_m = 80.0f;
-    for (mjvGLCamera& c : scn.camera) {
-      if (!(c.frustum_near > 0)) continue;
-      const float k = kNear_m / c.frustum_near;
-      c.frustum_near = kNear_m;
-      c.frustum_far = kFar_m;
-      c.frustum_top *= k;
-      c.frustum_bottom *= k;
-      c.frustum_center *= k;
-    }
-  }
-
-  // The skybox only where the camera can see past the floor (issue 31):
-  // filling the whole MSAA frame with it cost 19 of 67 ms of CPU per 720p
-  // frame, and the floor around the table (models/sreh50.xml) fills the
-  // default and top views. Decided once, from the camera of the first
-  // frame: true when the rays through the image's corners and the middles
-  // of its top and bottom edges hit a plane (the table or a floor strip).
-  bool table_fills_view(const mjModel* m, const mjData* d) const {
-    const mjvGLCamera& c = scn.camera[0];
-    double right[3];
-    const double fwd[3] = {c.forward[0], c.forward[1], c.forward[2]}, up[3] = {c.up[0], c.up[1], c.up[2]};
-    mju_cross(right, fwd, up);
-    const double half_w = 0.5 * (c.frustum_top - c.frustum_bottom) * options.width_px / options.height_px;
-    // A ray from the camera hits one of the model's planes within its size.
-    auto hits_a_plane = [&](const double dir[3]) {
-      for (int g = 0; g < m->ngeom; ++g) {
-        if (m->geom_type[g] != mjGEOM_PLANE) continue;
-        const double* p0 = d->geom_xpos + 3 * g;
-        const double* x = d->geom_xmat + 9 * g;
-        const double normal[3] = {x[2], x[5], x[8]}, ax[3] = {x[0], x[3], x[6]}, ay[3] = {x[1], x[4], x[7]};
-        const double denom = mju_dot3(dir, normal);
-        if (std::abs(denom) < 1e-12) continue;
-        const double rel[3] = {p0[0] - c.pos[0], p0[1] - c.pos[1], p0[2] - c.pos[2]};
-        const double t = mju_dot3(rel, normal) / denom;
-        if (t <= 0) continue;
-        const double hit[3] = {c.pos[0] + t * dir[0] - p0[0], c.pos[1] + t * dir[1] - p0[1], c.pos[2] + t * dir[2] - p0[2]};
-        if (std::abs(mju_dot3(hit, ax)) <= m->geom_size[3 * g] && std::abs(mju_dot3(hit, ay)) <= m->geom_size[3 * g + 1]) {
-          return true;
-        }
-      }
-      return false;
-    };
-    // The planes are flat and the view a rectangle: its corners and edge
-    // midpoints on planes leave no gap for the sky between adjacent strips.
-    for (double sx : {-1.0, 0.0, 1.0}) {
-      for (double v : {static_cast<double>(c.frustum_bottom), static_cast<double>(c.frustum_top)}) {
-        double dir[3];
-        for (int k = 0; k < 3; ++k) dir[k] = c.frustum_near * fwd[k] + v * up[k] + (c.frustum_center + sx * half_w) * right[k];
-        if (!hits_a_plane(dir)) return false;
-      }
-    }
-    return true;
-  }
-
-  // The overlay's rectangles in GL pixels (origin bottom-left).
-  mjrRect panel_rect(const SceneState& state) const {
-    const OverlayPanel p = panel_for(state);
-    return {p.x, options.height_px - p.y - p.height, p.width, p.height};
-  }
-  mjrRect banner_rect(const std::string& banner) const {
-    if (banner.empty()) return {0, 0, 0, 0};
-    const bool big = banner_big();
-    const int ch = con.charHeight, h = (big ? con.charHeightBig : con.charHeight) + 2 * (ch / 4);
-    const int w = text_width(banner, big) + 2 * (ch / 3);
-    return {options.width_px - w - ch / 3, options.height_px - ch / 3 - h, w, h};
-  }
-
   // Everything that turns, moves or changes colour lies in the hull of
   // hull_points (rotation-invariant): its bounding box on screen, widened
   // for the labels written right of and above their anchors. Fixed once
@@ -536,7 +350,7 @@ struct OffscreenRenderer::Impl {
     }
     const int ch = con.charHeight;
     const int l = std::clamp(static_cast<int>(x0) - ch, 0, options.width_px);
-    const int r = std::clamp(static_cast<int>(x1) + text_width("flange = setpoint", false) + ch, 0, options.width_px);
+    const int r = std::clamp(static_cast<int>(x1) + text->text_width("flange = setpoint", false) + ch, 0, options.width_px);
     const int b = std::clamp(static_cast<int>(y0) - ch, 0, options.height_px);
     const int t = std::clamp(static_cast<int>(y1) + 2 * ch, 0, options.height_px);
     scene_box = mjrRect{l, b, std::max(0, r - l), std::max(0, t - b)};
@@ -573,8 +387,8 @@ struct OffscreenRenderer::Impl {
   // box, and under the overlay drawn last time and this time.
   void render_changed(const mjModel* m, const mjData* d, const SceneState& state) {
     render_box(changing_box(m, d));
-    render_box(bounding(last_panel, panel_rect(state)));
-    render_box(bounding(last_banner, banner_rect(state.banner)));
+    render_box(bounding(last_panel, text->panel_rect(state)));
+    render_box(bounding(last_banner, text->banner_rect(state.banner)));
   }
 
   void paint_led(LedColor c) {
@@ -588,93 +402,6 @@ struct OffscreenRenderer::Impl {
     }
   }
 
-  // Text at pixel (x, y_top) of the frame (origin top-left): mjr_text
-  // places relative to the last viewport, set here by an empty rectangle
-  // the size of the text (the raster position must lie inside it).
-  void text_at(int font, const std::string& txt, int x, int y_top, const float rgb[3]) const {
-    const bool big = font == mjFONT_BIG;
-    const int h = big ? con.charHeightBig : con.charHeight;
-    mjr_rectangle(mjrRect{x, options.height_px - y_top - h, text_width(txt, big) + 1, h}, 0, 0, 0, 0);
-    // The raster position is the glyphs' baseline: a fifth of the height up.
-    mjr_text(font, txt.c_str(), &con, 0.0f, 0.2f, rgb[0], rgb[1], rgb[2]);
-  }
-
-  void draw_panel(const SceneState& state) const {
-    const OverlayPanel p = panel_for(state);
-    if (p.width == 0) return;
-    mjr_rectangle(mjrRect{p.x, options.height_px - p.y - p.height, p.width, p.height}, 0.08f, 0.09f, 0.10f, 0.62f);
-    const int ch = con.charHeight, pad = ch / 3;
-    int labels = 0;
-    for (const auto& [l, v] : state.overlay) labels = std::max(labels, text_width(l, false));
-    const float label_rgb[3] = {0.72f, 0.75f, 0.78f}, value_rgb[3] = {1, 1, 1};
-    int y = p.y + pad;
-    for (const auto& [l, v] : state.overlay) {
-      if (l.empty()) {
-        text_at(mjFONT_NORMAL, v, p.x + pad, y, value_rgb);
-      } else {
-        text_at(mjFONT_NORMAL, l, p.x + pad, y, label_rgb);
-        text_at(mjFONT_NORMAL, v, p.x + pad + labels + ch / 3, y, value_rgb);
-      }
-      y += row_pitch();
-    }
-  }
-
-  void draw_banner(const std::string& banner) const {
-    if (banner.empty()) return;
-    const bool big = banner_big();
-    const int font = big ? mjFONT_BIG : mjFONT_NORMAL;
-    const int ch = con.charHeight, h = big ? con.charHeightBig : con.charHeight;
-    const int w = text_width(banner, big) + 2 * (ch / 3), x = options.width_px - w - ch / 3, y = ch / 3;
-    mjr_rectangle(mjrRect{x, options.height_px - y - h - 2 * (ch / 4), w, h + 2 * (ch / 4)}, 0.08f, 0.09f, 0.10f, 0.62f);
-    const float rgb[3] = {1, 1, 1};
-    text_at(font, banner, x + ch / 3, y + ch / 4, rgb);
-  }
-
-  // The title card: the frame dimmed, the heading in the big font, the
-  // lines as two centred columns; text too wide for the frame is cut.
-  void draw_title(const TitleCard& card) const {
-    const int w = options.width_px, h = options.height_px, ch = con.charHeight;
-    mjr_rectangle(mjrRect{0, 0, w, h}, 0.05f, 0.06f, 0.07f, 0.78f);
-    const bool big = con.charHeightBig <= 0.12 * h;
-    const int max_w = w - 2 * ch;
-    auto fit = [&](const std::string& t, bool in_big, int room) {
-      if (text_width(t, in_big) <= room) return t;
-      std::string cut = t;
-      while (!cut.empty() && text_width(cut + "...", in_big) > room) cut.pop_back();
-      return cut + "...";
-    };
-    int labels = 0, values = 0;
-    for (const auto& [l, v] : card.lines) {
-      labels = std::max(labels, text_width(l, false));
-      values = std::max(values, text_width(v, false));
-    }
-    values = std::min(values, max_w - labels - ch);
-    // The heading on up to two lines, broken at a space.
-    std::vector<std::string> heading{card.heading};
-    if (text_width(card.heading, big) > max_w) {
-      std::size_t cut = card.heading.size();
-      while ((cut = card.heading.rfind(' ', cut - 1)) != std::string::npos && cut > 0 &&
-             text_width(card.heading.substr(0, cut), big) > max_w) {
-      }
-      if (cut != std::string::npos && cut > 0) heading = {card.heading.substr(0, cut), card.heading.substr(cut + 1)};
-    }
-    const int heading_h = big ? con.charHeightBig : con.charHeight;
-    const int block_h = static_cast<int>(heading.size()) * heading_h + ch + static_cast<int>(card.lines.size()) * row_pitch();
-    int y = std::max(ch / 2, (h - block_h) / 2);
-    const float white[3] = {1, 1, 1}, grey[3] = {0.72f, 0.75f, 0.78f};
-    for (const std::string& line : heading) {
-      const std::string shown = fit(line, big, max_w);
-      text_at(big ? mjFONT_BIG : mjFONT_NORMAL, shown, (w - text_width(shown, big)) / 2, y, white);
-      y += heading_h;
-    }
-    y += ch;
-    const int x0 = std::max(ch, (w - labels - ch - values) / 2);
-    for (const auto& [l, v] : card.lines) {
-      text_at(mjFONT_NORMAL, l, x0, y, grey);
-      text_at(mjFONT_NORMAL, fit(v, false, values), x0 + labels + ch, y, white);
-      y += row_pitch();
-    }
-  }
 };
 
 OffscreenRenderer::OffscreenRenderer(const mjModel* m, const RenderOptions& options, const CameraSpec& camera)
@@ -720,6 +447,7 @@ OffscreenRenderer::OffscreenRenderer(const mjModel* m, const RenderOptions& opti
     throw std::runtime_error("MuJoCo could not make an offscreen buffer of the requested size");
   }
 
+  s.text = std::make_unique<FrameText>(s.con, options.width_px, options.height_px);
   mjv_defaultScene(&s.scn);
   mjv_makeScene(m, &s.scn, 2000);
   mjv_defaultOption(&s.opt);
@@ -756,7 +484,7 @@ void OffscreenRenderer::set_camera(const CameraSpec& camera) {
 
 int OffscreenRenderer::width() const { return impl_->options.width_px; }
 int OffscreenRenderer::height() const { return impl_->options.height_px; }
-OverlayPanel OffscreenRenderer::overlay_panel(const SceneState& state) const { return impl_->panel_for(state); }
+OverlayPanel OffscreenRenderer::overlay_panel(const SceneState& state) const { return impl_->text->panel(state); }
 
 void OffscreenRenderer::render_into(const mjModel* m, const mjData* d, const SceneState& state, uint8_t* rgb, bool flip) {
   Impl& s = *impl_;
@@ -765,13 +493,16 @@ void OffscreenRenderer::render_into(const mjModel* m, const mjData* d, const Sce
   if (!s.framed) s.frame_camera(m, d, state);
   // 2.2.2's mjv_updateScene takes mjData* but only reads it.
   mjv_updateScene(m, const_cast<mjData*>(d), &s.opt, nullptr, &s.cam, mjCAT_ALL, &s.scn);
-  s.set_clip_planes();
+  set_clip_planes(s.scn);
   if (!s.sky_decided) {
-    if (s.table_fills_view(m, d)) s.scn.flags[mjRND_SKYBOX] = 0;
+    if (planes_fill_view(m, d, s.scn, static_cast<double>(s.options.width_px) / s.options.height_px)) s.scn.flags[mjRND_SKYBOX] = 0;
     s.sky_decided = true;
   }
   s.place_pointers(m, d, state.ghost_joint_rad, state.pointer_labels);
-  if (state.degree_scale) s.add_scale(m, d, state.ghost_joint_rad, state.pointer_labels);
+  if (state.degree_scale) {
+    add_degree_scale(m, d, s.scn, SceneIds{s.flange_jnt, s.housing_geom, s.collar_geom, s.ghost_body}, state.ghost_joint_rad,
+                     state.pointer_labels);
+  }
   s.paint_led(state.led);
   const mjrRect viewport{0, 0, s.options.width_px, s.options.height_px};
   const bool partial = s.options.redraw_changed_only && !s.options.shadows && !s.options.reflections && s.flange_jnt >= 0;
@@ -782,15 +513,15 @@ void OffscreenRenderer::render_into(const mjModel* m, const mjData* d, const Sce
   if (!partial || !s.retained) mjr_render(viewport, &s.scn, &s.con);
   if (partial) s.render_changed(m, d, state);
   if (state.title) {
-    s.draw_title(*state.title);
+    s.text->draw_title(*state.title);
   } else {
-    s.draw_panel(state);
-    s.draw_banner(state.banner);
+    s.text->draw_panel(state);
+    s.text->draw_banner(state.banner);
   }
   // The image now holds this frame's overlay: the next frame redraws under it.
   s.retained = !state.title;
-  s.last_panel = s.panel_rect(state);
-  s.last_banner = s.banner_rect(state.banner);
+  s.last_panel = s.text->panel_rect(state);
+  s.last_banner = s.text->banner_rect(state.banner);
   mjr_readPixels(rgb, nullptr, viewport, &s.con);
   if (flip) flip_rows(rgb, s.options.width_px, s.options.height_px);
 }
