@@ -333,7 +333,9 @@ struct OffscreenRenderer::Impl {
   // the camera is.
   mjrRect changing_box(const mjModel* m, const mjData* d) {
     if (scene_box) return *scene_box;
-    const mjvGLCamera& c = scn.camera[0];
+    // The camera MuJoCo renders a mono image with: the two eyes averaged
+    // (each eye sits half the interpupillary distance to the side).
+    const mjvGLCamera c = mjv_averageCamera(&scn.camera[0], &scn.camera[1]);
     double right[3];
     const double fwd[3] = {c.forward[0], c.forward[1], c.forward[2]}, up[3] = {c.up[0], c.up[1], c.up[2]};
     mju_cross(right, fwd, up);

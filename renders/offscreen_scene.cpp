@@ -104,7 +104,7 @@ void set_clip_planes(mjvScene& scn) {
 // frame: true when the rays through the image's corners and the middles
 // of its top and bottom edges hit a plane (the table or a floor strip).
 bool planes_fill_view(const mjModel* m, const mjData* d, const mjvScene& scn, double aspect) {
-  const mjvGLCamera& c = scn.camera[0];
+  const mjvGLCamera c = mjv_averageCamera(&scn.camera[0], &scn.camera[1]); // the mono camera
   double right[3];
   const double fwd[3] = {c.forward[0], c.forward[1], c.forward[2]}, up[3] = {c.up[0], c.up[1], c.up[2]};
   mju_cross(right, fwd, up);
