@@ -377,20 +377,21 @@ struct OffscreenRenderer::Impl {
     scn.camera[1] = full[1];
   }
 
-  static mjrRect bounding(const mjrRect& a, const mjrRect& b) {
-    if (a.width <= 0 || a.height <= 0) return b;
-    if (b.width <= 0 || b.height <= 0) return a;
-    const int l = std::min(a.left, b.left), bo = std::min(a.bottom, b.bottom);
-    const int r = std::max(a.left + a.width, b.left + b.width), t = std::max(a.bottom + a.height, b.bottom + b.height);
-    return {l, bo, r - l, t - bo};
-  }
 
   // The part of the frame that can differ from the last one: the changing
-  // box, and under the overlay drawn last time and this time.
+  // box, and where the last frame's opaque panel or banner stood but this
+  // frame's does not cover (a narrower panel, another banner text).
   void render_changed(const mjModel* m, const mjData* d, const SceneState& state) {
     render_box(changing_box(m, d));
-    render_box(bounding(last_panel, text->panel_rect(state)));
-    render_box(bounding(last_banner, text->banner_rect(state.banner)));
+    for (const auto& [last, now] : {std::pair{last_panel, text->panel_rect(state)}, {last_banner, text->banner_rect(state.banner)}}) {
+      if (!covers(now, last)) render_box(last);
+    }
+  }
+
+  static bool covers(const mjrRect& outer, const mjrRect& inner) {
+    if (inner.width <= 0 || inner.height <= 0) return true;
+    return inner.left >= outer.left && inner.bottom >= outer.bottom && inner.left + inner.width <= outer.left + outer.width &&
+           inner.bottom + inner.height <= outer.bottom + outer.height;
   }
 
   void paint_led(LedColor c) {

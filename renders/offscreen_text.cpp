@@ -78,7 +78,8 @@ void FrameText::text_at(int font, const std::string& txt, int x, int y_top, cons
 void FrameText::draw_panel(const SceneState& state) const {
   const OverlayPanel p = panel(state);
   if (p.width == 0) return;
-  mjr_rectangle(mjrRect{p.x, height_px_ - p.y - p.height, p.width, p.height}, 0.08f, 0.09f, 0.10f, 0.62f);
+  // Opaque: what lies under it need not be redrawn each frame (A-RENDERS-18).
+  mjr_rectangle(mjrRect{p.x, height_px_ - p.y - p.height, p.width, p.height}, 0.22f, 0.23f, 0.25f, 1.0f);
   const int ch = con_.charHeight, pad = ch / 3;
   int labels = 0;
   for (const auto& [l, v] : state.overlay) labels = std::max(labels, text_width(l, false));
@@ -101,7 +102,7 @@ void FrameText::draw_banner(const std::string& banner) const {
   const int font = big ? mjFONT_BIG : mjFONT_NORMAL;
   const int ch = con_.charHeight, h = big ? con_.charHeightBig : con_.charHeight;
   const int w = text_width(banner, big) + 2 * (ch / 3), x = width_px_ - w - ch / 3, y = ch / 3;
-  mjr_rectangle(mjrRect{x, height_px_ - y - h - 2 * (ch / 4), w, h + 2 * (ch / 4)}, 0.08f, 0.09f, 0.10f, 0.62f);
+  mjr_rectangle(mjrRect{x, height_px_ - y - h - 2 * (ch / 4), w, h + 2 * (ch / 4)}, 0.22f, 0.23f, 0.25f, 1.0f);
   const float rgb[3] = {1, 1, 1};
   text_at(font, banner, x + ch / 3, y + ch / 4, rgb);
 }
