@@ -28,7 +28,7 @@ struct EncoderOptions {
   int width_px = 1280;
   int height_px = 720;
   double fps = 30.0;
-  std::string x264_preset = "fast"; // A-RENDERS-5
+  std::string x264_preset = "veryfast"; // A-RENDERS-5
   int crf = 20;                     // constant quality; lower is better and bigger
   bool bottom_up = false;           // rows arrive as OpenGL reads them: ffmpeg flips
 };

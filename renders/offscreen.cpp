@@ -7,10 +7,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+
+#include "renders/offscreen_scene.hpp"
+#include "renders/offscreen_text.hpp"
 
 namespace sreh {
 
@@ -57,13 +61,6 @@ void flip_rows(uint8_t* rgb, int width, int height) {
 }
 
 namespace {
-
-// Font scale for the overlay by image height (mjtFontScale steps of 50).
-int font_scale_for(int height_px) {
-  if (height_px <= 480) return mjFONTSCALE_100;
-  if (height_px <= 800) return mjFONTSCALE_150;
-  return mjFONTSCALE_200;
-}
 
 // Height along `up` of the top of everything that turns with the flange.
 double axial_half_extent(const mjModel* m, const mjData* d, int g, const double* up) {
@@ -218,9 +215,19 @@ struct OffscreenRenderer::Impl {
   mjvOption opt{};
   int flange_jnt = -1;
   int led_geom = -1;
+  int housing_geom = -1; // the degree scale lies on its top face
+  int collar_geom = -1;
   int ghost_body = -1;
   int ghost_mocap = -1;
   bool framed = false;
+  bool sky_decided = false; // with the framing: see planes_fill_view()
+  // redraw_changed_only: the image holds the last frame (no title card);
+  // the box that can change (pixels, origin bottom-left) and the overlay
+  // rectangles the last frame drew.
+  bool retained = false;
+  std::optional<mjrRect> scene_box;
+  mjrRect last_panel{0, 0, 0, 0}, last_banner{0, 0, 0, 0};
+  std::unique_ptr<FrameText> text; // overlay, banner, title card (on con)
 
   void make_current() {
     if (!OSMesaMakeCurrent(osmesa, osmesa_buffer.data(), GL_UNSIGNED_BYTE, options.width_px, options.height_px)) {
@@ -228,25 +235,15 @@ struct OffscreenRenderer::Impl {
     }
   }
 
-  int text_width(const std::string& text, bool big) const {
-    int w = 0;
-    for (unsigned char c : text) w += c < 127 ? (big ? con.charWidthBig[c] : con.charWidth[c]) : 0;
-    return w;
-  }
-
-  // Normalised-device box the module may fill: right of the overlay's text
-  // columns (sized for the widest value a run shows) and below the banner.
+  // Normalised-device box the module may fill: right of the overlay panel
+  // and below the banner.
   FitBox fit_box(const SceneState& state) const {
     if (!options.leave_overlay_room || state.overlay.empty()) return {-0.9, 0.9, -0.9, 0.9};
-    int labels = 0, values = text_width("fast forward 1000x (idle)", false);
-    for (const auto& [l, v] : state.overlay) {
-      labels = std::max(labels, text_width(l, false));
-      values = std::max(values, text_width(v, false));
-    }
+    const OverlayPanel p = text->panel(state);
     const double w = options.width_px, h = options.height_px;
-    const double column_px = labels + values + 4.0 * con.charWidth[static_cast<int>('M')];
-    const double banner_px = con.charHeightBig + 0.5 * con.charHeight;
-    return {std::min(0.2, -1.0 + 2.0 * column_px / w), 0.94, -0.94, std::max(-0.2, 1.0 - 2.0 * banner_px / h)};
+    const double right_px = p.x + p.width + 0.5 * p.char_height;
+    const double banner_px = (text->banner_big() ? con.charHeightBig : con.charHeight) + 0.75 * con.charHeight;
+    return {std::min(0.2, -1.0 + 2.0 * right_px / w), 0.94, -0.94, std::max(-0.2, 1.0 - 2.0 * banner_px / h)};
   }
 
   void frame_camera(const mjModel* m, const mjData* d, const SceneState& state) {
@@ -278,7 +275,7 @@ struct OffscreenRenderer::Impl {
   // ghost body's geoms turned about the flange axis from their model pose,
   // lifted onto the top of the load so a load never hides them. Posed in
   // the scene only: d stays the twin's, untouched.
-  void place_pointers(const mjModel* m, const mjData* d, std::optional<double> ghost_rad) {
+  void place_pointers(const mjModel* m, const mjData* d, std::optional<double> ghost_rad, bool labels) {
     if (ghost_mocap < 0 || flange_jnt < 0) return;
     const double* a = d->xanchor + 3 * flange_jnt;
     const double* u = d->xaxis + 3 * flange_jnt;
@@ -302,6 +299,8 @@ struct OffscreenRenderer::Impl {
     };
     const int n = scn.ngeom;
     const double flange_rad = flange_angle_rad(m, d);
+    // Labels at the tips (issue 29): one when the two pointers overlap.
+    const bool apart = std::abs(ghost_rad.value_or(flange_rad) - flange_rad) > 8.0 * std::numbers::pi / 180.0;
     for (int i = 0; i < n; ++i) {
       if (scn.geoms[i].objtype != mjOBJ_GEOM || m->geom_bodyid[scn.geoms[i].objid] != ghost_body) continue;
       // The actual-position pointer: an opaque copy at the flange angle.
@@ -318,10 +317,81 @@ struct OffscreenRenderer::Impl {
         std::copy(mark, mark + 4, actual.rgba);
         actual.transparent = 0;
         actual.emission = 0.25f;
+        const bool tip = m->geom_type[scn.geoms[i].objid] == mjGEOM_SPHERE;
+        std::snprintf(actual.label, sizeof actual.label, "%s", labels && tip ? (apart ? "flange" : "flange = setpoint") : "");
       }
       // The ghost sits just above the pointer so both stay visible.
+      const bool tip = m->geom_type[scn.geoms[i].objid] == mjGEOM_SPHERE;
+      std::snprintf(scn.geoms[i].label, sizeof scn.geoms[i].label, "%s", labels && tip && apart ? "setpoint" : "");
       pose(ghost_rad.value_or(flange_rad), 0.0015, scn.geoms[i]);
     }
+  }
+
+  // Everything that turns, moves or changes colour lies in the hull of
+  // hull_points (rotation-invariant): its bounding box on screen, widened
+  // for the labels written right of and above their anchors. Fixed once
+  // the camera is.
+  mjrRect changing_box(const mjModel* m, const mjData* d) {
+    if (scene_box) return *scene_box;
+    // The camera MuJoCo renders a mono image with: the two eyes averaged
+    // (each eye sits half the interpupillary distance to the side).
+    const mjvGLCamera c = mjv_averageCamera(&scn.camera[0], &scn.camera[1]);
+    double right[3];
+    const double fwd[3] = {c.forward[0], c.forward[1], c.forward[2]}, up[3] = {c.up[0], c.up[1], c.up[2]};
+    mju_cross(right, fwd, up);
+    const double w = options.width_px, h = options.height_px;
+    const double px = (c.frustum_top - c.frustum_bottom) / h; // frustum units per pixel at the near plane
+    const double left = c.frustum_center - 0.5 * px * w;
+    double x0 = w, x1 = 0, y0 = h, y1 = 0;
+    for (const auto& p : hull_points(m, d, flange_jnt, ghost_body)) {
+      const double rel[3] = {p[0] - c.pos[0], p[1] - c.pos[1], p[2] - c.pos[2]};
+      const double z = std::max(mju_dot3(rel, fwd), 1e-6);
+      const double x = (mju_dot3(rel, right) * c.frustum_near / z - left) / px;
+      const double y = (mju_dot3(rel, up) * c.frustum_near / z - c.frustum_bottom) / px;
+      x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+    }
+    const int ch = con.charHeight;
+    const int l = std::clamp(static_cast<int>(x0) - ch, 0, options.width_px);
+    const int r = std::clamp(static_cast<int>(x1) + text->text_width("flange = setpoint", false) + ch, 0, options.width_px);
+    const int b = std::clamp(static_cast<int>(y0) - ch, 0, options.height_px);
+    const int t = std::clamp(static_cast<int>(y1) + 2 * ch, 0, options.height_px);
+    scene_box = mjrRect{l, b, std::max(0, r - l), std::max(0, t - b)};
+    return *scene_box;
+  }
+
+  // Renders only `box` of the frame: the camera's frustum narrowed to it,
+  // so the pixels match the full frame's (issue 31).
+  void render_box(const mjrRect& box) {
+    if (box.width <= 0 || box.height <= 0) return;
+    mjvGLCamera full[2] = {scn.camera[0], scn.camera[1]};
+    for (int e = 0; e < 2; ++e) {
+      mjvGLCamera& c = scn.camera[e];
+      const float px = (full[e].frustum_top - full[e].frustum_bottom) / static_cast<float>(options.height_px);
+      c.frustum_bottom = full[e].frustum_bottom + px * static_cast<float>(box.bottom);
+      c.frustum_top = full[e].frustum_bottom + px * static_cast<float>(box.bottom + box.height);
+      c.frustum_center = full[e].frustum_center + px * (static_cast<float>(box.left) + 0.5f * static_cast<float>(box.width) -
+                                                         0.5f * static_cast<float>(options.width_px));
+    }
+    mjr_render(box, &scn, &con);
+    scn.camera[0] = full[0];
+    scn.camera[1] = full[1];
+  }
+
+
+  // The part of the frame that can differ from the last one: the changing
+  // box, and where the last frame's opaque panel or banner stood but this
+  // frame's does not cover (a narrower panel, another banner text).
+  void render_changed(const mjModel* m, const mjData* d, const SceneState& state) {
+    render_box(changing_box(m, d));
+    for (const auto& [last, now] : {std::pair{last_panel, text->panel_rect(state)}, {last_banner, text->banner_rect(state.banner)}}) {
+      if (!covers(now, last)) render_box(last);
+    }
+  }
+
+  static bool covers(const mjrRect& outer, const mjrRect& inner) {
+    if (inner.width <= 0 || inner.height <= 0) return true;
+    return inner.left >= outer.left && inner.bottom >= outer.bottom && inner.left + inner.width <= outer.left + outer.width &&
+           inner.bottom + inner.height <= outer.bottom + outer.height;
   }
 
   void paint_led(LedColor c) {
@@ -335,17 +405,6 @@ struct OffscreenRenderer::Impl {
     }
   }
 
-  void draw_overlay(const SceneState& state, mjrRect viewport) {
-    if (state.overlay.empty()) return;
-    std::string labels, values;
-    for (const auto& [label, value] : state.overlay) {
-      if (!labels.empty()) { labels += '\n'; values += '\n'; }
-      labels += label;
-      values += value;
-    }
-    mjr_overlay(mjFONT_NORMAL, mjGRID_TOPLEFT, viewport, labels.c_str(), values.c_str(), &con);
-    if (!state.banner.empty()) mjr_overlay(mjFONT_BIG, mjGRID_TOPRIGHT, viewport, state.banner.c_str(), nullptr, &con);
-  }
 };
 
 OffscreenRenderer::OffscreenRenderer(const mjModel* m, const RenderOptions& options, const CameraSpec& camera)
@@ -376,6 +435,14 @@ OffscreenRenderer::OffscreenRenderer(const mjModel* m, const RenderOptions& opti
   mjr_defaultContext(&s.con);
   mjr_makeContext(sized, &s.con, font_scale_for(options.height_px));
   mj_deleteModel(sized);
+  // 2D textures (the table's checker) sample one mipmap level instead of
+  // blending two: 5 of ~45 ms of CPU per 720p frame on llvmpipe, no
+  // visible difference on a checker seen at a slant (issue 31).
+  for (int t = 0; t < m->ntex; ++t) {
+    if (m->tex_type[t] != mjTEXTURE_2D) continue;
+    glBindTexture(GL_TEXTURE_2D, s.con.texture[t]);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
+  }
   mjr_setBuffer(mjFB_OFFSCREEN, &s.con);
   if (s.con.currentBuffer != mjFB_OFFSCREEN || s.con.offWidth != options.width_px || s.con.offHeight != options.height_px) {
     mjr_freeContext(&s.con);
@@ -383,6 +450,7 @@ OffscreenRenderer::OffscreenRenderer(const mjModel* m, const RenderOptions& opti
     throw std::runtime_error("MuJoCo could not make an offscreen buffer of the requested size");
   }
 
+  s.text = std::make_unique<FrameText>(s.con, options.width_px, options.height_px);
   mjv_defaultScene(&s.scn);
   mjv_makeScene(m, &s.scn, 2000);
   mjv_defaultOption(&s.opt);
@@ -392,6 +460,8 @@ OffscreenRenderer::OffscreenRenderer(const mjModel* m, const RenderOptions& opti
 
   s.flange_jnt = mj_name2id(m, mjOBJ_JOINT, "flange");
   s.led_geom = mj_name2id(m, mjOBJ_GEOM, "led_band");
+  s.housing_geom = mj_name2id(m, mjOBJ_GEOM, "housing");
+  s.collar_geom = mj_name2id(m, mjOBJ_GEOM, "collar");
   s.ghost_body = mj_name2id(m, mjOBJ_BODY, "setpoint_ghost");
   if (s.ghost_body >= 0) s.ghost_mocap = m->body_mocapid[s.ghost_body];
 }
@@ -409,10 +479,15 @@ OffscreenRenderer::~OffscreenRenderer() {
 void OffscreenRenderer::set_camera(const CameraSpec& camera) {
   impl_->spec = camera;
   impl_->framed = false;
+  impl_->sky_decided = false;
+  impl_->scn.flags[mjRND_SKYBOX] = 1;
+  impl_->retained = false;
+  impl_->scene_box.reset();
 }
 
 int OffscreenRenderer::width() const { return impl_->options.width_px; }
 int OffscreenRenderer::height() const { return impl_->options.height_px; }
+OverlayPanel OffscreenRenderer::overlay_panel(const SceneState& state) const { return impl_->text->panel(state); }
 
 void OffscreenRenderer::render_into(const mjModel* m, const mjData* d, const SceneState& state, uint8_t* rgb, bool flip) {
   Impl& s = *impl_;
@@ -421,11 +496,35 @@ void OffscreenRenderer::render_into(const mjModel* m, const mjData* d, const Sce
   if (!s.framed) s.frame_camera(m, d, state);
   // 2.2.2's mjv_updateScene takes mjData* but only reads it.
   mjv_updateScene(m, const_cast<mjData*>(d), &s.opt, nullptr, &s.cam, mjCAT_ALL, &s.scn);
-  s.place_pointers(m, d, state.ghost_joint_rad);
+  set_clip_planes(s.scn);
+  if (!s.sky_decided) {
+    if (planes_fill_view(m, d, s.scn, static_cast<double>(s.options.width_px) / s.options.height_px)) s.scn.flags[mjRND_SKYBOX] = 0;
+    s.sky_decided = true;
+  }
+  s.place_pointers(m, d, state.ghost_joint_rad, state.pointer_labels);
+  if (state.degree_scale) {
+    add_degree_scale(m, d, s.scn, SceneIds{s.flange_jnt, s.housing_geom, s.collar_geom, s.ghost_body}, state.ghost_joint_rad,
+                     state.pointer_labels);
+  }
   s.paint_led(state.led);
   const mjrRect viewport{0, 0, s.options.width_px, s.options.height_px};
-  mjr_render(viewport, &s.scn, &s.con);
-  s.draw_overlay(state, viewport);
+  const bool partial = s.options.redraw_changed_only && !s.options.shadows && !s.options.reflections && s.flange_jnt >= 0;
+  // A full frame first where the image holds no last frame; its changing
+  // parts are then drawn as every later frame draws them, so that frames of
+  // the same state are pixel-identical (coplanar faces may resolve their
+  // depth ties differently under the narrowed frustum).
+  if (!partial || !s.retained) mjr_render(viewport, &s.scn, &s.con);
+  if (partial) s.render_changed(m, d, state);
+  if (state.title) {
+    s.text->draw_title(*state.title);
+  } else {
+    s.text->draw_panel(state);
+    s.text->draw_banner(state.banner);
+  }
+  // The image now holds this frame's overlay: the next frame redraws under it.
+  s.retained = !state.title;
+  s.last_panel = s.text->panel_rect(state);
+  s.last_banner = s.text->banner_rect(state.banner);
   mjr_readPixels(rgb, nullptr, viewport, &s.con);
   if (flip) flip_rows(rgb, s.options.width_px, s.options.height_px);
 }

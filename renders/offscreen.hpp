@@ -39,6 +39,20 @@ struct RenderOptions {
   int shadow_size = 2048;  // shadow map texture size when shadows are on
   bool reflections = false; // reflective materials (e.g. the table) mirror the module
   bool leave_overlay_room = false; // automatic framing keeps clear of the overlay's corners
+  // Video frames (issue 31): after a full first frame, redraw only the part
+  // of the image that can change -- the module and load's box with room
+  // for the labels, and the overlay's panel and banner -- and keep the rest
+  // of the multisampled image from the frame before. Off with shadows or
+  // reflections (they reach the table). A-RENDERS-18.
+  bool redraw_changed_only = false;
+};
+
+// A video's opening card (issue 29): a heading (the scenario's name) and
+// label/value lines (load, inertia, parameter sets, ...), drawn centred over
+// the dimmed first frame with the overlay's fonts.
+struct TitleCard {
+  std::string heading;
+  std::vector<std::pair<std::string, std::string>> lines;
 };
 
 // What changes per frame besides the physics state.
@@ -50,8 +64,22 @@ struct SceneState {
   std::optional<double> ghost_joint_rad;
   // Text lines drawn in the top-left corner: label column, value column.
   std::vector<std::pair<std::string, std::string>> overlay;
-  // Large text in the top-right corner (the time scale when not real time).
+  // Text in the top-right corner (the time scale: shown here once, not as
+  // an overlay row too); big font from 720 px high, normal font below.
   std::string banner;
+  // Set: the frame is the title card (the overlay and banner are not drawn).
+  std::optional<TitleCard> title;
+  // The degree scale on the housing top and the labels on the flange
+  // pointer and the setpoint ghost (issue 29, A-RENDERS-15).
+  bool degree_scale = true;
+  bool pointer_labels = true;
+};
+
+// Where the overlay panel lies (pixels, origin top-left) and its font, for a
+// frame of the renderer's size: sized from the frame height (issue 29).
+struct OverlayPanel {
+  int x = 0, y = 0, width = 0, height = 0;
+  int char_height = 0; // of the normal font: the MuJoCo font scale chosen by frame height
 };
 
 // An RGB image, rows top-down, 3 bytes per pixel.
@@ -90,6 +118,8 @@ class OffscreenRenderer {
 
   int width() const;
   int height() const;
+  // The panel `state.overlay` is drawn in (empty: zero size).
+  OverlayPanel overlay_panel(const SceneState& state) const;
 
  private:
   struct Impl;

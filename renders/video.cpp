@@ -24,22 +24,24 @@ namespace sreh {
 
 namespace fs = std::filesystem;
 
+// Short labels and values so that the panel stays under a quarter of a
+// 640x360 frame (issue 29); the time scale is the banner's, not a row; the
+// step spans both columns (empty label).
 std::vector<std::pair<std::string, std::string>> overlay_lines(const FrameInfo& f) {
   auto code = [](uint8_t c) { return c == 0 ? std::string("none") : fmt::format("0x{:02X}", c); };
   const TraceRow& r = f.row;
   const ProcessDataOut out = decode_out(r.pd_out);
   std::vector<std::pair<std::string, std::string>> lines;
   lines.emplace_back("t", fmt::format("{:.4f} s", r.t_s));
-  if (!f.time_scale.empty()) lines.emplace_back("time scale", f.time_scale);
-  if (!f.step.empty()) lines.emplace_back("step", f.step);
+  if (!f.step.empty()) lines.emplace_back("", "step " + f.step);
   lines.emplace_back("state", std::string(state_name(r.state)));
-  lines.emplace_back("target", fmt::format("{:.3f} deg", wire_counts_to_deg(out.target_position)));
-  lines.emplace_back("parameter set", fmt::format("{}", out.parameter_set));
-  lines.emplace_back("setpoint", fmt::format("{:.3f} deg", r.setpoint_deg));
-  lines.emplace_back("actual", fmt::format("{:.3f} deg", r.position_deg));
-  lines.emplace_back("tracking error", fmt::format("{:+.4f} deg", r.tracking_error_deg));
-  lines.emplace_back("error / warning", code(r.error_code) + " / " + code(r.warning_code));
-  lines.emplace_back("LED band", std::string(led_name(r.led)));
+  lines.emplace_back("target", fmt::format("{:.2f} deg", wire_counts_to_deg(out.target_position)));
+  lines.emplace_back("set", fmt::format("{}", out.parameter_set));
+  lines.emplace_back("setpoint", fmt::format("{:.2f} deg", r.setpoint_deg));
+  lines.emplace_back("actual", fmt::format("{:.2f} deg", r.position_deg));
+  lines.emplace_back("tracking", fmt::format("{:+.3f} deg", r.tracking_error_deg));
+  lines.emplace_back("err/warn", code(r.error_code) + "/" + code(r.warning_code));
+  lines.emplace_back("LED", std::string(led_name(r.led)));
   return lines;
 }
 
@@ -62,7 +64,9 @@ struct VideoRecorder::Impl {
   std::unique_ptr<io::AtomicDir> frames_out;
   fs::path frames_tmp;
   int flange_qpos = -1;
-  uint64_t next_frame = 0;
+  uint64_t next_frame = 0;    // of the run: the title card's frames come before
+  uint64_t title_frames = 0;
+  bool title_done = false;
   bool finished = false;
 
   // Writer thread: buffers cycle free -> rendered (jobs) -> free.
@@ -111,6 +115,32 @@ struct VideoRecorder::Impl {
     }
   }
 
+  // Renders one image and hands it to the writer as frames first ..
+  // first + count - 1 of the video.
+  void queue(const mjModel* m, const mjData* d, const SceneState& scene, uint64_t first, uint64_t count) {
+    if (count == 0) return;
+    std::size_t buffer = 0;
+    {
+      std::unique_lock lock(mutex);
+      cv.wait(lock, [&] { return error || !free_buffers.empty(); });
+      if (error) std::rethrow_exception(error);
+      buffer = free_buffers.front();
+      free_buffers.pop_front();
+    }
+    renderer->render_into(m, d, scene, buffers[buffer].data(), false);
+    const Job job{buffer, first, count};
+    if (!options.threaded) {
+      emit(job);
+      free_buffers.push_back(buffer);
+      return;
+    }
+    {
+      std::lock_guard lock(mutex);
+      jobs.push_back(job);
+    }
+    cv.notify_all();
+  }
+
   void stop_writer() {
     if (!writer.joinable()) return;
     {
@@ -139,8 +169,10 @@ VideoRecorder::VideoRecorder(const mjModel* m, const VideoOptions& o) : impl_(st
     const fs::path parent = fs::absolute(p).parent_path();
     if (!fs::is_directory(parent)) throw std::invalid_argument("video: directory " + parent.string() + " does not exist");
   };
+  if (o.title && !(o.title_s >= 0)) throw std::invalid_argument("video: the title card's duration must not be negative");
   s.options = o;
   s.frame_rate_sim = o.fps * o.slowmo;
+  if (o.title) s.title_frames = static_cast<uint64_t>(std::llround(o.title_s * o.fps));
   if (!o.path.empty() && !container_for(o.path)) {
     throw std::invalid_argument("video: " + o.path.string() + ": the extension must be .mp4, .webm or .gif");
   }
@@ -161,6 +193,7 @@ VideoRecorder::VideoRecorder(const mjModel* m, const VideoOptions& o) : impl_(st
   ro.shadow_size = o.shadow_size;
   ro.reflections = o.reflections;
   ro.leave_overlay_room = o.overlay;
+  ro.redraw_changed_only = o.redraw_changed_only;
   try {
     s.renderer = std::make_unique<OffscreenRenderer>(m, ro, o.camera);
     if (!o.path.empty()) {
@@ -208,7 +241,10 @@ double VideoRecorder::frame_time_s(uint64_t k) const {
   return static_cast<double>(k) / s.frame_rate_sim;
 }
 const TimeMap* VideoRecorder::time_map() const { return impl_->options.time_map ? &*impl_->options.time_map : nullptr; }
-uint64_t VideoRecorder::frames_emitted() const { return impl_->next_frame; }
+uint64_t VideoRecorder::frames_emitted() const {
+  return impl_->next_frame + (impl_->title_done ? impl_->title_frames : 0);
+}
+uint64_t VideoRecorder::title_frames() const { return impl_->title_frames; }
 
 bool VideoRecorder::wants_frame(double t_s) const { return t_s + 1e-9 >= frame_time_s(impl_->next_frame); }
 
@@ -237,38 +273,25 @@ void VideoRecorder::hold(const mjModel* m, const mjData* d, const FrameInfo& inf
     scene.ghost_joint_rad = flange_angle_rad(m, d) + (info.row.setpoint_deg - info.row.position_deg) * std::numbers::pi / 180.0;
   }
   if (s.options.overlay) {
-    FrameInfo shown = info;
+    // The time scale is shown once, in the banner (issue 29).
     if (s.options.time_map) {
-      const TimeSegment& seg = s.options.time_map->segment_at(info.row.t_s);
-      shown.time_scale = seg.label();
-      if (seg.kind != TimeSegment::Kind::RealTime) scene.banner = seg.label();
+      scene.banner = s.options.time_map->segment_at(info.row.t_s).label();
     } else if (s.options.slowmo != 1.0) {
-      shown.time_scale = fmt::format("slow motion {:g}x", s.options.slowmo);
-      scene.banner = shown.time_scale;
+      scene.banner = fmt::format("slow motion {:g}x", s.options.slowmo);
     }
-    scene.overlay = overlay_lines(shown);
+    scene.overlay = overlay_lines(info);
   }
 
-  std::size_t buffer = 0;
-  {
-    std::unique_lock lock(s.mutex);
-    s.cv.wait(lock, [&] { return s.error || !s.free_buffers.empty(); });
-    if (s.error) std::rethrow_exception(s.error);
-    buffer = s.free_buffers.front();
-    s.free_buffers.pop_front();
+  // The title card goes before the run's first frame (issue 29): the
+  // opening state dimmed, with the card's text.
+  if (s.options.title && !s.title_done) {
+    SceneState card = scene;
+    card.title = s.options.title;
+    card.pointer_labels = card.degree_scale = false; // the card's text alone over the dimmed scene
+    s.queue(m, d, card, 0, s.title_frames);
+    s.title_done = true;
   }
-  s.renderer->render_into(m, d, scene, s.buffers[buffer].data(), false);
-  const Job job{buffer, first, count};
-  if (!s.options.threaded) {
-    s.emit(job);
-    s.free_buffers.push_back(buffer);
-    return;
-  }
-  {
-    std::lock_guard lock(s.mutex);
-    s.jobs.push_back(job);
-  }
-  s.cv.notify_all();
+  s.queue(m, d, scene, s.title_frames + first, count);
 }
 
 void VideoRecorder::finish() {

@@ -38,10 +38,15 @@ struct VideoOptions {
   bool shadows = false;
   int shadow_size = 2048;
   bool reflections = false;
-  std::string x264_preset = "fast";
+  std::string x264_preset = "veryfast";
   int crf = 20;
   bool threaded = true;             // false: render and write on the caller's thread (the reference loop)
+  bool redraw_changed_only = true;  // RenderOptions::redraw_changed_only (issue 31, A-RENDERS-18)
   bool overlay = true;
+  // Set: this card is shown for title_s before the run's first frame
+  // (issue 29); run frame k is then video frame title_frames() + k.
+  std::optional<TitleCard> title;
+  double title_s = 1.5;
   // Called as frames are made with the share of the run rendered (0..1):
   // the CLI's progress line (issue 29). Empty: nothing.
   std::function<void(double)> progress;
@@ -58,7 +63,6 @@ struct FrameInfo {
   // (A-RENDERS-7).
   std::optional<double> ghost_joint_rad;
   std::string step;                  // "4 wait_until"; empty: not shown
-  std::string time_scale;            // filled by the recorder from its time map
 };
 
 class VideoRecorder {
@@ -85,8 +89,10 @@ class VideoRecorder {
   // Throws std::runtime_error (and removes the partial output) on failure.
   void finish();
 
-  uint64_t frames_emitted() const; // video frames (index of the next due frame)
-  double frame_time_s(uint64_t k) const; // simulated time at which frame k is due
+  uint64_t frames_emitted() const; // video frames so far, the title card's included
+  uint64_t title_frames() const;   // round(title_s * fps) with a title card, else 0
+  // Simulated time at which run frame k is due (video frame title_frames() + k).
+  double frame_time_s(uint64_t k) const;
   const TimeMap* time_map() const;       // null: constant slowmo
 
  private:

@@ -31,6 +31,8 @@
 #include "renders/report.hpp"
 #include "renders/run_recording.hpp"
 #include "renders/video.hpp"
+#include "renders/video_title.hpp"
+#include "twin/load_builder.hpp"
 #endif
 
 namespace sreh::tools {
@@ -101,22 +103,44 @@ void write_nvm(const RunArgs& a, const RunResult& r) {
 // stretches (issue 16), unless --slowmo fixes one factor.
 class VideoHook {
  public:
+  explicit VideoHook(const Scenario& s) {
+    title_.scenario_name = s.name;
+    title_.scenario_file = s.file;
+    title_.load = describe_load(s.load);
+    title_.mounting_tilt_deg = s.mounting_tilt_deg;
+    title_.supply_V = s.device.supply_V;
+  }
   void on_step(const Step& step) { step_ = step.number + " " + step.kind; }
   void on_cycle(const Twin& twin) {
     const Plant& plant = twin.plant();
-    if (!recording_) recording_ = std::make_unique<RunRecording>(plant.model());
+    if (!recording_) {
+      recording_ = std::make_unique<RunRecording>(plant.model());
+      title_.load_inertia_gcm2 = twin.load_inertia_gcm2();
+    }
+    // The title card lists each parameter set a move latched, as it was then (issue 29).
+    if (const std::optional<MoveRecord> move = twin.device().pending_move(); move && move->number != last_move_) {
+      last_move_ = move->number;
+      if (!title_.sets.contains(move->parameter_set)) {
+        title_.sets.emplace(move->parameter_set, twin.device().snapshot().configuration.store.motion_set(move->parameter_set));
+      }
+    }
     FrameInfo info;
     info.row = twin.last_row();
     info.ghost_joint_rad = plant.ghost_angle_rad();
     info.step = step_;
     recording_->add(plant.data(), info);
   }
-  VideoSummary render(const VideoOptions& options, bool fixed_slowmo) const {
+  VideoSummary render(VideoOptions options, bool fixed_slowmo) {
     if (!recording_) throw std::runtime_error("video: the run has no cycle to show");
+    title_.time_scale = fixed_slowmo ? fmt::format("slow motion {:g}x", options.slowmo)
+                                     : "each move slowed to >= 2 s, idle sped up";
+    options.title = make_title_card(title_);
     return recording_->render(options, fixed_slowmo);
   }
 
  private:
+  TitleFacts title_;
+  uint32_t last_move_ = 0;
   std::string step_;
   std::unique_ptr<RunRecording> recording_;
 };
@@ -321,7 +345,7 @@ int run_command(RunArgs a) {
     if (report) record_for_report(options, *report);
     if (master_log) master_log->attach(options);
     std::optional<VideoHook> video;
-    if (!a.video.empty() || !a.frames.empty()) video.emplace();
+    if (!a.video.empty() || !a.frames.empty()) video.emplace(scenario);
     options.on_cycle = [&](const Twin& twin) {
       if (video) video->on_cycle(twin);
       progress.update(-1.0, twin.time_s());

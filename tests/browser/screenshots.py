@@ -1,9 +1,9 @@
 """Screenshots of every page at 1400 px (issue 29) into docs/img/: the run
-report (top and plots), the sizing, cycle and sweep pages and serve's live
-page; and, when a demo video exists, its title-card frame. Run by
-docs/img/make_screenshots.sh.
+report (top and plots), the sizing, cycle, sweep and calibration pages and
+serve's live page. Run by docs/img/make_screenshots.sh (which also makes the
+video frames, docs/img/make-video-images.sh).
 
-usage: screenshots.py SREH_TWIN SOURCE_DIR OUT_DIR [VIDEO.mp4]"""
+usage: screenshots.py SREH_TWIN SOURCE_DIR OUT_DIR"""
 import base64
 import os
 import shutil
@@ -44,19 +44,8 @@ def shoot(cdp, path, top=0, max_height=MAX_HEIGHT):
     print("%s: %d kB" % (path, os.path.getsize(path) // 1024))
 
 
-def title_card(video, out):
-    """Hook for the video's title card (issue 29): frame 20 of the demo video, if there is one."""
-    if not video or not os.path.exists(video) or not shutil.which("ffmpeg"):
-        print("no video given or found: title-card frame left as it is")
-        return
-    path = os.path.join(out, "video-title-card.png")
-    subprocess.run(["ffmpeg", "-v", "error", "-y", "-i", video, "-vf", "select=eq(n\\,20)", "-frames:v", "1", path], check=True)
-    print("%s: %d kB" % (path, os.path.getsize(path) // 1024))
-
-
 def main():
     exe, src, out = sys.argv[1], sys.argv[2], sys.argv[3]
-    video = sys.argv[4] if len(sys.argv) > 4 else None
     browser_or_skip()
     tmp = tempfile.mkdtemp()
     cdp = None
@@ -89,7 +78,6 @@ def main():
             cdp.navigate("about:blank")
             s.stop()
             s.kill()
-        title_card(video, out)
     finally:
         if cdp:
             cdp.close()

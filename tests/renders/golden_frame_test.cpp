@@ -37,9 +37,14 @@ RgbImage read_png_rgb(const fs::path& path) {
   return img;
 }
 
+struct GoldenScene {
+  RgbImage with, without, title;
+  OverlayPanel panel;
+};
+
 // The scene with the overlay and, from the same renderer (same framing),
-// without it.
-std::pair<RgbImage, RgbImage> render_golden_scene() {
+// without it, and as the title card (issue 29).
+GoldenScene render_golden_scene() {
   TwinConfig cfg;
   cfg.load = MjcfLoad{std::string(SREH_SOURCE_DIR) + "/models/loads/gripper.xml"};
   Twin twin(cfg);
@@ -64,23 +69,35 @@ std::pair<RgbImage, RgbImage> render_golden_scene() {
   f.row.setpoint_deg = 40;
   f.row.tracking_error_deg = 5;
   f.row.led = LedColor::Yellow;
-  f.time_scale = "slow motion 20x";
   SceneState s;
   s.led = f.row.led;
   s.ghost_joint_rad = -40.0 * M_PI / 180.0;
   s.overlay = overlay_lines(f);
-  s.banner = f.time_scale;
-  RgbImage with = r.render(m, d, s);
+  s.banner = "slow motion 20x";
+  GoldenScene g;
+  g.with = r.render(m, d, s);
+  g.panel = r.overlay_panel(s);
+  SceneState card = s;
+  card.title = TitleCard{"demo: 11 moves, two parameter sets",
+                         {{"scenario", "demo.yaml"},
+                          {"load", "models/loads/gripper.xml"},
+                          {"load inertia", "812.3 g cm^2 about the axis"},
+                          {"set 1", "360 deg/s, accel 100 %, jerk 100 %"},
+                          {"set 2", "90 deg/s, accel 50 %, jerk 100 %"},
+                          {"mounting", "vertical axis"},
+                          {"supply", "24 V"}}};
+  g.title = r.render(m, d, card);
   s.overlay.clear();
   s.banner.clear();
-  RgbImage without = r.render(m, d, s);
+  g.without = r.render(m, d, s);
   mj_deleteData(d);
-  return {with, without};
+  return g;
 }
 
-TEST(GoldenFrame, MatchesTheCommittedImageWithinTolerance) {
-  const fs::path golden = fs::path(SREH_SOURCE_DIR) / "tests/renders/data/golden_frame.png";
-  const RgbImage img = render_golden_scene().first;
+// Mean and share of clearly different pixels against a committed PNG
+// (SREH_UPDATE_GOLDEN=1 rewrites it and skips).
+void expect_matches_golden(const RgbImage& img, const char* name) {
+  const fs::path golden = fs::path(SREH_SOURCE_DIR) / "tests/renders/data" / name;
   if (const char* update = std::getenv("SREH_UPDATE_GOLDEN"); update && std::string(update) == "1") {
     write_png(golden, img.rgb.data(), img.width, img.height);
     GTEST_SKIP() << "golden image rewritten: " << golden;
@@ -100,14 +117,24 @@ TEST(GoldenFrame, MatchesTheCommittedImageWithinTolerance) {
     far += worst > 48 ? 1 : 0;
   }
   const double pixels = static_cast<double>(img.rgb.size() / 3);
-  EXPECT_LT(sum / static_cast<double>(img.rgb.size()), 3.0);  // mean difference per channel level
-  EXPECT_LT(static_cast<double>(far) / pixels, 0.02);         // at most 2 % of pixels clearly different
+  EXPECT_LT(sum / static_cast<double>(img.rgb.size()), 3.0) << name; // mean difference per channel level
+  EXPECT_LT(static_cast<double>(far) / pixels, 0.02) << name;        // at most 2 % of pixels clearly different
+}
+
+TEST(GoldenFrame, MatchesTheCommittedImageWithinTolerance) {
+  expect_matches_golden(render_golden_scene().with, "golden_frame.png");
+}
+
+TEST(GoldenFrame, TitleCardMatchesTheCommittedImageWithinTolerance) {
+  expect_matches_golden(render_golden_scene().title, "golden_title.png");
 }
 
 // The overlay really is in the frame: its corner differs from the bare scene,
 // and the framing keeps the module clear of it.
 TEST(GoldenFrame, OverlayIsDrawnInItsCornerOnly) {
-  const auto [with, without] = render_golden_scene();
+  const GoldenScene g = render_golden_scene();
+  const RgbImage& with = g.with;
+  const RgbImage& without = g.without;
   auto changed = [&](int x0, int x1, int y0, int y1) {
     std::size_t n = 0;
     for (int y = y0; y < y1; ++y)
@@ -116,6 +143,11 @@ TEST(GoldenFrame, OverlayIsDrawnInItsCornerOnly) {
   };
   EXPECT_GT(changed(0, 100, 0, 180), 0.2);       // text column, top left
   EXPECT_LT(changed(400, 640, 100, 360), 0.01);  // the module, bottom right: untouched
+  // Issue 29: at 640x360 the panel covers under a quarter of the width
+  // (it was 37 %), and nothing right of it and below the banner changes.
+  EXPECT_LT(g.panel.x + g.panel.width, 160);
+  EXPECT_GT(g.panel.height, 0);
+  EXPECT_LT(changed(160, 640, 60, 360), 0.002);
 }
 
 } // namespace

@@ -204,5 +204,52 @@ TEST(OffscreenModuleModel, RendersTheRealModuleWithItsLedBandAndGhost) {
   mj_deleteModel(m);
 }
 
+// Issue 29: the degree scale is drawn on the housing and stays there when
+// the flange turns; the pointer labels turn with the flange.
+TEST(OffscreenModuleModel, DegreeScaleStaysWithTheHousingAndPointerLabelsTurnWithTheFlange) {
+  const std::string path = std::string(SREH_SOURCE_DIR) + "/models/sreh50.xml";
+  char error[1000] = "";
+  mjModel* m = mj_loadXML(path.c_str(), nullptr, error, sizeof error);
+  if (!m) GTEST_SKIP() << "models/sreh50.xml not loadable: " << error;
+  mjData* d = mj_makeData(m);
+  const int flange_q = m->jnt_qposadr[mj_name2id(m, mjOBJ_JOINT, "flange")];
+  {
+    RenderOptions o;
+    o.width_px = 640;
+    o.height_px = 360;
+    OffscreenRenderer r(m, o, CameraSpec::top());
+    // The pixels a decoration changes, with the flange at `rad`.
+    auto marks = [&](double rad, bool scale) {
+      d->qpos[flange_q] = rad;
+      mj_forward(m, d);
+      SceneState with, without;
+      with.degree_scale = scale;
+      with.pointer_labels = !scale;
+      without.degree_scale = without.pointer_labels = false;
+      const RgbImage a = r.render(m, d, with), b = r.render(m, d, without);
+      std::vector<bool> changed(static_cast<std::size_t>(a.width * a.height));
+      for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x) changed[static_cast<std::size_t>(y * a.width + x)] = a.at(x, y) != b.at(x, y);
+      return changed;
+    };
+    auto overlap = [](const std::vector<bool>& p, const std::vector<bool>& q) {
+      std::size_t both = 0, n = 0;
+      for (std::size_t i = 0; i < p.size(); ++i) {
+        n += p[i] ? 1 : 0;
+        both += p[i] && q[i] ? 1 : 0;
+      }
+      return std::pair{n, n == 0 ? 0.0 : static_cast<double>(both) / static_cast<double>(n)};
+    };
+    const auto [scale_px, scale_kept] = overlap(marks(0.0, true), marks(1.0, true));
+    EXPECT_GT(scale_px, 300u) << "36 ticks and four numbers";
+    EXPECT_GT(scale_kept, 0.8) << "the scale must stay with the housing";
+    const auto [label_px, label_kept] = overlap(marks(0.0, false), marks(1.0, false));
+    EXPECT_GT(label_px, 40u) << "the pointer's label";
+    EXPECT_LT(label_kept, 0.3) << "the label must turn with the flange";
+  }
+  mj_deleteData(d);
+  mj_deleteModel(m);
+}
+
 } // namespace
 } // namespace sreh
