@@ -74,7 +74,7 @@ bool same_actuators_and_equalities(const mjModel* a, const mjModel* b) {
 
 std::string without_drawing_geoms(const std::string& xml) {
   static const std::regex drawing(
-      R"re(<geom\s+name="(table|plate|housing|connector|collar|flange|bore|mark|stop_lug|ghost_pointer|ghost_tip)"[^>]*/>)re");
+      R"re(<geom\s+name="(table|floor_[nsew]|plate|housing|connector|collar|flange|bore|mark|stop_lug|ghost_pointer|ghost_tip)"[^>]*/>)re");
   return std::regex_replace(xml, drawing, "");
 }
 
