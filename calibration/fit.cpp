@@ -133,6 +133,21 @@ class ReplayCost final : public ceres::CostFunction {
   mutable std::vector<double> last_x_, last_residuals_;
 };
 
+// Reports every solver iteration to FitOptions::progress, counting across
+// the restarts (iteration 0 of a solve is its start, not an iteration).
+class IterationProgress final : public ceres::IterationCallback {
+ public:
+  IterationProgress(const FitOptions& options, const int& done_before) : options_(options), done_before_(done_before) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    if (s.iteration > 0) options_.progress(done_before_ + s.iteration, options_.max_iterations);
+    return ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  const FitOptions& options_;
+  const int& done_before_; // iterations of the earlier solves
+};
+
 double rms(const std::vector<double>& r) {
   double sum = 0;
   for (double v : r) sum += v * v;
@@ -209,8 +224,10 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
   // and a fresh solve from the result restores a trust region that shrank
   // on the roughness, as long as that still lowers the cost by 1 % (A-CAL-3).
   so.use_nonmonotonic_steps = true;
-  ceres::Solver::Summary summary;
   int iterations = 0;
+  IterationProgress progress(options, iterations);
+  if (options.progress) so.callbacks.push_back(&progress);
+  ceres::Solver::Summary summary;
   for (int solve = 0; solve < kMaxSolves; ++solve) {
     ceres::Solve(so, &problem, &summary);
     iterations += static_cast<int>(summary.iterations.size()) - 1;

@@ -4,6 +4,7 @@
 // (calibration/replay.hpp). 95 % intervals from the Jacobian at the
 // solution, widened for the residuals' autocorrelation (A-CAL-4).
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,9 @@ struct FitOptions {
   // encoder, small against the card's ranges (A-CAL-3).
   double relative_step = 0.1;
   double max_rms_residual_deg = 0.02; // converged but worse than this: not a fit (exit 1)
+  // Called after every solver iteration with the iterations so far (over
+  // the restarts) and max_iterations: the CLI's progress line (issue 29).
+  std::function<void(int iterations, int max_iterations)> progress;
 };
 
 struct FittedConstant {

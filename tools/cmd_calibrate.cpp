@@ -3,6 +3,9 @@
 // (calibration/), and `calibrate --plan OUT.yaml`: the identification
 // program to record them with. Exit 0 converged, 1 not converged or the
 // residual too large, 2 bad input (a log named by file:line).
+#include <unistd.h>
+
+#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -17,6 +20,7 @@
 #include "io/cpus.hpp"
 #include "io/output_path.hpp"
 #include "tools/command.hpp"
+#include "tools/progress.hpp"
 
 namespace sreh::tools {
 namespace {
@@ -30,6 +34,7 @@ struct CalibrateArgs {
   std::string plan;   // --plan OUT.yaml
   double mounting_tilt_deg = 0;
   bool json = false;
+  bool quiet = false; // no progress lines on stderr
 };
 
 std::vector<std::string> split_names(const std::string& list) {
@@ -77,8 +82,15 @@ int calibrate_command(CalibrateArgs a) {
   if (!a.report.empty() && !calibration_reports_available()) throw InputError("--report: this build has no renders");
   io::check_outputs({{"--out", a.out, io::OutputKind::File}, {"--report", a.report, io::OutputKind::Folder}}, inputs_of(a));
   CalibrateOutcome outcome;
+  // Progress on stderr (issue 29): a fit replays the logs dozens of times.
+  Progress progress(isatty(STDERR_FILENO) != 0, a.quiet);
+  progress.phase("fitting");
+  a.request.options.progress = [&progress](int iterations, int max_iterations) {
+    progress.update(std::min(0.99, static_cast<double>(iterations) / max_iterations));
+  };
   try {
     outcome = calibrate(a.request);
+    progress.end_phase();
   } catch (const CalibrationInputError& e) {
     throw InputError(e.what());
   } catch (const std::invalid_argument& e) { // a load or setup the twin rejects
@@ -133,6 +145,7 @@ SREH_REGISTER_COMMAND(57, [](CLI::App& app, int& exit_code) {
       ->check(CLI::Range(0.0, 360.0))->capture_default_str();
   cmd->add_option("--step", r.options.relative_step, "Finite-difference step, fraction of each start value (A-CAL-3)")
       ->check(CLI::Range(1e-4, 0.5))->capture_default_str();
+  cmd->add_flag("--quiet", args->quiet, "No progress lines on stderr (they come for work over 2 s)");
   cmd->add_option("--plan", args->plan, "Write the identification program (a scenario to run on the module) here");
   cmd->add_option("--mounting-tilt-deg", args->mounting_tilt_deg, "With --plan: tilt of the axis from vertical, deg")
       ->check(CLI::Range(0.0, 90.0));

@@ -23,25 +23,26 @@
 #include "sizing/sweep_options.hpp"
 #include "tools/command.hpp"
 #include "tools/option_table_cli.hpp"
+#include "tools/progress.hpp"
 
 namespace sreh::tools {
 namespace {
 
-int sweep_command(const sizing::SweepOptions& a) {
+int sweep_command(const sizing::SweepOptions& a, bool quiet) {
   sizing::SweepResult result;
   int threads = 0;
   try {
     sizing::SweepRequest rq = sizing::make_sweep_request(a);
     threads = rq.threads;
-    // Progress for a person watching only (stderr a TTY); never on stdout.
-    if (isatty(STDERR_FILENO) != 0) {
-      rq.progress = [](std::size_t done, std::size_t total) {
-        std::fprintf(stderr, "\rsweep: %zu / %zu points", done, total);
-        if (done == total) std::fprintf(stderr, "\r%40s\r", "");
-        std::fflush(stderr);
-      };
-    }
+    // Progress on stderr (issue 29): redrawn on a terminal, percent and ETA
+    // lines in a CI log for a sweep over 2 s; never on stdout.
+    Progress progress(isatty(STDERR_FILENO) != 0, quiet);
+    progress.phase("sweeping");
+    rq.progress = [&progress](std::size_t done, std::size_t total) {
+      progress.update(static_cast<double>(done) / static_cast<double>(total));
+    };
     result = sizing::run_sweep_command(a, rq);
+    progress.end_phase();
   } catch (const sizing::SizingInputError& e) {
     throw InputError(e.what());
   }
@@ -93,6 +94,8 @@ SREH_REGISTER_COMMAND(31, [](CLI::App& app, int& exit_code) {
   // not needed, so they are checked in the callback rather than by CLI11.
   cmd->get_option("--loads-gcm2")->required(false);
   cmd->get_option("--angles-deg")->required(false);
+  auto quiet = std::make_shared<bool>(false);
+  cmd->add_flag("--quiet", *quiet, "No progress lines on stderr (they come for work over 2 s)");
   auto parts = std::make_shared<std::vector<std::string>>();
   auto merged = std::make_shared<std::string>();
   CLI::App* merge = cmd->add_subcommand(
@@ -100,12 +103,12 @@ SREH_REGISTER_COMMAND(31, [](CLI::App& app, int& exit_code) {
   merge->add_option("--csv", *merged, "Write the merged CSV here")->required();
   merge->add_option("parts", *parts, "The part CSVs, any order")->required();
   merge->callback([parts, merged, &exit_code] { exit_code = merge_command(*merged, *parts); });
-  cmd->callback([a, merge, &exit_code] {
+  cmd->callback([a, merge, quiet, &exit_code] {
     if (merge->parsed()) return;
     if (a->csv.empty()) throw CLI::RequiredError("--csv"); // the CLI's output (Python returns the columns)
     if (a->loads_gcm2.empty()) throw CLI::RequiredError("--loads-gcm2");
     if (a->angles_deg.empty()) throw CLI::RequiredError("--angles-deg");
-    exit_code = sweep_command(*a);
+    exit_code = sweep_command(*a, *quiet);
   });
 });
 
