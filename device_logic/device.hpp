@@ -1,4 +1,4 @@
-// The SREH-50-IOL firmware as a value a caller drives (style.md 1, 2):
+// The SREH-50-IOL firmware as a value a caller drives (docs/style.md 1, 2):
 //   exchange()  once per IO-Link cycle: process data out in, process data in out;
 //   tick()      once per control step: sensor readings in, motor command out;
 //   isdu_read() / isdu_write(): acyclic parameter access (manual chapter 6);

@@ -1,6 +1,6 @@
 // Errors and warnings as the manual numbers them (2.4, 7.2, 7.3): one cause
 // code per bit, sticky errors with an explicit reset, self-clearing warnings
-// (style.md 4). The cause codes are the values of indices 114.x / 115.x.
+// (docs/style.md 4). The cause codes are the values of indices 114.x / 115.x.
 #pragma once
 #include <array>
 #include <cstdint>

@@ -1,5 +1,5 @@
 // Time-optimal jerk-limited (S-curve) point-to-point planner, manual 3.5.
-// A value: limits and a move go in, a profile comes out (style.md 1).
+// A value: limits and a move go in, a profile comes out (docs/style.md 1).
 // Positions in rad relative to the move's start, SI throughout.
 // Closed form (no iteration): see docs/assumptions/motion.md A-MOTION-1..3.
 #pragma once

@@ -1,5 +1,5 @@
 // Strict typed access to yaml-cpp nodes: every failure is a ScenarioError
-// naming file:line:col and the dotted key path (style.md 13). Internal to
+// naming file:line:col and the dotted key path (docs/style.md 13). Internal to
 // the scenario parser.
 #pragma once
 #include <cstdint>

@@ -35,7 +35,7 @@ void expect_within_limits(const Profile& p, const MotionLimits& l, double rel_to
   for (double j : p.phase_jerks_rad_s3()) ASSERT_LE(std::abs(j), tj);
 }
 
-TEST(Planner, LimitsFromParameterSetFollowManual354And355) {
+TEST(Planner, LimitsFromParameterSetFollowTheManual_3_5_4_and_3_5_5) {
   // Factory set 1 (manual 6.2, index 65): 3000 deg/s, 100 %, 100 %, 0 g cm^2.
   const MotionLimits l = limits_from_parameter_set(3000.0, 100.0, 100.0, 0.0);
   EXPECT_DOUBLE_EQ(l.v_max_rad_s, deg_to_rad(3000.0));
@@ -175,7 +175,7 @@ TEST(Planner, ContinuousAcrossPhaseBoundaries) {
   }
 }
 
-// Fixed-seed property test over random moves and parameter sets (style.md 14).
+// Fixed-seed property test over random moves and parameter sets (docs/style.md 14).
 TEST(Planner, RandomMovesRespectLimitsAndEndExactly) {
   std::mt19937_64 rng(20240611);
   std::uniform_real_distribution<double> speed(0.1, 4300.0), pct(0.1, 100.0), load(0.0, 15000.0);
