@@ -67,11 +67,6 @@ constexpr bool error_switches_motor_off(ErrorBit bit, uint8_t code) {
   }
 }
 
-// Subindex of 114 for an error bit: bit 7 -> 1 ... bit 0 -> 8 (manual 6.4).
-constexpr uint8_t error_subindex(ErrorBit bit) { return static_cast<uint8_t>(8 - static_cast<int>(bit)); }
-// Subindex of 115 for a warning bit: bit 7 -> 1, 6 -> 2, 5 -> 3.
-constexpr uint8_t warning_subindex(WarningBit bit) { return static_cast<uint8_t>(8 - static_cast<int>(bit)); }
-
 // Active causes: one code per bit, 0 when inactive (manual 6.4 note).
 struct FaultSet {
   std::array<uint8_t, 8> error_cause{};   // by error bit number

@@ -11,8 +11,14 @@
 
 namespace sreh::io {
 
-// Text for HTML/XML content and attribute values: & < > " ' escaped.
-std::string html_escape(std::string_view text);
+// What html_escape does with control characters and bytes outside ASCII:
+// keep them (UTF-8 pages) or write each byte as a character reference
+// (`&#xNN;`, for the IODD-like export, an ASCII document).
+enum class NonAscii { Keep, AsReference };
+
+// Text for HTML/XML content and attribute values: & < > " ' escaped. The
+// one escaper of the project (HTML pages, SVG plots, the IODD export).
+std::string html_escape(std::string_view text, NonAscii non_ascii = NonAscii::Keep);
 
 // "<!DOCTYPE html>...<title>TITLE</title>\n" + head + "</head>\n<body>\n".
 // `title` is plain text (escaped here); `head` is markup (<style>, <link>,
