@@ -26,9 +26,9 @@ double inertia_gcm2(const LoadSpec& load, const std::string& where) {
   try {
     const BuiltModel built = build_model(load, {}, 1e-4);
     const double j = std::max(0.0, kgm2_to_gcm2(built.load_inertia_kgm2));
-    if (j > kMaxLoad_gcm2 + 1e-6) {
-      throw SizingInputError(fmt::format("{}: load inertia {:.1f} g cm^2 is above the module's limit of 15000 g cm^2 "
-                                         "(manual 3.5.6, 6.2 index 64.4)", where, j));
+    if (j > max_load_gcm2() + 1e-6) {
+      throw SizingInputError(fmt::format("{}: load inertia {:.1f} g cm^2 is above the module's limit of {} g cm^2 "
+                                         "(manual 3.5.6, 6.2 index 64.4)", where, j, max_load_gcm2()));
     }
     return j;
   } catch (const std::invalid_argument& e) {

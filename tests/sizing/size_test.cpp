@@ -122,7 +122,7 @@ TEST(Size, RecommendedSetRunsInTheTwinWithoutError) {
   ASSERT_FALSE(r.tried.empty());
   EXPECT_FALSE(r.tried.front().feasible);
   EXPECT_TRUE(e.set.setting.accel_pct < 100.0 || e.set.setting.jerk_pct < 100.0 ||
-              e.set.setting.speed_dps < kMaxSpeed_dps);
+              e.set.setting.speed_dps < max_speed_dps());
   EXPECT_LE(e.steady_temperature_C, kTemperatureWarning_C - 5.0); // the default margin
   EXPECT_EQ(e.set.load_gcm2, 15000.0);
 
