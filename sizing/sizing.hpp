@@ -199,7 +199,8 @@ ModuleModel module_from_option(const std::string& model_path);
 // inertia (MJCF loads); returns it in g cm^2.
 double validate(const SizingRequest& request);
 
-// Highest speed the motor reaches at this voltage (manual 3.5.3): 4300 x U / 24, at most 4300.
+// Highest speed the motor reaches at this voltage (manual 3.5.3): the speed
+// row's maximum (64+n.1) x U / 24, at most that maximum.
 double voltage_speed_limit_dps(double voltage_V);
 
 // The parameter set for a setting: raw values as written, read back as the
