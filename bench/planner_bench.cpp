@@ -106,7 +106,7 @@ void BM_ControllerUpdate(benchmark::State& state) {
   double t = 0;
   for (auto _ : state) {
     const KinematicState s = p.at(t);
-    double torque = c.update(s, s.pos * 0.999, 3.15e-4, 0.6, 0.6, dt);
+    double torque = c.update(s, s.pos_rad * 0.999, 3.15e-4, 0.6, 0.6, dt);
     benchmark::DoNotOptimize(torque);
     t += dt;
     if (t > p.duration_s()) t = 0;

@@ -6,19 +6,19 @@
 
 #include "calibration/fit_output.hpp"
 #include "scenarios/load_file.hpp"
+#include "twin/load_builder.hpp"
 #include "scenarios/scenario_parser.hpp"
 
 namespace sreh {
 namespace {
 
-constexpr double kMaxLoad_gcm2 = 15000; // manual 3.5.6
 
 LoadSpec load_of(const CalibrateRequest& r) {
   if (r.load_gcm2 && !r.load_file.empty()) throw CalibrationInputError("--load-gcm2 and --load: give only one of them");
   if (r.load_gcm2) {
-    if (!std::isfinite(*r.load_gcm2) || *r.load_gcm2 < 0 || *r.load_gcm2 > kMaxLoad_gcm2) {
+    if (!std::isfinite(*r.load_gcm2) || *r.load_gcm2 < 0 || *r.load_gcm2 > max_load_gcm2()) {
       throw CalibrationInputError(fmt::format("--load-gcm2 {:g}: expected 0 .. {:g} g cm^2 (manual 3.5.6)", *r.load_gcm2,
-                                              kMaxLoad_gcm2));
+                                              max_load_gcm2()));
     }
     return InertiaLoad{*r.load_gcm2};
   }

@@ -8,12 +8,12 @@
 
 #include "calibration/master_log.hpp"
 #include "scenarios/load_file.hpp"
+#include "twin/load_builder.hpp"
 #include "twin/twin.hpp"
 
 namespace sreh {
 namespace {
 
-constexpr double kMaxLoad_gcm2 = 15000; // manual 3.5.6
 
 // The eight parameter sets (manual 6.2): speed, acceleration and jerk
 // factor, from a slow constant-speed crawl (friction) to near full speed
@@ -58,9 +58,9 @@ constexpr double kWithin_s = 5.0;     // generous: the longest move (340 deg at 
 double load_inertia_gcm2(const PlanRequest& r) {
   if (r.load_gcm2 && !r.load_file.empty()) throw CalibrationInputError("--load-gcm2 and --load: give only one of them");
   if (r.load_gcm2) {
-    if (!std::isfinite(*r.load_gcm2) || *r.load_gcm2 < 0 || *r.load_gcm2 > kMaxLoad_gcm2) {
+    if (!std::isfinite(*r.load_gcm2) || *r.load_gcm2 < 0 || *r.load_gcm2 > max_load_gcm2()) {
       throw CalibrationInputError(fmt::format("--load-gcm2 {:g}: expected 0 .. {:g} g cm^2 (manual 3.5.6)", *r.load_gcm2,
-                                              kMaxLoad_gcm2));
+                                              max_load_gcm2()));
     }
     return *r.load_gcm2;
   }

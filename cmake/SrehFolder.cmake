@@ -1,7 +1,7 @@
 include(GNUInstallDirs)
 
 # sreh_folder_library(NAME [DEPS ...]): one library target per code folder
-# (style.md 15), built from every .cpp in the folder, with a namespaced alias.
+# (docs/style.md 15), built from every .cpp in the folder, with a namespaced alias.
 function(sreh_folder_library name)
   cmake_parse_arguments(ARG "" "" "DEPS;PRIVATE_DEPS" ${ARGN})
   file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp)

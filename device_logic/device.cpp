@@ -210,7 +210,7 @@ ProcessDataIn Device::Impl::pd_in() const {
 }
 
 // One control step of dt_ns: the device's clocks are integer nanoseconds
-// (style.md 8); a step length in seconds is derived, never summed.
+// (docs/style.md 8); a step length in seconds is derived, never summed.
 MotorCommand Device::Impl::tick(int64_t dt_ns, const SensorReadings& sensors) {
   if (!powered) return {};
   time_ns += dt_ns;

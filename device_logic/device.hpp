@@ -1,4 +1,4 @@
-// The SREH-50-IOL firmware as a value a caller drives (style.md 1, 2):
+// The SREH-50-IOL firmware as a value a caller drives (docs/style.md 1, 2):
 //   exchange()  once per IO-Link cycle: process data out in, process data in out;
 //   tick()      once per control step: sensor readings in, motor command out;
 //   isdu_read() / isdu_write(): acyclic parameter access (manual chapter 6);
@@ -14,13 +14,19 @@
 #include <string_view>
 #include <vector>
 
-#include "device_logic/device_snapshot.hpp"
 #include "device_logic/device_types.hpp"
 #include "device_logic/isdu.hpp"
 #include "device_logic/move_record.hpp"
 #include "device_logic/process_data.hpp"
 
 namespace sreh {
+
+// Defined in device_logic/drive_model.hpp and device_snapshot.hpp: include
+// those where a drive model is built or a snapshot is looked into. This
+// header names them only, so a user of Device does not compile the
+// firmware's insides.
+struct DriveModel;
+struct DeviceSnapshot;
 
 // The non-volatile memory image: configuration and persistent diagnostics
 // (manual 6.2, 6.3). A power cycle keeps it; the twin may save it to a file.

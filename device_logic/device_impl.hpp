@@ -1,4 +1,4 @@
-// The Device's insides (style.md 2): the three parts of a DeviceSnapshot
+// The Device's insides (docs/style.md 2): the three parts of a DeviceSnapshot
 // (configuration, state, monitors; bases, so the firmware reads its fields
 // by name) plus the constant motor model and the firmware's functions.
 #pragma once

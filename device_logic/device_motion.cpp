@@ -48,9 +48,9 @@ void Device::Impl::start_move() {
 // T4 and T8.1: brake from the setpoint's state now (manual 3.2).
 void Device::Impl::start_stop_profile() {
   KinematicState now = setpoint;
-  now.pos = 0;
+  now.pos_rad = 0;
   profile = Profile::stop(now, limits);
-  const double start_rad = setpoint.pos;
+  const double start_rad = setpoint.pos_rad;
   profile_ns = 0;
   // Stop profile positions are relative to where braking starts.
   target_phys = rad_to_internal_counts(start_rad + profile.end_position_rad());
@@ -72,7 +72,7 @@ MotorCommand Device::Impl::control(int64_t dt_ns, double dt_s) {
       profile_ns += dt_ns;
       const double t_s = ns_to_seconds(profile_ns);
       const KinematicState s = profile.at(t_s);
-      setpoint = KinematicState{stop_base_rad + s.pos, s.vel, s.acc, s.jerk};
+      setpoint = KinematicState{stop_base_rad + s.pos_rad, s.vel_rad_s, s.acc_rad_s2, s.jerk_rad_s3};
       if (t_s >= profile.duration_s()) { // point (b) of Fig. 3
         hold_phys = target_phys;
         setpoint = KinematicState{internal_counts_to_rad(hold_phys), 0, 0, 0};
@@ -93,7 +93,7 @@ MotorCommand Device::Impl::control(int64_t dt_ns, double dt_s) {
 
   // Tracking error (manual 6.2 index 87, 7.2 114.5): against the planned
   // setpoint, recorded before any trip so the trip is in the records.
-  const double error_rad = setpoint.pos - measured;
+  const double error_rad = setpoint.pos_rad - measured;
   if (tracking.step(std::abs(rad_to_deg(error_rad)), tracking_limit_deg(),
                     store.raw(param::kTrackingErrorActive) == 1)) {
     raise_error(ErrorBit::TrackingError, cause::kTrackingError);
@@ -132,7 +132,7 @@ double Device::Impl::user_deg(int64_t phys_counts) const {
 }
 
 double Device::Impl::setpoint_user_deg() const {
-  return motor_on() ? rad_to_deg(dir() * setpoint.pos) - internal_counts_to_deg(origin)
+  return motor_on() ? rad_to_deg(dir() * setpoint.pos_rad) - internal_counts_to_deg(origin)
                     : internal_counts_to_deg(user_now());
 }
 

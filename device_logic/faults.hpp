@@ -1,6 +1,6 @@
 // Errors and warnings as the manual numbers them (2.4, 7.2, 7.3): one cause
 // code per bit, sticky errors with an explicit reset, self-clearing warnings
-// (style.md 4). The cause codes are the values of indices 114.x / 115.x.
+// (docs/style.md 4). The cause codes are the values of indices 114.x / 115.x.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -66,11 +66,6 @@ constexpr bool error_switches_motor_off(ErrorBit bit, uint8_t code) {
       return true;
   }
 }
-
-// Subindex of 114 for an error bit: bit 7 -> 1 ... bit 0 -> 8 (manual 6.4).
-constexpr uint8_t error_subindex(ErrorBit bit) { return static_cast<uint8_t>(8 - static_cast<int>(bit)); }
-// Subindex of 115 for a warning bit: bit 7 -> 1, 6 -> 2, 5 -> 3.
-constexpr uint8_t warning_subindex(WarningBit bit) { return static_cast<uint8_t>(8 - static_cast<int>(bit)); }
 
 // Active causes: one code per bit, 0 when inactive (manual 6.4 note).
 struct FaultSet {

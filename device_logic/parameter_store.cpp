@@ -7,6 +7,7 @@
 
 #include <algorithm>
 
+#include "device_logic/parameter_ids.hpp"
 #include "device_logic/parameter_table.hpp"
 
 namespace sreh {
@@ -48,7 +49,8 @@ uint16_t decode_checked(const ParameterEntry& row, std::span<const uint8_t> data
 // A-PARAM-6: the position limit's minimum must not exceed its maximum
 // (manual 6.2 index 81), whether or not the limit is active.
 bool consistent(const std::vector<int64_t>& numeric) {
-  return numeric[pos_of(81, 1)] <= numeric[pos_of(81, 2)];
+  const ParamId lo = param::kPositionLimitMin, hi = param::kPositionLimitMax;
+  return numeric[pos_of(lo.index, lo.subindex)] <= numeric[pos_of(hi.index, hi.subindex)];
 }
 
 void put_u16(std::vector<uint8_t>& out, uint16_t v) { be::append16(out, v); }
@@ -307,14 +309,16 @@ void ParameterStore::factory_reset(bool keep_tags) {
 }
 
 MotionParameterSet ParameterStore::motion_set(int n) const {
-  const auto index = static_cast<uint16_t>(64 + std::clamp(n, 0, 7));
+  const param::MotionSet set(std::clamp(n, 0, param::kMotionSets - 1));
   const auto table = parameter_table();
-  const auto display = [&](uint8_t sub) {
-    const std::size_t p = pos_of(index, sub);
+  const auto display = [&](ParamId id) {
+    const std::size_t p = pos_of(id.index, id.subindex);
     return static_cast<double>(active_.numeric[p]) * table[p].display_scale;
   };
-  return MotionParameterSet{display(1), display(2), display(3), display(4),
-                            display(5), display(6), display(7), active_.numeric[pos_of(index, 8)] != 0};
+  const ParamId active = set.settling_timeout_active;
+  return MotionParameterSet{display(set.speed),       display(set.acceleration), display(set.jerk),
+                            display(set.load),        display(set.tolerance),    display(set.waiting_time),
+                            display(set.settling_timeout), active_.numeric[pos_of(active.index, active.subindex)] != 0};
 }
 
 int64_t ParameterStore::raw(uint16_t index, uint8_t subindex) const {

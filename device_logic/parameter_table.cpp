@@ -1,4 +1,4 @@
-// The parameter table of manual chapter 6 as one constexpr array (style.md 5).
+// The parameter table of manual chapter 6 as one constexpr array (docs/style.md 5).
 // Every row cites its manual section; ISDU validation, `params`, Data Storage
 // and the memory image all read this table, no range is repeated elsewhere.
 // Constants the manual leaves open are docs/assumptions/parameters.md entries.

@@ -1,5 +1,5 @@
 // The acyclic (ISDU) parameter table, manual chapter 6: declared once, read
-// by ISDU validation, `params`, data storage and the docs (style.md 5).
+// by ISDU validation, `params`, data storage and the docs (docs/style.md 5).
 #pragma once
 #include <cstdint>
 #include <optional>

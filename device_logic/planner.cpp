@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "device_logic/units.hpp"
 
@@ -13,13 +15,25 @@ namespace {
 
 bool finite_positive(double x) { return std::isfinite(x) && x > 0.0; }
 
+// A planner asked to plan with a limit that is zero, negative or not a
+// number is a caller's bug, not a move: say which limit, once.
+void require_valid(const MotionLimits& l, const char* planner) {
+  const auto fail = [&](const char* name, double v) {
+    throw std::invalid_argument(std::string(planner) + ": " + name + " = " + std::to_string(v) +
+                                " is not a finite positive number");
+  };
+  if (!finite_positive(l.v_max_rad_s)) fail("v_max_rad_s", l.v_max_rad_s);
+  if (!finite_positive(l.a_max_rad_s2)) fail("a_max_rad_s2", l.a_max_rad_s2);
+  if (!finite_positive(l.j_max_rad_s3)) fail("j_max_rad_s3", l.j_max_rad_s3);
+}
+
 // State after `t` seconds of constant jerk `j` from `b`.
 KinematicState advance(const KinematicState& b, double j, double t) {
   KinematicState s;
-  s.pos = b.pos + t * (b.vel + t * (0.5 * b.acc + t * (j / 6.0)));
-  s.vel = b.vel + t * (b.acc + t * (0.5 * j));
-  s.acc = b.acc + t * j;
-  s.jerk = j;
+  s.pos_rad = b.pos_rad + t * (b.vel_rad_s + t * (0.5 * b.acc_rad_s2 + t * (j / 6.0)));
+  s.vel_rad_s = b.vel_rad_s + t * (b.acc_rad_s2 + t * (0.5 * j));
+  s.acc_rad_s2 = b.acc_rad_s2 + t * j;
+  s.jerk_rad_s3 = j;
   return s;
 }
 
@@ -43,16 +57,18 @@ void Profile::finish(const KinematicState& start) {
   boundaries_[0] = start;
   for (int i = 0; i < 7; ++i) {
     t_start_[i + 1] = t_start_[i] + durations_[i];
-    boundaries_[i].jerk = jerks_[i];
+    boundaries_[i].jerk_rad_s3 = jerks_[i];
     boundaries_[i + 1] = advance(boundaries_[i], jerks_[i], durations_[i]);
   }
-  boundaries_[7].jerk = 0.0;
+  boundaries_[7].jerk_rad_s3 = 0.0;
   t_end_ = t_start_[7];
 }
 
 Profile Profile::rest_to_rest(double distance_rad, const MotionLimits& limits) {
+  require_valid(limits, "Profile::rest_to_rest");
+  if (!std::isfinite(distance_rad)) throw std::invalid_argument("Profile::rest_to_rest: the distance is not finite");
   Profile p;
-  if (!limits.valid() || !std::isfinite(distance_rad) || distance_rad == 0.0) return p;
+  if (distance_rad == 0.0) return p;
 
   const double d = std::abs(distance_rad);
   const double v = limits.v_max_rad_s;
@@ -93,9 +109,9 @@ Profile Profile::rest_to_rest(double distance_rad, const MotionLimits& limits) {
   // integration result (the device adds it to an integer count target).
   for (int i = 4; i < 8; ++i) {
     const KinematicState& m = p.boundaries_[7 - i];
-    p.boundaries_[i].pos = distance_rad - m.pos;
-    p.boundaries_[i].vel = m.vel;
-    p.boundaries_[i].acc = -m.acc;
+    p.boundaries_[i].pos_rad = distance_rad - m.pos_rad;
+    p.boundaries_[i].vel_rad_s = m.vel_rad_s;
+    p.boundaries_[i].acc_rad_s2 = -m.acc_rad_s2;
   }
   p.end_pos_ = distance_rad;
   return p;
@@ -103,19 +119,22 @@ Profile Profile::rest_to_rest(double distance_rad, const MotionLimits& limits) {
 
 Profile Profile::stop(const KinematicState& from, const MotionLimits& limits) {
   Profile p;
-  p.end_pos_ = from.pos;
-  p.boundaries_.fill(KinematicState{from.pos, 0.0, 0.0, 0.0});
-  if (!limits.valid() || !std::isfinite(from.vel) || !std::isfinite(from.acc) || !std::isfinite(from.pos)) return p;
-  if (from.vel == 0.0 && from.acc == 0.0) return p;
+  p.end_pos_ = from.pos_rad;
+  p.boundaries_.fill(KinematicState{from.pos_rad, 0.0, 0.0, 0.0});
+  require_valid(limits, "Profile::stop");
+  if (!std::isfinite(from.vel_rad_s) || !std::isfinite(from.acc_rad_s2) || !std::isfinite(from.pos_rad)) {
+    throw std::invalid_argument("Profile::stop: the start state is not finite");
+  }
+  if (from.vel_rad_s == 0.0 && from.acc_rad_s2 == 0.0) return p;
 
   const double a_max = limits.a_max_rad_s2;
   const double j = limits.j_max_rad_s3;
   // Velocity reached if the acceleration were ramped to zero at once.
-  const double v_b = from.vel + from.acc * std::abs(from.acc) / (2.0 * j);
+  const double v_b = from.vel_rad_s + from.acc_rad_s2 * std::abs(from.acc_rad_s2) / (2.0 * j);
   // Mirror so that the braking acceleration is negative: s * (state).
-  const double s = v_b > 0.0 ? 1.0 : (v_b < 0.0 ? -1.0 : (from.acc > 0.0 ? 1.0 : -1.0));
-  const double v0 = s * from.vel;
-  const double a0 = s * from.acc;
+  const double s = v_b > 0.0 ? 1.0 : (v_b < 0.0 ? -1.0 : (from.acc_rad_s2 > 0.0 ? 1.0 : -1.0));
+  const double v0 = s * from.vel_rad_s;
+  const double a0 = s * from.acc_rad_s2;
 
   double t1 = 0, t2 = 0, t3 = 0;
   double j1 = -j; // jerk of the first phase (mirrored frame)
@@ -136,30 +155,30 @@ Profile Profile::stop(const KinematicState& from, const MotionLimits& limits) {
   }
   p.durations_ = {t1, t2, t3, 0.0, 0.0, 0.0, 0.0};
   p.jerks_ = {s * j1, 0.0, s * j, 0.0, 0.0, 0.0, 0.0};
-  p.finish(KinematicState{from.pos, from.vel, from.acc, 0.0});
+  p.finish(KinematicState{from.pos_rad, from.vel_rad_s, from.acc_rad_s2, 0.0});
   // Exactly at rest at the end, wherever that is.
   for (int i = 3; i < 8; ++i) {
-    p.boundaries_[i].vel = 0.0;
-    p.boundaries_[i].acc = 0.0;
-    p.boundaries_[i].jerk = 0.0;
+    p.boundaries_[i].vel_rad_s = 0.0;
+    p.boundaries_[i].acc_rad_s2 = 0.0;
+    p.boundaries_[i].jerk_rad_s3 = 0.0;
   }
-  p.end_pos_ = p.boundaries_[7].pos;
+  p.end_pos_ = p.boundaries_[7].pos_rad;
   return p;
 }
 
 double Profile::peak_velocity_rad_s() const {
-  double peak = boundaries_[0].vel;
+  double peak = boundaries_[0].vel_rad_s;
   const auto consider = [&peak](double v) {
     if (std::abs(v) > std::abs(peak)) peak = v;
   };
   for (int i = 0; i < 7; ++i) {
     if (durations_[i] <= 0.0) continue;
     const KinematicState& b = boundaries_[i];
-    consider(boundaries_[i + 1].vel);
+    consider(boundaries_[i + 1].vel_rad_s);
     // Interior extremum where the acceleration crosses zero.
     if (jerks_[i] != 0.0) {
-      const double tau = -b.acc / jerks_[i];
-      if (tau > 0.0 && tau < durations_[i]) consider(advance(b, jerks_[i], tau).vel);
+      const double tau = -b.acc_rad_s2 / jerks_[i];
+      if (tau > 0.0 && tau < durations_[i]) consider(advance(b, jerks_[i], tau).vel_rad_s);
     }
   }
   return peak;

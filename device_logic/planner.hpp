@@ -1,5 +1,5 @@
 // Time-optimal jerk-limited (S-curve) point-to-point planner, manual 3.5.
-// A value: limits and a move go in, a profile comes out (style.md 1).
+// A value: limits and a move go in, a profile comes out (docs/style.md 1).
 // Positions in rad relative to the move's start, SI throughout.
 // Closed form (no iteration): see docs/assumptions/motion.md A-MOTION-1..3.
 #pragma once
@@ -12,7 +12,10 @@ struct MotionLimits {
   double a_max_rad_s2 = 0; // manual 3.5.4: accel% x alpha100%
   double j_max_rad_s3 = 0; // manual 3.5.5: jerk% x alpha100% / 10 ms
 
-  // All three finite and > 0. The planners return an empty profile otherwise.
+  // All three finite and > 0. The planners throw std::invalid_argument
+  // (naming the limit) otherwise: an empty profile would look like a move
+  // that is already done. The device never gets there: its limits come from
+  // table rows whose minimum is above zero (manual 6.2).
   bool valid() const;
   bool operator==(const MotionLimits&) const = default;
 };
@@ -25,10 +28,10 @@ struct MotionLimits {
 MotionLimits limits_from_parameter_set(double speed_dps, double accel_pct, double jerk_pct, double load_gcm2);
 
 struct KinematicState {
-  double pos = 0; // rad
-  double vel = 0; // rad/s
-  double acc = 0; // rad/s^2
-  double jerk = 0; // rad/s^3
+  double pos_rad = 0;
+  double vel_rad_s = 0;
+  double acc_rad_s2 = 0;
+  double jerk_rad_s3 = 0;
   bool operator==(const KinematicState&) const = default;
 };
 
@@ -40,17 +43,19 @@ class Profile {
   // Rest to rest over `distance_rad` (any sign, zero allowed), time-optimal
   // for the limits. Phases: jerk up, const acc, jerk down, cruise, and the
   // mirror image; a limit that is not reached leaves its phase at zero.
-  // at(duration_s()).pos == distance_rad exactly (the device adds it to an
-  // integer count target). Invalid limits or distance: an empty profile
-  // (duration 0, end 0), i.e. no move.
+  // at(duration_s()).pos_rad == distance_rad exactly (the device adds it to an
+  // integer count target). A zero distance is an empty profile (duration
+  // 0, end 0); invalid limits or a non-finite distance throw
+  // std::invalid_argument.
   static Profile rest_to_rest(double distance_rad, const MotionLimits& limits);
 
   // From a moving state to rest as fast as the acceleration and jerk limits
   // allow (manual 3.2 transition 4). The end position is wherever it stops;
-  // `from.pos` is the start position (the profile's positions are absolute
-  // in the caller's frame then, start = from.pos). An acceleration already
+  // `from.pos_rad` is the start position (the profile's positions are absolute
+  // in the caller's frame then, start = from.pos_rad). An acceleration already
   // beyond a_max is first brought back inside the limit at full jerk
   // (A-MOTION-4). Uses phases 0..2 only; the end is exactly vel = acc = 0.
+  // Invalid limits or a non-finite state throw std::invalid_argument.
   static Profile stop(const KinematicState& from, const MotionLimits& limits);
 
   double duration_s() const { return t_end_; }

@@ -30,14 +30,14 @@ void PositionController::reset(double measured_pos_rad) {
 
 double PositionController::update(const KinematicState& setpoint, double measured_pos_rad, double inertia_kgm2,
                                   double torque_limit_pos_Nm, double torque_limit_neg_Nm, double dt_s) {
-  if (!(dt_s > 0.0) || !std::isfinite(measured_pos_rad) || !std::isfinite(setpoint.pos) ||
+  if (!(dt_s > 0.0) || !std::isfinite(measured_pos_rad) || !std::isfinite(setpoint.pos_rad) ||
       !std::isfinite(inertia_kgm2)) {
     return 0.0;
   }
   if (!primed_) {
     reset(measured_pos_rad);
-    last_sp_pos_ = setpoint.pos;
-    sp_vel_ = setpoint.vel;
+    last_sp_pos_ = setpoint.pos_rad;
+    sp_vel_ = setpoint.vel_rad_s;
   }
 
   // Speed from encoder differences, low-passed (one count per step is
@@ -45,18 +45,18 @@ double PositionController::update(const KinematicState& setpoint, double measure
   const double alpha = dt_s / (gains_.velocity_filter_s + dt_s);
   vel_est_ += alpha * ((measured_pos_rad - last_pos_) / dt_s - vel_est_);
   last_pos_ = measured_pos_rad;
-  sp_vel_ += alpha * ((setpoint.pos - last_sp_pos_) / dt_s - sp_vel_);
-  last_sp_pos_ = setpoint.pos;
+  sp_vel_ += alpha * ((setpoint.pos_rad - last_sp_pos_) / dt_s - sp_vel_);
+  last_sp_pos_ = setpoint.pos_rad;
 
   const double j = inertia_kgm2;
   const double wv = gains_.velocity_bandwidth_for(j);
   const double kv = j * wv;
-  const double pos_err = setpoint.pos - measured_pos_rad;
+  const double pos_err = setpoint.pos_rad - measured_pos_rad;
   const double vel_err = sp_vel_ + gains_.position_ratio * wv * pos_err - vel_est_;
   const double hi = std::max(0.0, torque_limit_pos_Nm);
   const double lo = -std::max(0.0, torque_limit_neg_Nm);
 
-  const double unsat = j * setpoint.acc + kv * vel_err + integral_;
+  const double unsat = j * setpoint.acc_rad_s2 + kv * vel_err + integral_;
   const double torque = std::clamp(unsat, lo, hi);
   saturated_ = torque != unsat;
 

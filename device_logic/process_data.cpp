@@ -79,6 +79,15 @@ ProcessDataOut decode_out(std::span<const uint8_t> bytes) {
   return decode_out(f);
 }
 
+int64_t pd_field_value(std::span<const uint8_t> frame, const PdField& field) {
+  uint64_t bits = 0; // at most 7 octets: fits
+  for (const uint8_t b : frame) bits = (bits << 8) | b;
+  const uint64_t mask = field.bit_length >= 64 ? ~uint64_t{0} : (uint64_t{1} << field.bit_length) - 1;
+  const uint64_t v = (bits >> field.bit_offset) & mask;
+  if (field.type == PdFieldType::Int32) return static_cast<int32_t>(static_cast<uint32_t>(v));
+  return static_cast<int64_t>(v);
+}
+
 ProcessDataIn decode_in(std::span<const uint8_t> bytes) {
   check_length(bytes.size(), kPdInBytes, "process data in");
   PdInFrame f{};

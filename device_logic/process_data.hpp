@@ -63,9 +63,13 @@ struct PdField {
   unsigned bit_offset;
   unsigned bit_length;
   std::string_view section;
+  // The position fields' degrees view (manual 2.5: 2^16 counts per
+  // revolution), named next to the raw one in every decoded view; "" for
+  // the others. One vocabulary: `<what>_raw` the wire counts, `<what>_deg`.
+  std::string_view deg_name = {};
 };
 inline constexpr std::array<PdField, 9> kPdOutFields{{
-    {"target_raw", "Target position", PdFieldType::Int32, 16, 32, "2.2, 2.5"},
+    {"target_raw", "Target position", PdFieldType::Int32, 16, 32, "2.2, 2.5", "target_deg"},
     {"parameter_set", "Motion parameter set", PdFieldType::UInt8, 8, 8, "2.2"},
     {"shortest_path", "Shortest path", PdFieldType::Bool, 6, 1, "2.2, 4.3"},
     {"relative", "Relative", PdFieldType::Bool, 5, 1, "2.2, 4.2"},
@@ -76,7 +80,7 @@ inline constexpr std::array<PdField, 9> kPdOutFields{{
     {"motor_on", "Motor on", PdFieldType::Bool, 0, 1, "2.2"},
 }};
 inline constexpr std::array<PdField, 9> kPdInFields{{
-    {"position_raw", "Actual position", PdFieldType::Int32, 24, 32, "2.3, 2.5"},
+    {"position_raw", "Actual position", PdFieldType::Int32, 24, 32, "2.3, 2.5", "position_deg"},
     {"error_code", "Error code", PdFieldType::UInt8, 16, 8, "2.3, 2.4"},
     {"warning_code", "Warning code", PdFieldType::UInt8, 8, 8, "2.3, 2.4"},
     {"error", "Error", PdFieldType::Bool, 5, 1, "2.3"},
@@ -86,6 +90,13 @@ inline constexpr std::array<PdField, 9> kPdInFields{{
     {"ready", "Ready", PdFieldType::Bool, 1, 1, "2.3"},
     {"motor_off", "Motor off", PdFieldType::Bool, 0, 1, "2.3"},
 }};
+
+// One field of a frame read through its row: the bits from bit_offset (from
+// the frame's least significant bit) on, Int32 sign-extended, Bool 0 / 1.
+// The decoded views (serve's JSON, Python's dicts) are built from the rows
+// with it, so they cannot list a field or a bit differently. `frame` must
+// be the field table's frame (6 octets out, 7 in).
+int64_t pd_field_value(std::span<const uint8_t> frame, const PdField& field);
 
 // Manual 2.5: the int32 position is the low 32 bits of the position in 2^16
 // counts per revolution; beyond +-2^15 revolutions it overflows (wraps).

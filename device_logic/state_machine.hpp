@@ -1,6 +1,6 @@
 // The state machine of manual 3.1/3.2 as a table: one row per transition,
 // tagged with the manual's transition number or an ASSUMPTIONS.md entry
-// (style.md 3). Rows with a cause raise that error instead of moving.
+// (docs/style.md 3). Rows with a cause raise that error instead of moving.
 #pragma once
 #include <cstdint>
 #include <optional>

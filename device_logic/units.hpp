@@ -1,4 +1,4 @@
-// Every unit conversion in one place (style.md 6). SI inside; units in names
+// Every unit conversion in one place (docs/style.md 6). SI inside; units in names
 // at every boundary.
 #pragma once
 #include <cstdint>
@@ -47,7 +47,7 @@ constexpr int64_t rad_to_internal_counts(double rad) {
 }
 
 // Durations in integer nanoseconds, so clocks never accumulate float error
-// (style.md 8). Non-finite or negative durations count as 0.
+// (docs/style.md 8). Non-finite or negative durations count as 0.
 inline int64_t seconds_to_ns(double s) { return s > 0.0 && s < 9e9 ? static_cast<int64_t>(s * 1e9 + 0.5) : 0; }
 // Back to seconds for a step length or a sample time: one correctly rounded
 // division (100'000 ns is exactly the double 1e-4), never a running sum.

@@ -15,10 +15,19 @@ const char* const kPrintCss =
     "button,input,video,.hint{display:none!important}\n"
     "</style>\n";
 
-std::string html_escape(std::string_view text) {
+std::string html_escape(std::string_view text, NonAscii non_ascii) {
+  static constexpr char kHex[] = "0123456789ABCDEF";
   std::string out;
   out.reserve(text.size());
   for (char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (non_ascii == NonAscii::AsReference && (byte < 0x20 || byte >= 0x7F)) {
+      out += "&#x";
+      if (byte >= 0x10) out += kHex[byte >> 4];
+      out += kHex[byte & 0xF];
+      out += ';';
+      continue;
+    }
     switch (c) {
       case '&': out += "&amp;"; break;
       case '<': out += "&lt;"; break;

@@ -11,8 +11,14 @@
 
 namespace sreh::io {
 
-// Text for HTML/XML content and attribute values: & < > " ' escaped.
-std::string html_escape(std::string_view text);
+// What html_escape does with control characters and bytes outside ASCII:
+// keep them (UTF-8 pages) or write each byte as a character reference
+// (`&#xNN;`, for the IODD-like export, an ASCII document).
+enum class NonAscii { Keep, AsReference };
+
+// Text for HTML/XML content and attribute values: & < > " ' escaped. The
+// one escaper of the project (HTML pages, SVG plots, the IODD export).
+std::string html_escape(std::string_view text, NonAscii non_ascii = NonAscii::Keep);
 
 // The print stylesheet every page carries (A4, no plot or table cut by a
 // page break), after the page's own <head> content.

@@ -23,6 +23,7 @@
 #include "sizing/twin_factory.hpp"
 #include "twin/plant.hpp"
 #include "twin/twin.hpp"
+#include "twin/twin_snapshot.hpp"
 
 namespace sreh::py {
 namespace {

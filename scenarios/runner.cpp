@@ -1,5 +1,6 @@
 #include "scenarios/runner.hpp"
 
+#include "device_logic/device_snapshot.hpp"
 #include "device_logic/parameter_ids.hpp"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// YAML -> Scenario (style.md 13: strict loading at the edge). Unknown keys,
+// YAML -> Scenario (docs/style.md 13: strict loading at the edge). Unknown keys,
 // wrong types, out-of-range values, missing files: ScenarioError with
 // "FILE:LINE:COL: what is wrong". Key reference: scenarios/README.md.
 #pragma once

@@ -1,5 +1,5 @@
 // Strict typed access to yaml-cpp nodes: every failure is a ScenarioError
-// naming file:line:col and the dotted key path (style.md 13). Internal to
+// naming file:line:col and the dotted key path (docs/style.md 13). Internal to
 // the scenario parser.
 #pragma once
 #include <cstdint>
@@ -10,6 +10,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "device_logic/parameter_ids.hpp"
 #include "scenarios/pd_out_fields.hpp"
 #include "scenarios/scenario.hpp"
 
@@ -36,6 +37,11 @@ class YamlReader {
   YAML::Node require(const YAML::Node& map, std::string_view key, std::string_view what) const;
 
   double number(const YAML::Node& node, std::string_view what, double min, double max) const;
+  // A value a parameter-table row holds, in its display unit, within the
+  // row's range (manual 6.2): the range is the table's, never retyped.
+  double row_number(const YAML::Node& node, std::string_view what, ParamId row) const {
+    return number(node, what, display_min(row), display_max(row));
+  }
   int64_t integer(const YAML::Node& node, std::string_view what, int64_t min, int64_t max) const;
   bool boolean(const YAML::Node& node, std::string_view what) const;
   std::string text(const YAML::Node& node, std::string_view what) const; // any scalar

@@ -132,37 +132,31 @@ Json port_summary(int p, Hub::Port& port) {
               {"failure", port.failure.empty() ? Json(nullptr) : Json(port.failure)}};
 }
 
+namespace {
+
+// A frame's fields by name, read through the layout table (kPdInFields /
+// kPdOutFields): the one vocabulary of scenarios, serve and Python.
+template <std::size_t N, std::size_t F>
+void add_fields(Json& j, const std::array<uint8_t, N>& frame, const std::array<PdField, F>& fields) {
+  for (const PdField& f : fields) {
+    const int64_t v = pd_field_value(frame, f);
+    if (!f.deg_name.empty()) j[std::string(f.deg_name)] = wire_counts_to_deg(static_cast<int32_t>(v));
+    if (f.type == PdFieldType::Bool) j[std::string(f.name)] = v != 0;
+    else j[std::string(f.name)] = v;
+  }
+}
+
+} // namespace
+
 Json processdata_json(Hub::Port& port) {
-  const ProcessDataIn in = port.twin.pd_in();
-  const PdInFrame in_frame = encode(in);
-  const ProcessDataOut& out = port.twin.pd_out();
-  const PdOutFrame out_frame = encode(out);
+  const PdInFrame in_frame = encode(port.twin.pd_in());
+  const PdOutFrame out_frame = encode(port.twin.pd_out());
   Json j;
-  j["in"] = Json{{"raw", hex_bytes(in_frame)},
-                 {"valid", port.faults.link_up && port.twin.device().powered()},
-                 {"position_deg", wire_counts_to_deg(in.actual_position)},
-                 {"position_raw", in.actual_position},
-                 {"error_code", in.error_code},
-                 {"warning_code", in.warning_code},
-                 {"error", in.error},
-                 {"warning", in.warning},
-                 {"done", in.done},
-                 {"busy", in.busy},
-                 {"ready", in.ready},
-                 {"motor_off", in.motor_off},
-                 {"state", state_name(port.twin.telemetry().state)}};
-  j["out"] = Json{{"raw", hex_bytes(out_frame)},
-                  {"valid", port.outputs_valid},
-                  {"target_deg", wire_counts_to_deg(out.target_position)},
-                  {"target_raw", out.target_position},
-                  {"parameter_set", out.parameter_set},
-                  {"motor_on", out.motor_on},
-                  {"move", out.move},
-                  {"stop", out.stop},
-                  {"reset_error", out.reset_error},
-                  {"set_origin", out.set_origin},
-                  {"relative", out.relative},
-                  {"shortest_path", out.shortest_path}};
+  j["in"] = Json{{"raw", hex_bytes(in_frame)}, {"valid", port.faults.link_up && port.twin.device().powered()}};
+  add_fields(j["in"], in_frame, kPdInFields);
+  j["in"]["state"] = state_name(port.twin.telemetry().state);
+  j["out"] = Json{{"raw", hex_bytes(out_frame)}, {"valid", port.outputs_valid}};
+  add_fields(j["out"], out_frame, kPdOutFields);
   return j;
 }
 

@@ -89,7 +89,10 @@ Endpoint parse_endpoint(const std::string& text, const std::string& option) {
   return Endpoint{host, std::stoi(port_text)};
 }
 
-int run_serve(const ServeOptions& o, std::ostream& out, std::ostream& err) {
+namespace {
+
+// Every option checked before anything starts; returns the token (or "").
+std::string check_options(const ServeOptions& o) {
   if (o.ports < 1 || o.ports > 16) throw std::invalid_argument(fmt::format("--ports {}: 1 .. 16", o.ports));
   if (!(o.speed >= 0.01 && o.speed <= 100)) throw std::invalid_argument(fmt::format("--speed {}: 0.01 .. 100", o.speed));
   if (!(o.master_cycle_ms >= 0.4 && o.master_cycle_ms <= 100))
@@ -109,18 +112,13 @@ int run_serve(const ServeOptions& o, std::ostream& out, std::ostream& err) {
     if (token.find_first_of(" \t\r\n") != std::string::npos)
       throw std::invalid_argument(fmt::format("--token-file '{}': the token contains whitespace", o.token_file));
   }
+  return token;
+}
 
-  // --state-dir: what each module kept through the last stop (a power cycle).
-  std::unique_ptr<StateDir> state;
-  std::vector<PortState> kept(static_cast<std::size_t>(o.ports));
-  if (!o.state_dir.empty()) {
-    state = std::make_unique<StateDir>(o.state_dir, o.ports);
-    for (int p = 1; p <= o.ports; ++p) kept[static_cast<std::size_t>(p - 1)] = state->load(p);
-  }
-
-  // Ports: factory-new without a load unless configured.
+// Ports: factory-new without a load unless configured; the port files read
+// into `scenarios` (their start-up writes come later).
+std::unique_ptr<Hub> make_hub(const ServeOptions& o, const std::vector<PortState>& kept, std::vector<Scenario>& scenarios) {
   std::vector<TwinConfig> configs;
-  std::vector<Scenario> scenarios(static_cast<std::size_t>(o.ports));
   for (int p = 1; p <= o.ports; ++p) {
     TwinConfig c;
     try {
@@ -147,17 +145,21 @@ int run_serve(const ServeOptions& o, std::ostream& out, std::ostream& err) {
   hub_options.speed = o.speed;
   if (o.rt_priority < 0 || o.rt_priority > 99) throw std::invalid_argument(fmt::format("--rt-priority {}: 0 .. 99", o.rt_priority));
   hub_options.rt_priority = o.rt_priority;
-  std::unique_ptr<Hub> hub;
   try {
-    hub = std::make_unique<Hub>(configs, hub_options);
+    return std::make_unique<Hub>(configs, hub_options);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(fmt::format("--master-cycle-ms {}: {}", o.master_cycle_ms, e.what()));
   }
+}
+
+// What the ports kept through the last stop, and what their masters write
+// at start-up.
+void bring_up_ports(Hub& hub, int ports, const std::vector<PortState>& kept, const std::vector<Scenario>& scenarios) {
   // A restart is a power cycle (manual 4.1): the flange is where it was and
   // the device reads it from its multiturn encoder at power-on.
-  for (int p = 1; p <= o.ports; ++p) {
+  for (int p = 1; p <= ports; ++p) {
     if (const auto angle = kept[static_cast<std::size_t>(p - 1)].flange_angle_deg) {
-      hub->with_port(p, [&](Hub::Port& port) {
+      hub.with_port(p, [&](Hub::Port& port) {
         port.twin.power_off();
         port.twin.turn_flange(*angle - rad_to_deg(port.twin.plant().angle_rad()), 0.0);
         port.twin.power_on();
@@ -165,28 +167,32 @@ int run_serve(const ServeOptions& o, std::ostream& out, std::ostream& err) {
     }
   }
   // Start-up writes of the port configurations (device.isdu), as a master's parameter server would.
-  for (int p = 1; p <= o.ports; ++p) {
+  for (int p = 1; p <= ports; ++p) {
     const Scenario& s = scenarios[static_cast<std::size_t>(p - 1)];
     for (std::size_t i = 0; i < s.device.isdu.size(); ++i) {
       const auto& w = s.device.isdu[i];
-      const IsduResult r = hub->with_port(p, [&](Hub::Port& port) { return port.twin.isdu_write(w.index, w.subindex, w.data); });
+      const IsduResult r = hub.with_port(p, [&](Hub::Port& port) { return port.twin.isdu_write(w.index, w.subindex, w.data); });
       if (!r.ok())
         throw std::invalid_argument(fmt::format("{}:{}: device.isdu[{}]: index {}.{} = {} refused with {} ({})", s.file,
                                                 w.loc.line, i + 1, w.index, w.subindex, w.value_text,
                                                 iolink_error_text(r.error), iolink_error_name(r.error)));
     }
   }
-
   // Data Storage at the master (manual 8): the backup kept, or a first upload.
-  for (int p = 1; p <= o.ports; ++p)
+  for (int p = 1; p <= ports; ++p)
     if (const auto& ds = kept[static_cast<std::size_t>(p - 1)].ds)
-      hub->with_port(p, [&](Hub::Port& port) { port.ds_backup = *ds; });
-  hub->ds_startup();
+      hub.with_port(p, [&](Hub::Port& port) { port.ds_backup = *ds; });
+  hub.ds_startup();
+}
 
-  block_shutdown_signals(); // before any thread starts, so only sigtimedwait sees them
-  // A signal before that went to the batch commands' handler (io/interrupt):
-  // stop now, cleanly, or the twins' cycles would throw io::Interrupted.
-  if (io::interrupt_signal() != 0) return 0;
+// The network fronts (serve/front.hpp), bound but not started.
+struct Fronts {
+  std::unique_ptr<ModbusServer> modbus;
+  std::unique_ptr<HttpServer> http;
+  std::unique_ptr<MqttBridge> mqtt;
+};
+
+Fronts make_fronts(Hub& hub, const ServeOptions& o, const std::string& token) {
   ModbusOptions mo;
   mo.host = o.modbus.host;
   mo.port = o.modbus.port;
@@ -197,12 +203,10 @@ int run_serve(const ServeOptions& o, std::ostream& out, std::ostream& err) {
   ho.host = o.http.host;
   ho.port = o.http.port;
   ho.token = token;
-  std::unique_ptr<ModbusServer> modbus;
-  std::unique_ptr<HttpServer> http;
-  std::unique_ptr<MqttBridge> mqtt;
+  Fronts f;
   try {
-    modbus = std::make_unique<ModbusServer>(*hub, mo);
-    http = std::make_unique<HttpServer>(*hub, ho);
+    f.modbus = std::make_unique<ModbusServer>(hub, mo);
+    f.http = std::make_unique<HttpServer>(hub, ho);
     if (o.mqtt) {
       MqttOptions mq;
       mq.host = o.mqtt->host;
@@ -210,23 +214,70 @@ int run_serve(const ServeOptions& o, std::ostream& out, std::ostream& err) {
       mq.prefix = o.mqtt_prefix;
       mq.interval_ms = o.mqtt_interval_ms;
       mq.token = token;
-      mqtt = std::make_unique<MqttBridge>(*hub, mq);
+      f.mqtt = std::make_unique<MqttBridge>(hub, mq);
     }
   } catch (const std::runtime_error& e) {
     throw std::invalid_argument(e.what());
   }
+  return f;
+}
+
+// Until a signal, or --duration-s; returns the signal, if one came.
+std::optional<int> wait_for_stop(double duration_s) {
+  const auto start = std::chrono::steady_clock::now();
+  std::optional<int> sig;
+  while (!sig) {
+    sig = wait_for_shutdown_signal(std::chrono::milliseconds(200));
+    if (duration_s > 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >= duration_s)
+      break;
+  }
+  return sig;
+}
+
+void save_nvm_images(Hub& hub, int ports, const std::string& dir, std::ostream& err) {
+  for (int p = 1; p <= ports; ++p) {
+    const auto image = hub.with_port(p, [](Hub::Port& port) { return port.twin.save_nvm(); });
+    const std::string path = (fs::path(dir) / fmt::format("port{}.nvm", p)).string();
+    io::write_file_atomic(path, [&](std::ostream& f) {
+      f.write(reinterpret_cast<const char*>(image.data()), static_cast<std::streamsize>(image.size()));
+    });
+    err << "sreh-twin serve: saved " << path << "\n";
+  }
+}
+
+} // namespace
+
+int run_serve(const ServeOptions& o, std::ostream& out, std::ostream& err) {
+  const std::string token = check_options(o);
+
+  // --state-dir: what each module kept through the last stop (a power cycle).
+  std::unique_ptr<StateDir> state;
+  std::vector<PortState> kept(static_cast<std::size_t>(o.ports));
+  if (!o.state_dir.empty()) {
+    state = std::make_unique<StateDir>(o.state_dir, o.ports);
+    for (int p = 1; p <= o.ports; ++p) kept[static_cast<std::size_t>(p - 1)] = state->load(p);
+  }
+  std::vector<Scenario> scenarios(static_cast<std::size_t>(o.ports));
+  const std::unique_ptr<Hub> hub = make_hub(o, kept, scenarios);
+  bring_up_ports(*hub, o.ports, kept, scenarios);
+
+  block_shutdown_signals(); // before any thread starts, so only sigtimedwait sees them
+  // A signal before that went to the batch commands' handler (io/interrupt):
+  // stop now, cleanly, or the twins' cycles would throw io::Interrupted.
+  if (io::interrupt_signal() != 0) return 0;
+  Fronts fronts = make_fronts(*hub, o, token);
   if (state) { // bound: from here on the state folder is written (exit 2 before leaves it alone)
     hub->set_state_dir(state.get());
     for (int p = 1; p <= o.ports; ++p) hub->persist(p); // the files exist from the first start on
   }
   hub->start();
-  modbus->start();
-  http->start();
-  if (mqtt) mqtt->start();
+  fronts.modbus->start();
+  fronts.http->start();
+  if (fronts.mqtt) fronts.mqtt->start();
 
   Json ready{{"ports", o.ports},
-             {"modbus", endpoint_text(o.modbus.host, modbus->bound_port())},
-             {"http", endpoint_text(o.http.host, http->bound_port())},
+             {"modbus", endpoint_text(o.modbus.host, fronts.modbus->bound_port())},
+             {"http", endpoint_text(o.http.host, fronts.http->bound_port())},
              {"mqtt", o.mqtt ? Json(endpoint_text(o.mqtt->host, o.mqtt->port)) : Json(nullptr)},
              {"speed", o.speed},
              {"master_cycle_ms", o.master_cycle_ms}};
@@ -237,34 +288,18 @@ int run_serve(const ServeOptions& o, std::ostream& out, std::ostream& err) {
   }
   out << ready.dump() << std::endl; // one line: where to connect (ports chosen by the OS included)
 
-  const auto start = std::chrono::steady_clock::now();
-  std::optional<int> sig;
-  while (!sig) {
-    sig = wait_for_shutdown_signal(std::chrono::milliseconds(200));
-    if (o.duration_s > 0 &&
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >= o.duration_s)
-      break;
-  }
+  const std::optional<int> sig = wait_for_stop(o.duration_s);
   // Fronts first (no new requests), then the clock.
-  if (mqtt) mqtt->stop();
-  http->stop();
-  modbus->stop();
+  if (fronts.mqtt) fronts.mqtt->stop();
+  fronts.http->stop();
+  fronts.modbus->stop();
   hub->stop();
   const PacingStats s = hub->stats();
   err << fmt::format("sreh-twin serve: stopped{} after {} cycles ({:.1f} s simulated, {:.1f} s wall); cycle start "
                      "jitter p50 {:.0f} us, p99 {:.0f} us, max {:.0f} us; {} late cycles\n",
                      sig ? fmt::format(" on signal {}", *sig) : "", s.cycles, s.sim_time_s, s.wall_time_s,
                      s.jitter_p50_us, s.jitter_p99_us, s.jitter_max_us, s.late_cycles);
-  if (!o.save_nvm_dir.empty()) {
-    for (int p = 1; p <= o.ports; ++p) {
-      const auto image = hub->with_port(p, [](Hub::Port& port) { return port.twin.save_nvm(); });
-      const std::string path = (fs::path(o.save_nvm_dir) / fmt::format("port{}.nvm", p)).string();
-      io::write_file_atomic(path, [&](std::ostream& f) {
-        f.write(reinterpret_cast<const char*>(image.data()), static_cast<std::streamsize>(image.size()));
-      });
-      err << "sreh-twin serve: saved " << path << "\n";
-    }
-  }
+  if (!o.save_nvm_dir.empty()) save_nvm_images(*hub, o.ports, o.save_nvm_dir, err);
   return 0;
 }
 

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "device_logic/parameter_ids.hpp"
 #include "device_logic/units.hpp"
 #include "scenarios/load_file.hpp"
 #include "scenarios/yaml_reader.hpp"
@@ -46,7 +47,7 @@ class CycleParser {
     }
     if (const YAML::Node s = root["supply"]) {
       r_.check_map(s, "supply", {"voltage_V", "source_resistance_ohm", "bus_capacitance_F"});
-      if (s["voltage_V"]) c.voltage_V = r_.number(s["voltage_V"], "supply.voltage_V", kMinVoltage_V, kMaxVoltage_V);
+      if (s["voltage_V"]) c.voltage_V = r_.number(s["voltage_V"], "supply.voltage_V", min_voltage_V(), max_voltage_V());
       if (s["source_resistance_ohm"]) {
         c.source_resistance_ohm = r_.number(s["source_resistance_ohm"], "supply.source_resistance_ohm", 0.0, 10.0);
       }
@@ -54,11 +55,10 @@ class CycleParser {
     }
     if (root["ambient_C"]) c.ambient_C = r_.number(root["ambient_C"], "ambient_C", 0.0, 50.0);
     if (root["process_torque_Nm"]) c.process_torque_Nm = torque(root["process_torque_Nm"], "process_torque_Nm", 0.0);
-    if (root["tolerance_deg"]) {
-      c.tolerance_deg = r_.number(root["tolerance_deg"], "tolerance_deg", 0.0, 65535.0 * 360.0 / 524288.0);
-    }
-    if (root["wait_ms"]) c.wait_ms = r_.number(root["wait_ms"], "wait_ms", 0.0, 5000.0);
-    if (root["timeout_ms"]) c.timeout_ms = r_.number(root["timeout_ms"], "timeout_ms", 0.0, 5000.0);
+    const param::MotionSet set(0); // the rows every set shares (manual 6.2)
+    if (root["tolerance_deg"]) c.tolerance_deg = r_.row_number(root["tolerance_deg"], "tolerance_deg", set.tolerance);
+    if (root["wait_ms"]) c.wait_ms = r_.row_number(root["wait_ms"], "wait_ms", set.waiting_time);
+    if (root["timeout_ms"]) c.timeout_ms = r_.row_number(root["timeout_ms"], "timeout_ms", set.settling_timeout);
     if (root["thermal_margin_K"]) {
       c.thermal_margin_K = r_.number(root["thermal_margin_K"], "thermal_margin_K", 0.0, kMaxThermalMargin_K);
     }
@@ -102,10 +102,11 @@ class CycleParser {
       if (m.relative && !at_least_one_count(m.target_deg)) {
         r_.fail(n["move_deg"], what + ".move_deg: a relative move needs at least one position count (360/65536 deg)");
       }
-      if (n["parameter_set"]) m.parameter_set = static_cast<int>(r_.integer(n["parameter_set"], what + ".parameter_set", 0, 7));
-      if (n["speed_dps"]) m.speed_dps = r_.number(n["speed_dps"], what + ".speed_dps", 0.1, kMaxSpeed_dps);
-      if (n["accel_pct"]) m.accel_pct = r_.number(n["accel_pct"], what + ".accel_pct", 0.1, 100.0);
-      if (n["jerk_pct"]) m.jerk_pct = r_.number(n["jerk_pct"], what + ".jerk_pct", 0.1, 100.0);
+      if (n["parameter_set"]) m.parameter_set = static_cast<int>(r_.integer(n["parameter_set"], what + ".parameter_set", 0, param::kMotionSets - 1));
+      const param::MotionSet set(0);
+      if (n["speed_dps"]) m.speed_dps = r_.row_number(n["speed_dps"], what + ".speed_dps", set.speed);
+      if (n["accel_pct"]) m.accel_pct = r_.row_number(n["accel_pct"], what + ".accel_pct", set.acceleration);
+      if (n["jerk_pct"]) m.jerk_pct = r_.row_number(n["jerk_pct"], what + ".jerk_pct", set.jerk);
       if (n["process_torque_Nm"]) m.process_torque_Nm = torque(n["process_torque_Nm"], what + ".process_torque_Nm", 0.0);
       seg.what = m;
     } else if (n["dwell_s"]) {

@@ -26,9 +26,9 @@ double inertia_gcm2(const LoadSpec& load, const std::string& where) {
   try {
     const BuiltModel built = build_model(load, {}, 1e-4);
     const double j = std::max(0.0, kgm2_to_gcm2(built.load_inertia_kgm2));
-    if (j > kMaxLoad_gcm2 + 1e-6) {
-      throw SizingInputError(fmt::format("{}: load inertia {:.1f} g cm^2 is above the module's limit of 15000 g cm^2 "
-                                         "(manual 3.5.6, 6.2 index 64.4)", where, j));
+    if (j > max_load_gcm2() + 1e-6) {
+      throw SizingInputError(fmt::format("{}: load inertia {:.1f} g cm^2 is above the module's limit of {} g cm^2 "
+                                         "(manual 3.5.6, 6.2 index 64.4)", where, j, max_load_gcm2()));
     }
     return j;
   } catch (const std::invalid_argument& e) {
@@ -48,46 +48,61 @@ bool same(const std::optional<MotionSetting>& a, const std::optional<MotionSetti
   return !a || (a->speed_dps == b->speed_dps && a->accel_pct == b->accel_pct && a->jerk_pct == b->jerk_pct);
 }
 
+// The load of every segment: the file's load at the start of each
+// repetition (A-SIZE-19), changed by load segments.
+void segment_loads(const CycleRequest& rq, std::vector<double>& seg_load, std::vector<const LoadSpec*>& seg_spec) {
+  const std::string top = fmt::format("{}:{}:{}: load", rq.file, rq.load_line, rq.load_column);
+  double now = inertia_gcm2(rq.load, top);
+  const LoadSpec* spec = &rq.load;
+  seg_load.assign(rq.segments.size(), now);
+  seg_spec.assign(rq.segments.size(), spec);
+  for (std::size_t i = 0; i < rq.segments.size(); ++i) {
+    if (const auto* l = std::get_if<CycleLoadChange>(&rq.segments[i].what)) {
+      now = inertia_gcm2(l->load, where(rq, rq.segments[i]));
+      spec = &l->load;
+    }
+    seg_load[i] = now;
+    seg_spec[i] = spec;
+  }
+}
+
+// The longest distance of each move over the repetitions (the first
+// starts at 0); relative moves must stay inside the position range.
+std::vector<double> longest_distances(const CycleRequest& rq) {
+  std::vector<double> distance(rq.segments.size(), 0.0);
+  double pos = 0;
+  for (int rep = 0; rep < std::max(2, rq.cycles); ++rep) {
+    for (std::size_t i = 0; i < rq.segments.size(); ++i) {
+      const auto* m = std::get_if<CycleMove>(&rq.segments[i].what);
+      if (!m) continue;
+      const double to = m->relative ? pos + m->target_deg : m->target_deg;
+      distance[i] = std::max(distance[i], std::abs(to - pos));
+      pos = to;
+      if (std::abs(pos) >= kWirePositionLimit_deg) {
+        throw SizingInputError(fmt::format("{}: repetition {} reaches {} deg, outside the position range of "
+                                           "+-32768 revolutions (manual 2.5)", where(rq, rq.segments[i]), rep + 1, pos));
+      }
+    }
+  }
+  return distance;
+}
+
+// An assigned set: the lowest free of 1..7, then 0 (the factory sets are
+// equal, manual 6.2); -1 when all eight are taken.
+int lowest_free_set(const std::vector<SetPlan>& sets) {
+  for (int n : {1, 2, 3, 4, 5, 6, 7, 0}) {
+    if (std::none_of(sets.begin(), sets.end(), [&](const SetPlan& q) { return q.set == n; })) return n;
+  }
+  return -1;
+}
+
 } // namespace
 
 CyclePlan plan_sets(const CycleRequest& rq) {
-  // The load of every segment: the file's load at the start of each
-  // repetition (A-SIZE-19), changed by load segments.
-  const std::string top = fmt::format("{}:{}:{}: load", rq.file, rq.load_line, rq.load_column);
-  const double initial_gcm2 = inertia_gcm2(rq.load, top);
-  std::vector<double> seg_load(rq.segments.size(), initial_gcm2);
-  std::vector<const LoadSpec*> seg_spec(rq.segments.size(), &rq.load);
-  {
-    double now = initial_gcm2;
-    const LoadSpec* spec = &rq.load;
-    for (std::size_t i = 0; i < rq.segments.size(); ++i) {
-      if (const auto* l = std::get_if<CycleLoadChange>(&rq.segments[i].what)) {
-        now = inertia_gcm2(l->load, where(rq, rq.segments[i]));
-        spec = &l->load;
-      }
-      seg_load[i] = now;
-      seg_spec[i] = spec;
-    }
-  }
-  // The longest distance of each move over the repetitions (the first
-  // starts at 0); relative moves must stay inside the position range.
-  std::vector<double> distance(rq.segments.size(), 0.0);
-  {
-    double pos = 0;
-    for (int rep = 0; rep < std::max(2, rq.cycles); ++rep) {
-      for (std::size_t i = 0; i < rq.segments.size(); ++i) {
-        const auto* m = std::get_if<CycleMove>(&rq.segments[i].what);
-        if (!m) continue;
-        const double to = m->relative ? pos + m->target_deg : m->target_deg;
-        distance[i] = std::max(distance[i], std::abs(to - pos));
-        pos = to;
-        if (std::abs(pos) >= kWirePositionLimit_deg) {
-          throw SizingInputError(fmt::format("{}: repetition {} reaches {} deg, outside the position range of "
-                                             "+-32768 revolutions (manual 2.5)", where(rq, rq.segments[i]), rep + 1, pos));
-        }
-      }
-    }
-  }
+  std::vector<double> seg_load;
+  std::vector<const LoadSpec*> seg_spec;
+  segment_loads(rq, seg_load, seg_spec);
+  const std::vector<double> distance = longest_distances(rq);
 
   CyclePlan plan;
   plan.move_set.assign(rq.segments.size(), -1);
@@ -134,14 +149,7 @@ CyclePlan plan_sets(const CycleRequest& rq) {
       if (m->parameter_set) {
         p.set = *m->parameter_set;
       } else {
-        // Assigned: the lowest free of 1..7, then 0 (the factory sets are equal, manual 6.2).
-        p.set = -1;
-        for (int n : {1, 2, 3, 4, 5, 6, 7, 0}) {
-          if (std::none_of(plan.sets.begin(), plan.sets.end(), [&](const SetPlan& q) { return q.set == n; })) {
-            p.set = n;
-            break;
-          }
-        }
+        p.set = lowest_free_set(plan.sets);
         if (p.set < 0) {
           throw SizingInputError(fmt::format("{}: the cycle needs more than the module's 8 parameter sets "
                                              "(index 64..71): different loads and given values each need one",

@@ -1,4 +1,4 @@
-// The options of `size` and `sweep` declared once (style.md 5): the CLI adds
+// The options of `size` and `sweep` declared once (docs/style.md 5): the CLI adds
 // them to its subcommands, the Python API takes them as keyword arguments
 // (the long option with '-' as '_'), so both front ends fill the same
 // structs and share the code path behind them.

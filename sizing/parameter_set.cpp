@@ -17,17 +17,20 @@ namespace sreh::sizing {
 namespace {
 
 // A-SIZE-4: settling timeout when none is given: the factory 100 ms (raw
-// 1000) for the factory waiting time 25 ms, i.e. the wait plus 75 ms.
-double default_timeout_ms(double wait_ms) { return std::clamp(wait_ms + 75.0, 100.0, 5000.0); }
-
-// Index 85 (manual 6.2): the factory window is 18..30 V; a supply outside it
-// needs the window widened or the device reports 114.4 (A-SIZE-2).
-constexpr double kFactoryMinVoltage_V = 18.0;
-constexpr double kFactoryMaxVoltage_V = 30.0;
+// 1000) for the factory waiting time 25 ms, i.e. the wait plus 75 ms, within
+// the row's range.
+double default_timeout_ms(double wait_ms) {
+  const ParamId timeout = param::MotionSet(0).settling_timeout;
+  return std::clamp(wait_ms + 75.0, display_default(timeout), display_max(timeout));
+}
 
 } // namespace
 
-double voltage_speed_limit_dps(double voltage_V) { return std::min(kMaxSpeed_dps, kMaxSpeed_dps * voltage_V / 24.0); }
+double min_voltage_V() { return display_min(param::kMotorVoltageMin); }
+double max_voltage_V() { return display_max(param::kMotorVoltageMax); }
+double max_speed_dps() { return display_max(param::MotionSet(0).speed); }
+
+double voltage_speed_limit_dps(double voltage_V) { return std::min(max_speed_dps(), max_speed_dps() * voltage_V / 24.0); }
 
 ParameterSetValues make_parameter_set(const SizingRequest& rq, const MotionSetting& s, double load_gcm2) {
   const param::MotionSet ids{rq.parameter_set};
@@ -76,13 +79,15 @@ ParameterSetValues make_parameter_set(const SizingRequest& rq, const MotionSetti
        fmt::format("settling timeout {:.1f} ms", m.settling_timeout_ms)},
       {ids.settling_timeout_active.index, ids.settling_timeout_active.subindex, 1, "settling timeout active"},
   };
-  // The widest window the table allows (manual 6.2, index 85).
+  // The widest window the table allows (manual 6.2, index 85): a supply
+  // outside the factory window (the rows' defaults, 18..30 V) needs it
+  // widened or the device reports 114.4 (A-SIZE-2).
   const ParamId vmin = param::kMotorVoltageMin, vmax = param::kMotorVoltageMax;
-  if (rq.voltage_V < kFactoryMinVoltage_V) {
+  if (rq.voltage_V < display_default(vmin)) {
     v.writes.push_back({vmin.index, vmin.subindex, parameter_row(vmin).min,
                         fmt::format("motor voltage window minimum {:.1f} V (supply below the factory 18 V)", display_min(vmin))});
   }
-  if (rq.voltage_V > kFactoryMaxVoltage_V) {
+  if (rq.voltage_V > display_default(vmax)) {
     v.writes.push_back({vmax.index, vmax.subindex, parameter_row(vmax).max,
                         fmt::format("motor voltage window maximum {:.1f} V (supply above the factory 30 V)", display_max(vmax))});
   }

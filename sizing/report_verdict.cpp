@@ -55,7 +55,7 @@ Bars bars(const VerdictInput& in) {
   return {f.utilisation.peak_torque_pct, f.utilisation.rms_torque_pct,
           room_K > 0 ? 100 * (f.steady_temperature_C - in.ambient_C) / room_K : 100,
           room_K > 0 ? std::max(0.0, 100 * (room_K - in.required_thermal_margin_K) / room_K) : 0.0,
-          100 * in.speed_dps / kMaxSpeed_dps};
+          100 * in.speed_dps / max_speed_dps()};
 }
 
 } // namespace
@@ -77,7 +77,7 @@ std::string verdict_block(const VerdictInput& in) {
            fmt::format("steady {:.1f} degC from {:.1f} degC ambient, of the rise to the 70 degC warning; required margin {:.1f} K",
                        f.steady_temperature_C, in.ambient_C, in.required_thermal_margin_K));
   o += bar("bar-speed", "speed", b.speed, 100, fmt::format("{:.1f} deg/s", in.speed_dps),
-           fmt::format("set speed of the module's {:.0f} deg/s (manual 6.2)", kMaxSpeed_dps));
+           fmt::format("set speed of the module's {:.0f} deg/s (manual 6.2)", max_speed_dps()));
   o += "</table>\n<dl>\n";
   auto item = [&o](const char* id, const std::string& name, const std::string& value) {
     o += fmt::format("<dt>{}</dt><dd id=\"{}\">{}</dd>\n", html_escape(name), id, html_escape(value));

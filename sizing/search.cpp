@@ -70,9 +70,9 @@ void with_proxies(const SizingRequest& rq, double load_gcm2, double fixed_s, Can
   double sq = 0;
   for (int k = 0; k < kSamples; ++k) {
     const KinematicState st = p.at((k + 0.5) * p.duration_s() / kSamples);
-    sq += st.acc * st.acc;
-    const double cap = motor.max_torque_Nm(std::abs(st.vel), rq.voltage_V, st.acc * st.vel >= 0 ? 1.0 : -1.0);
-    c.torque_proxy = std::max(c.torque_proxy, std::abs(st.acc) / std::max(cap, 1e-6));
+    sq += st.acc_rad_s2 * st.acc_rad_s2;
+    const double cap = motor.max_torque_Nm(std::abs(st.vel_rad_s), rq.voltage_V, st.acc_rad_s2 * st.vel_rad_s >= 0 ? 1.0 : -1.0);
+    c.torque_proxy = std::max(c.torque_proxy, std::abs(st.acc_rad_s2) / std::max(cap, 1e-6));
   }
   c.rms_proxy = std::sqrt(sq / kSamples);
   c.heat_proxy = sq / kSamples * c.travel_s / (c.travel_s + fixed_s);

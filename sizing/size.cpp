@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "device_logic/parameter_ids.hpp"
 #include "device_logic/units.hpp"
 #include "sizing/sizing.hpp"
 #include "twin/load_builder.hpp"
@@ -18,6 +19,11 @@ void check_range(const char* option, double value, double lo, double hi, const c
   if (!std::isfinite(value) || value < lo || value > hi) {
     throw SizingInputError(fmt::format("{} {} is outside {} .. {}{} ({})", option, value, lo, hi, unit, why));
   }
+}
+
+// A value a parameter-table row holds: its display range (manual 6.2).
+void check_row(const char* option, double value, ParamId row, const char* unit, const char* why) {
+  check_range(option, value, display_min(row), display_max(row), unit, why);
 }
 
 
@@ -39,15 +45,15 @@ double validate(const SizingRequest& rq) {
     throw SizingInputError(fmt::format("--angle-deg {} is no move: below one position count (360/65536 deg, manual 2.5)",
                                        rq.angle_deg));
   }
-  check_range("--voltage-V", rq.voltage_V, kMinVoltage_V, kMaxVoltage_V, " V",
+  check_range("--voltage-V", rq.voltage_V, min_voltage_V(), max_voltage_V(), " V",
               "the motor voltage window index 85 can be configured to, manual 6.2");
   check_range("--dwell-s", rq.dwell_s, 0.0, kMaxDwell_s, " s", "A-SIZE-1");
-  check_range("--tolerance-deg", rq.tolerance_deg, 0.0, 65535.0 * 360.0 / 524288.0, " deg",
-              "index 64+n.5: uint16 of 2^-19 rev, manual 6.2");
-  check_range("--wait-ms", rq.wait_ms, 0.0, 5000.0, " ms", "index 64+n.6, manual 6.2");
-  if (rq.timeout_ms) check_range("--timeout-ms", *rq.timeout_ms, 0.0, 5000.0, " ms", "index 64+n.7, manual 6.2");
+  const param::MotionSet set(0); // every set has the same rows
+  check_row("--tolerance-deg", rq.tolerance_deg, set.tolerance, " deg", "index 64+n.5: uint16 of 2^-19 rev, manual 6.2");
+  check_row("--wait-ms", rq.wait_ms, set.waiting_time, " ms", "index 64+n.6, manual 6.2");
+  if (rq.timeout_ms) check_row("--timeout-ms", *rq.timeout_ms, set.settling_timeout, " ms", "index 64+n.7, manual 6.2");
   check_range("--ambient-C", rq.ambient_C, 0.0, 50.0, " degC", "A-SIZE-1");
-  check_range("--parameter-set", rq.parameter_set, 0, 7, "", "index 64..71, manual 6.2");
+  check_range("--parameter-set", rq.parameter_set, 0, param::kMotionSets - 1, "", "index 64..71, manual 6.2");
   check_range("--cycles", rq.cycles, 1, 20, "", "A-SIZE-3");
   check_range("--thermal-margin-K", rq.thermal_margin_K, 0.0, kMaxThermalMargin_K, " K",
               "required distance below the 70 degC warning, A-SIZE-5");
@@ -59,15 +65,15 @@ double validate(const SizingRequest& rq) {
   if (rq.max_cycle_ms) check_range("--max-cycle-ms", *rq.max_cycle_ms, 1.0, 600000.0, " ms", "A-SIZE-10");
   if (rq.setting) {
     const char* why = "manual 6.2, index 64..71";
-    check_range("--speed-dps", rq.setting->speed_dps, 0.1, kMaxSpeed_dps, " deg/s", why);
-    check_range("--accel-pct", rq.setting->accel_pct, 0.1, 100.0, " %", why);
-    check_range("--jerk-pct", rq.setting->jerk_pct, 0.1, 100.0, " %", why);
+    check_row("--speed-dps", rq.setting->speed_dps, set.speed, " deg/s", why);
+    check_row("--accel-pct", rq.setting->accel_pct, set.acceleration, " %", why);
+    check_row("--jerk-pct", rq.setting->jerk_pct, set.jerk, " %", why);
   }
   if (const auto* j = std::get_if<InertiaLoad>(&rq.load)) {
-    if (!std::isfinite(j->inertia_gcm2) || j->inertia_gcm2 < 0 || j->inertia_gcm2 > kMaxLoad_gcm2) {
+    if (!std::isfinite(j->inertia_gcm2) || j->inertia_gcm2 < 0 || j->inertia_gcm2 > max_load_gcm2()) {
       throw SizingInputError(fmt::format(
-          "--load-gcm2 {} is outside 0 .. 15000 g cm^2 (the module's load limit, manual 3.5.6, 6.2 index 64.4)",
-          j->inertia_gcm2));
+          "--load-gcm2 {} is outside 0 .. {} g cm^2 (the module's load limit, manual 3.5.6, 6.2 index 64.4)",
+          j->inertia_gcm2, max_load_gcm2()));
     }
   }
   // The load as a default twin builds it (the twin refuses > 15000 g cm^2
@@ -79,9 +85,9 @@ double validate(const SizingRequest& rq) {
   } catch (const std::invalid_argument& e) {
     throw SizingInputError(e.what());
   }
-  if (load > kMaxLoad_gcm2 + 1e-6) {
-    throw SizingInputError(fmt::format("load inertia {:.1f} g cm^2 is above the module's limit of 15000 g cm^2 "
-                                       "(manual 3.5.6, 6.2 index 64.4)", load));
+  if (load > max_load_gcm2() + 1e-6) {
+    throw SizingInputError(fmt::format("load inertia {:.1f} g cm^2 is above the module's limit of {} g cm^2 "
+                                       "(manual 3.5.6, 6.2 index 64.4)", load, max_load_gcm2()));
   }
   return std::max(0.0, load); // no load reads -1e-12
 }

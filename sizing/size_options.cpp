@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "device_logic/parameter_ids.hpp"
 #include "io/output_path.hpp"
 #include "scenarios/load_file.hpp"
 #include "twin/load_builder.hpp"
@@ -18,21 +19,35 @@
 namespace sreh::sizing {
 namespace {
 
+// The ranges in the help are the parameter table's rows (manual 6.2),
+// formatted once, never retyped.
+std::string row_range(ParamId row) { return fmt::format("{} .. {}", display_min(row), display_max(row)); }
+const param::MotionSet kSet(0);
+const std::string kLoadHelp =
+    fmt::format("Load inertia about the axis, 0 .. {} g cm^2 [default: 0 unless --load]", max_load_gcm2());
+const std::string kVoltageHelp = fmt::format("Motor supply {} .. {} V (index 85)", min_voltage_V(), max_voltage_V());
+const std::string kSpeedHelp =
+    fmt::format("Evaluate this speed, {} deg/s [default: recommend a set]", row_range(kSet.speed));
+const std::string kAccelHelp =
+    fmt::format("Evaluate this acceleration, {} % [default: recommended]", row_range(kSet.acceleration));
+const std::string kJerkHelp = fmt::format("Evaluate this jerk, {} % [default: recommended]", row_range(kSet.jerk));
+const std::string kSetHelp = fmt::format("Parameter set 0 .. {} (index 64 + n)", param::kMotionSets - 1);
+
 using S = SizeOptions;
 const OptionSpec<S> kSizeOptions[] = {
     {"angle-deg", "Move angle in degrees (the cycle is 0 -> A -> 0); required unless --cycle", &S::angle_deg},
-    {"load-gcm2", "Load inertia about the axis, 0 .. 15000 g cm^2 [default: 0 unless --load]", &S::load_gcm2},
+    {"load-gcm2", kLoadHelp, &S::load_gcm2},
     {"load", "Load file: YAML with a 'load:' key as in a scenario", &S::load},
-    {"voltage-V", "Motor supply 16 .. 32 V (index 85)", &S::voltage_V, false, true},
+    {"voltage-V", kVoltageHelp, &S::voltage_V, false, true},
     {"dwell-s", "Pause after each move, s", &S::dwell_s, false, true},
     {"tolerance-deg", "Position tolerance in deg (index 64+n.5)", &S::tolerance_deg, false, true},
     {"wait-ms", "Waiting time in the window in ms (index 64+n.6)", &S::wait_ms, false, true},
     {"timeout-ms", "Settling timeout in ms (index 64+n.7) [default: wait + 75 ms, >= 100 ms]", &S::timeout_ms},
     {"ambient-C", "Ambient temperature 0 .. 50 degC", &S::ambient_C, false, true},
-    {"speed-dps", "Evaluate this speed, 0.1 .. 4300 deg/s [default: recommend a set]", &S::speed_dps},
-    {"accel-pct", "Evaluate this acceleration, 0.1 .. 100 % [default: recommended]", &S::accel_pct},
-    {"jerk-pct", "Evaluate this jerk, 0.1 .. 100 % [default: recommended]", &S::jerk_pct},
-    {"parameter-set", "Parameter set 0 .. 7 (index 64 + n)", &S::parameter_set, false, true},
+    {"speed-dps", kSpeedHelp, &S::speed_dps},
+    {"accel-pct", kAccelHelp, &S::accel_pct},
+    {"jerk-pct", kJerkHelp, &S::jerk_pct},
+    {"parameter-set", kSetHelp, &S::parameter_set, false, true},
     {"cycles", "Back-and-forth cycles simulated, 1 .. 20", &S::cycles, false, true},
     {"thermal-margin-K", "Required margin below the 70 degC warning, K", &S::thermal_margin_K, false, true},
     {"max-positioning-ms", "Target: the gentlest set positioning within this time, ms", &S::max_positioning_ms},

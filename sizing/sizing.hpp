@@ -171,13 +171,18 @@ struct SizingResult {
   int candidates = 0;              // grid points the planner looked at
 };
 
-// Limits (A-SIZE-1, A-SIZE-2; manual 6.2 ranges).
-inline constexpr double kMaxLoad_gcm2 = 15000.0;
-inline constexpr double kMinVoltage_V = 16.0;
-inline constexpr double kMaxVoltage_V = 32.0;
+// Limits of the sizing itself (A-SIZE-1). What the module allows (load,
+// speed, voltage window, settling parameters) is read from the parameter
+// table's rows (manual 6.2), never retyped: max_load_gcm2() (twin), and
+// the functions below.
 inline constexpr double kMaxAngle_deg = 3600.0;
 inline constexpr double kMaxDwell_s = 60.0;
-inline constexpr double kMaxSpeed_dps = 4300.0;
+// Index 85.1 / 85.2: the lowest and highest motor voltage the window can be
+// configured to (A-SIZE-2).
+double min_voltage_V();
+double max_voltage_V();
+// Index 64+n.1: the highest speed a set can ask for, deg/s.
+double max_speed_dps();
 inline constexpr double kTemperatureWarning_C = 70.0; // manual 7.3 115.1
 
 inline constexpr double kMaxThermalMargin_K = 45.0;
@@ -194,7 +199,8 @@ ModuleModel module_from_option(const std::string& model_path);
 // inertia (MJCF loads); returns it in g cm^2.
 double validate(const SizingRequest& request);
 
-// Highest speed the motor reaches at this voltage (manual 3.5.3): 4300 x U / 24, at most 4300.
+// Highest speed the motor reaches at this voltage (manual 3.5.3): the speed
+// row's maximum (64+n.1) x U / 24, at most that maximum.
 double voltage_speed_limit_dps(double voltage_V);
 
 // The parameter set for a setting: raw values as written, read back as the

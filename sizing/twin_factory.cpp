@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "sizing/sizing.hpp"
+#include "twin/twin_snapshot.hpp"
 
 namespace sreh::sizing {
 namespace {

@@ -76,7 +76,7 @@ nlohmann::json as_json(const std::string& file, const Shown& s) {
   }
   j["inertia_ratio"] = ratio(f);
   j["j_intern_gcm2"] = kgm2_to_gcm2(kInternalInertia_kgm2);
-  j["limit_gcm2"] = kMaxLoad_gcm2;
+  j["limit_gcm2"] = max_load_gcm2();
   nlohmann::json parts = nlohmann::json::array();
   for (const PartFigures& p : f.parts) {
     parts.push_back({{"shape", p.shape}, {"name", p.name}, {"mass_kg", p.mass_kg}, {"inertia_gcm2", kgm2_to_gcm2(p.inertia_kgm2)},
@@ -92,7 +92,7 @@ void print_text(const std::string& file, const Shown& s) {
   std::cout << "load: " << file << "\n";
   std::cout << fmt::format("  mass            {:.3f} kg\n", f.mass_kg);
   std::cout << fmt::format("  inertia         {} g cm^2 ({:.4g} kg m^2) about the axis; the module carries up to {:.0f}\n",
-                           round_gcm2(kgm2_to_gcm2(f.inertia_kgm2)), f.inertia_kgm2, kMaxLoad_gcm2);
+                           round_gcm2(kgm2_to_gcm2(f.inertia_kgm2)), f.inertia_kgm2, max_load_gcm2());
   std::cout << fmt::format("  ratio           J_load / J_intern = {:.2f} (J_intern {:.0f} g cm^2, manual 3.5.4)\n", ratio(f),
                            kgm2_to_gcm2(kInternalInertia_kgm2));
   std::cout << fmt::format("  centre of mass  [{}, {}, {}] mm, {} mm from the axis\n", mm(f.com_m[0]), mm(f.com_m[1]),

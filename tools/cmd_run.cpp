@@ -253,18 +253,13 @@ int run_folder_command(const RunArgs& a) {
   return run_folder(f);
 }
 
-int run_command(RunArgs a) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(a.scenario, ec)) return run_folder_command(a);
-  if (!a.shard.empty()) {
-    throw InputError(fmt::format("--shard {}: only with a folder of scenarios (run DIR --shard i/N); {} is a file",
-                                 a.shard, a.scenario));
-  }
+// Everything a user can get wrong is checked before the run (issue 12):
+// options, the scenario (parsed, with --model, within the limits), outputs.
+Scenario read_checked_scenario(RunArgs& a) {
 #ifndef SREH_WITH_RENDER
   if (!a.video.empty() || !a.frames.empty()) throw InputError("--video: built without rendering (SREH_WITH_RENDER=OFF)");
   if (!a.report.empty()) throw InputError("--report: built without rendering (SREH_WITH_RENDER=OFF)");
 #endif
-  // Everything a user can get wrong is checked before the run (issue 12).
   check_size(a.size);
   if (a.camera != "default" && a.camera != "top") {
     throw InputError(fmt::format("--camera {}: expected default or top", a.camera));
@@ -292,9 +287,12 @@ int run_command(RunArgs a) {
     throw InputError(fmt::format("--video {}: the extension must be .mp4, .webm or .gif", a.video));
   }
 #endif
+  return scenario;
+}
 
-  RunResult result;
-  std::optional<TraceStream> trace;
+// --trace and --master-log stream while the run goes (nothing that grows
+// with run length stays in memory, issue 12).
+void open_streams(const RunArgs& a, std::optional<TraceStream>& trace, std::optional<MasterLogStream>& master_log) {
   if (!a.trace.empty()) {
     try {
       trace.emplace(a.trace, a.trace_every, a.limits.max_trace_bytes);
@@ -302,7 +300,6 @@ int run_command(RunArgs a) {
       throw InputError(fmt::format("--trace {}: {}", a.trace, e.what()));
     }
   }
-  std::optional<MasterLogStream> master_log;
   if (!a.master_log.empty()) {
     try {
       master_log.emplace(a.master_log);
@@ -310,6 +307,39 @@ int run_command(RunArgs a) {
       throw InputError(fmt::format("--master-log {}: {}", a.master_log, e.what()));
     }
   }
+}
+
+// After the run: the streamed files committed, the memory image and JUnit written.
+void commit_outputs(const RunArgs& a, const RunResult& result, double wall_s, std::optional<TraceStream>& trace,
+                    std::optional<MasterLogStream>& master_log, JunitReport& junit) {
+  try {
+    if (trace) trace->commit();
+    if (master_log) master_log->commit();
+    write_nvm(a, result);
+    if (!a.junit.empty()) {
+      junit.end_case(result, wall_s);
+      junit.write(a.junit);
+    }
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    throw InputError(e.what());
+  }
+}
+
+int run_command(RunArgs a) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(a.scenario, ec)) return run_folder_command(a);
+  if (!a.shard.empty()) {
+    throw InputError(fmt::format("--shard {}: only with a folder of scenarios (run DIR --shard i/N); {} is a file",
+                                 a.shard, a.scenario));
+  }
+  Scenario scenario = read_checked_scenario(a);
+
+  RunResult result;
+  std::optional<TraceStream> trace;
+  std::optional<MasterLogStream> master_log;
+  open_streams(a, trace, master_log);
   // Nothing that grows with run length stays in memory (issue 12): the
   // trace goes to --trace as it is made; checks, failures and moves to the
   // output's temporaries; with --report rows, checks and moves to the
@@ -375,19 +405,7 @@ int run_command(RunArgs a) {
   } catch (const ScenarioError& e) {
     throw InputError(e.what());
   }
-  try {
-    if (trace) trace->commit();
-    if (master_log) master_log->commit();
-    write_nvm(a, result);
-    if (!a.junit.empty()) {
-      junit.end_case(result, wall_s);
-      junit.write(a.junit);
-    }
-  } catch (const InputError&) {
-    throw;
-  } catch (const std::runtime_error& e) {
-    throw InputError(e.what());
-  }
+  commit_outputs(a, result, wall_s, trace, master_log, junit);
 #ifdef SREH_WITH_RENDER
   if (report) write_report_dir(a, result, *report);
 #endif

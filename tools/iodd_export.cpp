@@ -13,25 +13,13 @@
 #include "device_logic/faults.hpp"
 #include "device_logic/parameter_table.hpp"
 #include "device_logic/process_data.hpp"
+#include "io/html_page.hpp"
 
 namespace sreh::tools {
 namespace {
 
-std::string xml_escape(std::string_view s) {
-  std::string out;
-  for (unsigned char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default:
-        if (c < 0x20 || c >= 0x7F) out += fmt::format("&#x{:X};", c);
-        else out += static_cast<char>(c);
-    }
-  }
-  return out;
-}
+// IODD text is ASCII: anything else becomes a character reference.
+std::string xml_escape(std::string_view s) { return io::html_escape(s, io::NonAscii::AsReference); }
 
 std::string hex_octets(std::string_view bytes) {
   std::string out;

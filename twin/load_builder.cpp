@@ -9,6 +9,7 @@
 #include <regex>
 #include <stdexcept>
 
+#include "device_logic/parameter_ids.hpp"
 #include "device_logic/units.hpp"
 #include "twin/load_parts.hpp"
 #include "twin/mjcf_load.hpp"
@@ -264,7 +265,9 @@ std::string round_gcm2(double gcm2) {
   return buf;
 }
 
-bool within_load_limit(double load_gcm2) { return load_gcm2 <= kMaxLoad_gcm2 * (1 + kLoadLimitRelativeTolerance); }
+double max_load_gcm2() { return display_max(param::MotionSet(0).load); }
+
+bool within_load_limit(double load_gcm2) { return load_gcm2 <= max_load_gcm2() * (1 + kLoadLimitRelativeTolerance); }
 
 double flange_axis_inertia_kgm2(const mjModel* model, mjData* data) {
   mj_forward(model, data);

@@ -12,8 +12,9 @@
 
 namespace sreh {
 
-// Manual 6.2, index 64..71 subindex 4: load range 0 .. 15'000 g cm^2.
-inline constexpr double kMaxLoad_gcm2 = 15000.0;
+// Manual 6.2, index 64..71 subindex 4: the load row's maximum (15'000 g
+// cm^2), read from the parameter table.
+double max_load_gcm2();
 // Smallest non-zero InertiaLoad: below it the modelled disk underflows (A-TWIN-5, issue 12).
 inline constexpr double kMinInertiaGcm2 = 1e-6;
 

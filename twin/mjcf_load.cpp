@@ -112,7 +112,7 @@ LoadXml mjcf_load_xml(const std::string& given_path, const std::string& module_a
   std::string validation;
   if (const std::size_t root = text.find("<mujoco"); root != std::string::npos) {
     if (text.find("angle=\"radian\"") == std::string::npos) {
-      throw std::invalid_argument(path + ": a <mujoco> load file must declare <compiler angle=\"radian\"/> (style.md 6)");
+      throw std::invalid_argument(path + ": a <mujoco> load file must declare <compiler angle=\"radian\"/> (docs/style.md 6)");
     }
     if (text.find("<default") != std::string::npos) {
       throw std::invalid_argument(path + ": <default> classes are not supported in load files; set attributes on the elements");

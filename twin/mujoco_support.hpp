@@ -1,4 +1,4 @@
-// MuJoCo at the edge (style.md 10, 11): RAII owners, error handlers that
+// MuJoCo at the edge (docs/style.md 10, 11): RAII owners, error handlers that
 // throw instead of waiting on stdin, and compiling MJCF text from memory.
 #pragma once
 #include <memory>

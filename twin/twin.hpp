@@ -12,12 +12,15 @@
 #include "device_logic/device.hpp"
 #include "twin/specs.hpp"
 #include "twin/trace.hpp"
-#include "twin/twin_snapshot.hpp"
 
 struct mjModel_;
 struct mjData_;
 
 namespace sreh {
+
+// twin/twin_snapshot.hpp: include it where a snapshot is taken or looked
+// into; naming it here keeps the device's insides out of every user of Twin.
+struct TwinSnapshot;
 
 // The twin's configuration: the world (twin/specs.hpp, shared with
 // PlantConfig) plus the IO-Link cycle, the memory and the trace handling.

@@ -9,6 +9,7 @@ holds a Gymnasium-shaped positioning environment.
 """
 import os as _os
 import re as _re
+import warnings as _warnings
 
 from . import _core
 
@@ -25,8 +26,6 @@ from ._core import (  # noqa: E402
     Twin,
     TwinSnapshot,
     pd_out,
-    decode_pd_in,
-    decode_pd_out,
     STATES,
     LEDS,
     SIZE_OPTIONS,
@@ -38,8 +37,36 @@ from ._core import (  # noqa: E402
 
 __all__ = [
     "Twin", "TwinSnapshot", "IsduError", "InputError", "run_scenario", "size", "sweep", "calibrate", "pd_out", "decode_pd_in",
-    "decode_pd_out", "STATES", "LEDS", "SIZE_OPTIONS", "SWEEP_OPTIONS", "models_dir", "model_card", "env",
+    "decode_pd_out", "PdFields", "STATES", "LEDS", "SIZE_OPTIONS", "SWEEP_OPTIONS", "models_dir", "model_card", "env",
 ]
+
+
+class PdFields(dict):
+    """A decoded process-data frame: the field names of the layout table,
+    as scenarios and serve use them (``position_raw``, ``position_deg``,
+    ``target_raw``, ``target_deg``, ...). The names before issue 30 still
+    read, with a DeprecationWarning, for one release."""
+
+    _OLD_NAMES = {"actual_position": "position_raw", "target_position": "target_raw"}
+
+    def __missing__(self, key):
+        new = self._OLD_NAMES.get(key)
+        if new is None or new not in self:
+            raise KeyError(key)
+        _warnings.warn(f"process data field '{key}' is deprecated: use '{new}'", DeprecationWarning, stacklevel=2)
+        return self[new]
+
+
+def decode_pd_in(frame):
+    """The fields of a 7-byte input frame (manual 2.3): position_raw
+    (counts), position_deg, error_code, warning_code and the status bits."""
+    return PdFields(_core.decode_pd_in(frame))
+
+
+def decode_pd_out(frame):
+    """The fields of a 6-byte output frame (manual 2.2): target_raw
+    (counts), target_deg, parameter_set and the command bits."""
+    return PdFields(_core.decode_pd_out(frame))
 
 
 def _python_names(error):

@@ -46,7 +46,7 @@ class State(TypedDict):
     flange_blocked: bool
 
 class PdIn(TypedDict):
-    actual_position: int
+    position_raw: int
     position_deg: float
     error_code: int
     warning_code: int
@@ -58,7 +58,7 @@ class PdIn(TypedDict):
     motor_off: bool
 
 class PdOut(TypedDict):
-    target_position: int
+    target_raw: int
     target_deg: float
     parameter_set: int
     shortest_path: bool
@@ -127,7 +127,7 @@ class Twin:
     @property
     def load_inertia_gcm2(self) -> float: ...
 
-def pd_out(target_deg: float = ..., *, target_counts: int | None = ..., parameter_set: int = ...,
+def pd_out(target_deg: float = ..., *, target_raw: int | None = ..., target_counts: int | None = ..., parameter_set: int = ...,
            shortest_path: bool = ..., relative: bool = ..., set_origin: bool = ..., reset_error: bool = ...,
            stop: bool = ..., move: bool = ..., motor_on: bool = ...) -> bytes: ...
 def decode_pd_in(frame: _Bytes) -> PdIn: ...

@@ -93,7 +93,7 @@ MoveResult simulate_move(double distance_rad, const MotionLimits& limits, const 
     const double t = static_cast<double>(k) * spec.dt_s;
     const KinematicState sp = profile.at(t);
     const double meas = plant.encoder_rad();
-    const double err = sp.pos - meas;
+    const double err = sp.pos_rad - meas;
     r.max_tracking_error_rad = std::max(r.max_tracking_error_rad, std::abs(err));
     r.final_error_rad = err;
     if (k >= steps_travel) {

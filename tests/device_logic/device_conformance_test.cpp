@@ -38,7 +38,7 @@ TEST(LinkWatchdog, WithoutTheAnnouncedCycleA32msMasterTripsAfter20ms_A_LINK_1) {
   EXPECT_EQ(r.read_u(114, 6), 16);
 }
 
-TEST(LinkWatchdog, ThreeMasterCyclesOfSilenceAreTheLimit_Manual5_A_LINK_1) {
+TEST(LinkWatchdog, ThreeMasterCyclesOfSilenceAreTheLimit_5_A_LINK_1) {
   Rig r;
   r.dev.set_master_cycle_time(0.032);
   r.pd.motor_on = true;
@@ -63,7 +63,7 @@ TEST(LinkWatchdog, TwentyMsFloorAtFastCycles_A_LINK_1) {
   EXPECT_EQ(r.read_u(114, 6), 16);
 }
 
-TEST(IoLinkLed, OperateWithOutputsInvalid_Manual1_Manual5) {
+TEST(IoLinkLed, OperateWithOutputsInvalid_1_and_5) {
   Rig r;
   r.cycle();
   EXPECT_EQ(r.dev.io_link_led(), IoLinkLedMode::Operate);
@@ -72,7 +72,7 @@ TEST(IoLinkLed, OperateWithOutputsInvalid_Manual1_Manual5) {
   EXPECT_EQ(r.dev.io_link_led(), IoLinkLedMode::Operate);
 }
 
-TEST(IoLinkLed, StartupAfterEveryPowerOnThenPreoperateThenOperate_Manual1) {
+TEST(IoLinkLed, StartupAfterEveryPowerOnThenPreoperateThenOperate_1) {
   Rig r;
   r.run_s(0.01);
   for (int n = 0; n < 2; ++n) {
@@ -89,7 +89,7 @@ TEST(IoLinkLed, StartupAfterEveryPowerOnThenPreoperateThenOperate_Manual1) {
   }
 }
 
-TEST(IoLinkLed, OffWhenTheLinkIsLost_Manual1) {
+TEST(IoLinkLed, OffWhenTheLinkIsLost_1) {
   Rig r;
   r.run_s(0.01);
   r.link_up = false;
@@ -107,7 +107,7 @@ void enter_boot_mode(Rig& r) {
 IsduResult chunk(Rig& r, std::span<const uint8_t> data) { return r.dev.isdu_write(Device::kFirmwareDataIndex, 1, data); }
 IsduResult fw_command(Rig& r, uint8_t c) { return r.dev.isdu_write(Device::kFirmwareDataIndex, 2, std::vector<uint8_t>{c}); }
 
-TEST(FirmwareTransfer, ChunksOnlyInBootMode_Manual9_A_FW_4) {
+TEST(FirmwareTransfer, ChunksOnlyInBootMode_9_A_FW_4) {
   Rig r;
   const std::vector<uint8_t> data(10, 0x55);
   EXPECT_EQ(chunk(r, data).error, kIsduServiceTempUnavailable);
@@ -119,7 +119,7 @@ TEST(FirmwareTransfer, ChunksOnlyInBootMode_Manual9_A_FW_4) {
   EXPECT_EQ(r.dev.isdu_write(Device::kFirmwareDataIndex, 3, data).error, kIsduSubindexNotAvailable);
 }
 
-TEST(FirmwareTransfer, PowerLossMidTransferLeavesBootMode_Manual9) {
+TEST(FirmwareTransfer, PowerLossMidTransferLeavesBootMode_9) {
   Rig r;
   ASSERT_TRUE(r.write_u(65, 1, 12345).ok());
   enter_boot_mode(r);
@@ -142,7 +142,7 @@ TEST(FirmwareTransfer, PowerLossMidTransferLeavesBootMode_Manual9) {
   EXPECT_EQ(r.read_u(65, 1), 12345); // configuration kept (manual 9)
 }
 
-TEST(FirmwareTransfer, PowerLossBeforeAnyChunkKeepsTheApplication_Manual9) {
+TEST(FirmwareTransfer, PowerLossBeforeAnyChunkKeepsTheApplication_9) {
   Rig r;
   enter_boot_mode(r);
   ASSERT_TRUE(fw_command(r, 0).ok());
@@ -150,7 +150,7 @@ TEST(FirmwareTransfer, PowerLossBeforeAnyChunkKeepsTheApplication_Manual9) {
   EXPECT_FALSE(r.dev.in_boot_mode());
 }
 
-TEST(FirmwareTransfer, CorruptImageFailsWith8041_Manual9_A_FW_3) {
+TEST(FirmwareTransfer, CorruptImageFailsWith8041_9_A_FW_3) {
   Rig r;
   enter_boot_mode(r);
   std::vector<uint8_t> image = Device::firmware_image("2.0.0", 1000);

@@ -206,7 +206,7 @@ TEST(Led, WarningOrangeBlinkInReadyOrangeSteadyInMotorOffHiddenInError_3_1) {
   EXPECT_EQ(r.dev.led(), LedColor::Red);
 }
 
-TEST(Led, Mode0OffMode2ErrorsAndWarningsOnly_6_2_index83) {
+TEST(Led, Mode0OffMode2ErrorsAndWarningsOnly_6_2_83) {
   Rig r;
   ASSERT_TRUE(r.write_u(83, 0, 0).ok());
   r.switch_on();

@@ -78,7 +78,7 @@ TEST(PositionModes, ShortestPathExactly180GoesPositive_3_4) {
   EXPECT_NEAR(r.position_deg(), 180.0, 0.1);
 }
 
-TEST(PositionModes, RelativeWithShortestPathRefused_7_2_114_7_code3) {
+TEST(PositionModes, RelativeWithShortestPathRefusedWithCode3_7_2_114_7) {
   Rig r;
   r.switch_on();
   r.pd.relative = true;
@@ -89,14 +89,14 @@ TEST(PositionModes, RelativeWithShortestPathRefused_7_2_114_7_code3) {
   EXPECT_NEAR(r.position_deg(), 0.0, 0.05);
 }
 
-TEST(PositionModes, ParameterSetAbove7Refused_7_2_114_7_code2) {
+TEST(PositionModes, ParameterSetAbove7RefusedWithCode2_7_2_114_7) {
   Rig r;
   r.switch_on();
   EXPECT_FALSE(r.move_to_deg(20, 8));
   EXPECT_EQ(r.read_u(114, 7), 2);
 }
 
-TEST(PositionLimit, TargetOutsideRefusedBeforeMotion_6_2_index81) {
+TEST(PositionLimit, TargetOutsideRefusedBeforeMotion_6_2_81) {
   Rig r;
   ASSERT_TRUE(r.write_u(81, 3, 1).ok()); // active, 0..360 deg by default
   r.switch_on();
@@ -108,7 +108,7 @@ TEST(PositionLimit, TargetOutsideRefusedBeforeMotion_6_2_index81) {
   EXPECT_NEAR(r.position_deg(), 0.0, 0.05); // no motion at all
 }
 
-TEST(PositionLimit, AppliesToRelativeAndShortestPathToo_6_2_index81) {
+TEST(PositionLimit, AppliesToRelativeAndShortestPathToo_6_2_81) {
   Rig r;
   ASSERT_TRUE(r.write_u(81, 3, 1).ok());
   r.switch_on();
@@ -129,7 +129,7 @@ TEST(PositionLimit, AppliesToRelativeAndShortestPathToo_6_2_index81) {
   EXPECT_EQ(r.read_u(114, 7), 1);
 }
 
-TEST(PositionLimit, InactiveLimitAllowsAnyTarget_6_2_index81) {
+TEST(PositionLimit, InactiveLimitAllowsAnyTarget_6_2_81) {
   Rig r;
   r.switch_on();
   ASSERT_TRUE(r.move_to_deg(400));

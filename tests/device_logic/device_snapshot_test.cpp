@@ -6,6 +6,8 @@
 #include <cstring>
 #include <vector>
 
+#include "device_logic/device_snapshot.hpp"
+#include "device_logic/faults.hpp"
 #include "device_logic/parameter_ids.hpp"
 #include "tests/device_logic/device_rig.hpp"
 

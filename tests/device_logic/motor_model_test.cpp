@@ -34,9 +34,9 @@ double min_margin_Nm(const MotorModel& m, double speed_dps, double load_gcm2, do
   double margin = 1e9;
   for (int k = 0; k <= 20000; ++k) {
     const KinematicState s = p.at(p.duration_s() * k / 20000.0);
-    const double need = j * s.acc + friction_Nm * (s.vel > 0 ? 1.0 : 0.0);
+    const double need = j * s.acc_rad_s2 + friction_Nm * (s.vel_rad_s > 0 ? 1.0 : 0.0);
     const double sign = need >= 0 ? 1.0 : -1.0;
-    margin = std::min(margin, m.max_torque_Nm(s.vel, supply_V, sign) - std::abs(need));
+    margin = std::min(margin, m.max_torque_Nm(s.vel_rad_s, supply_V, sign) - std::abs(need));
   }
   return margin;
 }

@@ -93,7 +93,7 @@ TEST(ParameterTable, SortedUniqueAndEveryRowCitesASection) {
   }
 }
 
-TEST(ParameterTable, NumericRowsMatchManualChapter6) {
+TEST(ParameterTable, NumericRowsMatchTheManual_6) {
   for (const auto& e : manual_numeric_rows()) {
     SCOPED_TRACE(std::to_string(e.index) + "." + std::to_string(e.sub));
     const ParameterEntry* row = find_parameter(e.index, e.sub);
@@ -161,7 +161,7 @@ TEST(ParameterTable, DisplayScalesGiveManualDisplayUnits) {
 }
 
 // manual 6.5 identification texts, 1 profile list.
-TEST(ParameterTable, IdentificationRowsMatchManual6_5) {
+TEST(ParameterTable, IdentificationRowsMatchTheManual_6_5) {
   auto text = [](uint16_t i) { return std::string(find_parameter(i, 0)->default_text); };
   EXPECT_EQ(text(16), "Afag");
   EXPECT_EQ(text(17), "www.afag.com");

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <stdexcept>
+#include <string>
 
 #include "device_logic/planner.hpp"
 #include "device_logic/units.hpp"
@@ -28,14 +30,14 @@ void expect_within_limits(const Profile& p, const MotionLimits& l, double rel_to
   const int n = 64;
   for (int k = 0; k <= n; ++k) {
     const KinematicState s = p.at(p.duration_s() * k / n);
-    ASSERT_LE(std::abs(s.vel), tv);
-    ASSERT_LE(std::abs(s.acc), ta);
-    ASSERT_LE(std::abs(s.jerk), tj);
+    ASSERT_LE(std::abs(s.vel_rad_s), tv);
+    ASSERT_LE(std::abs(s.acc_rad_s2), ta);
+    ASSERT_LE(std::abs(s.jerk_rad_s3), tj);
   }
   for (double j : p.phase_jerks_rad_s3()) ASSERT_LE(std::abs(j), tj);
 }
 
-TEST(Planner, LimitsFromParameterSetFollowManual354And355) {
+TEST(Planner, LimitsFromParameterSetFollowTheManual_3_5_4_and_3_5_5) {
   // Factory set 1 (manual 6.2, index 65): 3000 deg/s, 100 %, 100 %, 0 g cm^2.
   const MotionLimits l = limits_from_parameter_set(3000.0, 100.0, 100.0, 0.0);
   EXPECT_DOUBLE_EQ(l.v_max_rad_s, deg_to_rad(3000.0));
@@ -80,7 +82,7 @@ TEST(Planner, OnlyAccelerationReachedTravelTime) {
   EXPECT_NEAR(p.duration_s(), 2.0 * (lo / 100.0 + 0.1), 1e-9);
   EXPECT_EQ(p.phase_durations_s()[3], 0.0);
   EXPECT_GT(p.phase_durations_s()[1], 0.0);
-  EXPECT_NEAR(p.at(p.phase_durations_s()[0] + 0.5 * p.phase_durations_s()[1]).acc, 100.0, 1e-9);
+  EXPECT_NEAR(p.at(p.phase_durations_s()[0] + 0.5 * p.phase_durations_s()[1]).acc_rad_s2, 100.0, 1e-9);
 }
 
 TEST(Planner, OnlyVelocityReachedTravelTime) {
@@ -99,7 +101,7 @@ TEST(Planner, NeitherLimitReachedTravelTime) {
   EXPECT_NEAR(p.duration_s(), 4.0 * std::cbrt(d / 2000.0), 1e-12);
   EXPECT_EQ(p.phase_durations_s()[1], 0.0);
   EXPECT_EQ(p.phase_durations_s()[3], 0.0);
-  EXPECT_DOUBLE_EQ(p.at(p.duration_s()).pos, d);
+  EXPECT_DOUBLE_EQ(p.at(p.duration_s()).pos_rad, d);
 }
 
 TEST(Planner, OneCountMoveEndsExactlyOnTheCount) {
@@ -110,9 +112,9 @@ TEST(Planner, OneCountMoveEndsExactlyOnTheCount) {
     EXPECT_NEAR(p.duration_s(), 4.0 * std::cbrt(std::abs(d) / (2.0 * l.j_max_rad_s3)), 1e-15);
     EXPECT_GT(p.duration_s(), 0.0);
     const KinematicState e = p.at(p.duration_s());
-    EXPECT_EQ(e.pos, d);
-    EXPECT_EQ(e.vel, 0.0);
-    EXPECT_EQ(e.acc, 0.0);
+    EXPECT_EQ(e.pos_rad, d);
+    EXPECT_EQ(e.vel_rad_s, 0.0);
+    EXPECT_EQ(e.acc_rad_s2, 0.0);
     EXPECT_EQ(p.end_position_rad(), d);
     expect_within_limits(p, l);
   }
@@ -123,18 +125,30 @@ TEST(Planner, ZeroLengthMoveIsEmpty) {
   EXPECT_EQ(p.duration_s(), 0.0);
   EXPECT_EQ(sum(p.phase_durations_s()), 0.0);
   const KinematicState s = p.at(0.3);
-  EXPECT_EQ(s.pos, 0.0);
-  EXPECT_EQ(s.vel, 0.0);
+  EXPECT_EQ(s.pos_rad, 0.0);
+  EXPECT_EQ(s.vel_rad_s, 0.0);
   EXPECT_EQ(p.peak_velocity_rad_s(), 0.0);
 }
 
-TEST(Planner, InvalidLimitsGiveNoMove) {
-  for (const MotionLimits& l : {MotionLimits{0, 1, 1}, MotionLimits{1, -1, 1}, MotionLimits{1, 1, NAN}}) {
-    const Profile p = Profile::rest_to_rest(1.0, l);
-    EXPECT_EQ(p.duration_s(), 0.0);
-    EXPECT_EQ(p.at(1.0).pos, 0.0);
-  }
-  EXPECT_EQ(Profile::rest_to_rest(INFINITY, MotionLimits{1, 1, 1}).duration_s(), 0.0);
+TEST(Planner, InvalidLimitsAreRefusedNamingTheLimit) {
+  const auto message = [](const auto& plan) {
+    try {
+      plan();
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const MotionLimits ok{1, 1, 1};
+  EXPECT_NE(message([] { Profile::rest_to_rest(1.0, MotionLimits{0, 1, 1}); }).find("v_max_rad_s"), std::string::npos);
+  EXPECT_NE(message([] { Profile::rest_to_rest(1.0, MotionLimits{1, -1, 1}); }).find("a_max_rad_s2"), std::string::npos);
+  EXPECT_NE(message([] { Profile::rest_to_rest(1.0, MotionLimits{1, 1, NAN}); }).find("j_max_rad_s3"), std::string::npos);
+  EXPECT_NE(message([] { Profile::stop(KinematicState{0, 1, 0, 0}, MotionLimits{}); }).find("Profile::stop"),
+            std::string::npos);
+  EXPECT_NE(message([&] { Profile::rest_to_rest(INFINITY, ok); }).find("distance"), std::string::npos);
+  EXPECT_NE(message([&] { Profile::stop(KinematicState{0, NAN, 0, 0}, ok); }).find("start state"), std::string::npos);
+  // A zero distance with valid limits is a move of no length, not an error.
+  EXPECT_EQ(message([&] { EXPECT_EQ(Profile::rest_to_rest(0.0, ok).duration_s(), 0.0); }), "no error");
 }
 
 TEST(Planner, NegativeMoveMirrorsPositive) {
@@ -145,11 +159,11 @@ TEST(Planner, NegativeMoveMirrorsPositive) {
   EXPECT_EQ(p.peak_velocity_rad_s(), -n.peak_velocity_rad_s());
   for (int k = 0; k <= 100; ++k) {
     const double t = p.duration_s() * k / 100.0;
-    EXPECT_NEAR(p.at(t).pos, -n.at(t).pos, 1e-12);
-    EXPECT_NEAR(p.at(t).vel, -n.at(t).vel, 1e-12);
-    EXPECT_NEAR(p.at(t).acc, -n.at(t).acc, 1e-9);
+    EXPECT_NEAR(p.at(t).pos_rad, -n.at(t).pos_rad, 1e-12);
+    EXPECT_NEAR(p.at(t).vel_rad_s, -n.at(t).vel_rad_s, 1e-12);
+    EXPECT_NEAR(p.at(t).acc_rad_s2, -n.at(t).acc_rad_s2, 1e-9);
   }
-  EXPECT_EQ(n.at(n.duration_s()).pos, -deg_to_rad(90.0));
+  EXPECT_EQ(n.at(n.duration_s()).pos_rad, -deg_to_rad(90.0));
 }
 
 TEST(Planner, ContinuousAcrossPhaseBoundaries) {
@@ -163,19 +177,19 @@ TEST(Planner, ContinuousAcrossPhaseBoundaries) {
       const KinematicState a = p.at(t - eps);
       const KinematicState b = p.at(t + eps);
       const double scale = std::abs(d);
-      EXPECT_NEAR(a.pos, b.pos, 1e-12 * scale + 2 * eps * l.v_max_rad_s);
-      EXPECT_NEAR(a.vel, b.vel, 1e-10 * l.v_max_rad_s + 2 * eps * l.a_max_rad_s2);
-      EXPECT_NEAR(a.acc, b.acc, 1e-9 * l.a_max_rad_s2 + 2 * eps * l.j_max_rad_s3);
+      EXPECT_NEAR(a.pos_rad, b.pos_rad, 1e-12 * scale + 2 * eps * l.v_max_rad_s);
+      EXPECT_NEAR(a.vel_rad_s, b.vel_rad_s, 1e-10 * l.v_max_rad_s + 2 * eps * l.a_max_rad_s2);
+      EXPECT_NEAR(a.acc_rad_s2, b.acc_rad_s2, 1e-9 * l.a_max_rad_s2 + 2 * eps * l.j_max_rad_s3);
     }
     // at(duration) is the end at rest; clamped past it and before 0.
-    EXPECT_EQ(p.at(p.duration_s()).pos, d);
-    EXPECT_EQ(p.at(p.duration_s() + 1.0).pos, d);
-    EXPECT_EQ(p.at(-1.0).pos, 0.0);
-    EXPECT_EQ(p.at(p.duration_s()).jerk, 0.0);
+    EXPECT_EQ(p.at(p.duration_s()).pos_rad, d);
+    EXPECT_EQ(p.at(p.duration_s() + 1.0).pos_rad, d);
+    EXPECT_EQ(p.at(-1.0).pos_rad, 0.0);
+    EXPECT_EQ(p.at(p.duration_s()).jerk_rad_s3, 0.0);
   }
 }
 
-// Fixed-seed property test over random moves and parameter sets (style.md 14).
+// Fixed-seed property test over random moves and parameter sets (docs/style.md 14).
 TEST(Planner, RandomMovesRespectLimitsAndEndExactly) {
   std::mt19937_64 rng(20240611);
   std::uniform_real_distribution<double> speed(0.1, 4300.0), pct(0.1, 100.0), load(0.0, 15000.0);
@@ -187,9 +201,9 @@ TEST(Planner, RandomMovesRespectLimitsAndEndExactly) {
     if (i % 97 == 0) d = kOneCount_rad * static_cast<double>(1 + i % 5);
     if (neg(rng)) d = -d;
     const Profile p = Profile::rest_to_rest(d, l);
-    ASSERT_EQ(p.at(p.duration_s()).pos, d) << i;
+    ASSERT_EQ(p.at(p.duration_s()).pos_rad, d) << i;
     ASSERT_EQ(p.end_position_rad(), d);
-    ASSERT_EQ(p.at(p.duration_s()).vel, 0.0);
+    ASSERT_EQ(p.at(p.duration_s()).vel_rad_s, 0.0);
     ASSERT_NEAR(sum(p.phase_durations_s()), p.duration_s(), 1e-12 * p.duration_s());
     for (double dur : p.phase_durations_s()) ASSERT_GE(dur, 0.0);
     ASSERT_LE(std::abs(p.peak_velocity_rad_s()), l.v_max_rad_s * (1 + 1e-9));
@@ -197,8 +211,8 @@ TEST(Planner, RandomMovesRespectLimitsAndEndExactly) {
     if (i % 10 == 0) expect_within_limits(p, l);
     // Never moves backwards: velocity keeps the sign of the distance.
     const KinematicState mid = p.at(0.5 * p.duration_s());
-    ASSERT_GT(mid.vel * d, 0.0);
-    ASSERT_NEAR(mid.pos, 0.5 * d, 1e-9 * std::abs(d)); // symmetric profile
+    ASSERT_GT(mid.vel_rad_s * d, 0.0);
+    ASSERT_NEAR(mid.pos_rad, 0.5 * d, 1e-9 * std::abs(d)); // symmetric profile
   }
 }
 
@@ -267,7 +281,7 @@ TEST(Planner, StopFromCruiseIsTimeOptimal) {
   // At rest already: nothing to do, position kept.
   const Profile r = Profile::stop(KinematicState{2.5, 0.0, 0.0, 0.0}, l);
   EXPECT_EQ(r.duration_s(), 0.0);
-  EXPECT_EQ(r.at(0.0).pos, 2.5);
+  EXPECT_EQ(r.at(0.0).pos_rad, 2.5);
 }
 
 TEST(Planner, StopWhileAcceleratingRampsDownFirst) {
@@ -276,10 +290,10 @@ TEST(Planner, StopWhileAcceleratingRampsDownFirst) {
   const Profile p = Profile::stop(from, l);
   // Velocity first rises while the acceleration ramps down through zero.
   EXPECT_NEAR(p.peak_velocity_rad_s(), 3.0 + 100.0 * 100.0 / 2000.0, 1e-12);
-  EXPECT_NEAR(p.at(0).acc, 100.0, 0.0);
+  EXPECT_NEAR(p.at(0).acc_rad_s2, 100.0, 0.0);
   const KinematicState e = p.at(p.duration_s());
-  EXPECT_EQ(e.vel, 0.0);
-  EXPECT_EQ(e.acc, 0.0);
+  EXPECT_EQ(e.vel_rad_s, 0.0);
+  EXPECT_EQ(e.acc_rad_s2, 0.0);
   expect_within_limits(p, l);
 }
 
@@ -291,13 +305,13 @@ TEST(Planner, StopWithAccelerationBeyondLimitComesBackInside) {
   EXPECT_NEAR(p.duration_s(), 0.05 + (20.0 - 11.25) / 100.0 + 0.1, 1e-12);
   EXPECT_NEAR(p.phase_durations_s()[0], 0.05, 1e-12);
   EXPECT_GT(p.phase_jerks_rad_s3()[0], 0.0);
-  EXPECT_NEAR(p.at(0.06).acc, -100.0, 1e-9);
-  EXPECT_EQ(p.at(p.duration_s()).vel, 0.0);
+  EXPECT_NEAR(p.at(0.06).acc_rad_s2, -100.0, 1e-9);
+  EXPECT_EQ(p.at(p.duration_s()).vel_rad_s, 0.0);
   // Accelerating at 150 (> a_max) forwards: ramps down through the limit.
   const Profile q = Profile::stop(KinematicState{0.0, 5.0, 150.0, 0.0}, l);
   EXPECT_LT(q.phase_jerks_rad_s3()[0], 0.0);
-  EXPECT_EQ(q.at(q.duration_s()).vel, 0.0);
-  for (int k = 0; k <= 100; ++k) EXPECT_LE(q.at(q.duration_s() * k / 100.0).acc, 150.0 + 1e-9);
+  EXPECT_EQ(q.at(q.duration_s()).vel_rad_s, 0.0);
+  for (int k = 0; k <= 100; ++k) EXPECT_LE(q.at(q.duration_s() * k / 100.0).acc_rad_s2, 150.0 + 1e-9);
 }
 
 TEST(Planner, StopWhenBrakingWouldOvershootReversesJerk) {
@@ -308,8 +322,8 @@ TEST(Planner, StopWhenBrakingWouldOvershootReversesJerk) {
   const Profile p = Profile::stop(from, l);
   EXPECT_GT(p.phase_jerks_rad_s3()[0], 0.0);
   const KinematicState e = p.at(p.duration_s());
-  EXPECT_EQ(e.vel, 0.0);
-  EXPECT_EQ(e.acc, 0.0);
+  EXPECT_EQ(e.vel_rad_s, 0.0);
+  EXPECT_EQ(e.acc_rad_s2, 0.0);
   expect_within_limits(p, l);
   // Exactly balanced: one jerk phase to zero acceleration.
   const double v0 = 80.0 * 80.0 / 2000.0;
@@ -325,16 +339,16 @@ TEST(Planner, RandomStopsEndAtRestWithinLimits) {
     const KinematicState from{u(rng), u(rng) * l.v_max_rad_s, u(rng) * l.a_max_rad_s2, 0.0};
     const Profile p = Profile::stop(from, l);
     const KinematicState e = p.at(p.duration_s());
-    ASSERT_EQ(e.vel, 0.0);
-    ASSERT_EQ(e.acc, 0.0);
-    ASSERT_EQ(e.pos, p.end_position_rad());
+    ASSERT_EQ(e.vel_rad_s, 0.0);
+    ASSERT_EQ(e.acc_rad_s2, 0.0);
+    ASSERT_EQ(e.pos_rad, p.end_position_rad());
     // Just before the end the state is at rest to rounding (continuity).
     const double dt = p.duration_s() * 1e-12;
     const KinematicState pre = p.at(p.duration_s() - dt);
-    ASSERT_NEAR(pre.vel, 0.0, 1e-9 * l.v_max_rad_s + dt * l.a_max_rad_s2);
-    ASSERT_NEAR(pre.acc, 0.0, 1e-9 * l.a_max_rad_s2 + 2 * dt * l.j_max_rad_s3);
+    ASSERT_NEAR(pre.vel_rad_s, 0.0, 1e-9 * l.v_max_rad_s + dt * l.a_max_rad_s2);
+    ASSERT_NEAR(pre.acc_rad_s2, 0.0, 1e-9 * l.a_max_rad_s2 + 2 * dt * l.j_max_rad_s3);
     // Speed never exceeds what it had plus what the ramp-down adds (a0^2 / 2j).
-    const double bound = std::abs(from.vel) + from.acc * from.acc / (2 * l.j_max_rad_s3);
+    const double bound = std::abs(from.vel_rad_s) + from.acc_rad_s2 * from.acc_rad_s2 / (2 * l.j_max_rad_s3);
     ASSERT_LE(std::abs(p.peak_velocity_rad_s()), bound * (1 + 1e-9) + 1e-12);
     if (i % 10 == 0) {
       const MotionLimits relaxed{bound * 1.0000001 + 1e-9, l.a_max_rad_s2, l.j_max_rad_s3};

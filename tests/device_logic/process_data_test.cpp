@@ -133,4 +133,36 @@ TEST(ProcessDataLayout, InFieldsMatchTheCodec_2_3) {
   for (const PdField& f : kPdInFields) EXPECT_EQ(frame_bits(encode(set_all(f.name))), field_mask(f)) << f.name;
 }
 
+// The decoded views read each field through its row: the value the codec
+// wrote comes back, the position sign-extended (manual 2.2, 2.3, 2.5).
+TEST(ProcessDataLayout, FieldValuesReadThroughTheTableAreTheCodecs_2_2_2_3) {
+  ProcessDataOut out;
+  out.target_position = -123456;
+  out.parameter_set = 5;
+  out.relative = true;
+  out.motor_on = true;
+  const PdOutFrame of = encode(out);
+  for (const PdField& f : kPdOutFields) {
+    int64_t want = 0;
+    if (f.name == "target_raw") want = -123456;
+    if (f.name == "parameter_set") want = 5;
+    if (f.name == "relative" || f.name == "motor_on") want = 1;
+    EXPECT_EQ(pd_field_value(of, f), want) << f.name;
+  }
+  ProcessDataIn in;
+  in.actual_position = 2147483647;
+  in.error_code = 0x90;
+  in.done = true;
+  const PdInFrame inf = encode(in);
+  for (const PdField& f : kPdInFields) {
+    int64_t want = 0;
+    if (f.name == "position_raw") want = 2147483647;
+    if (f.name == "error_code") want = 0x90;
+    if (f.name == "done") want = 1;
+    EXPECT_EQ(pd_field_value(inf, f), want) << f.name;
+  }
+  EXPECT_EQ(kPdOutFields[0].deg_name, "target_deg");
+  EXPECT_EQ(kPdInFields[0].deg_name, "position_deg");
+}
+
 } // namespace sreh

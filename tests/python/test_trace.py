@@ -107,12 +107,28 @@ def test_process_data_codec():
     frame = sreh_twin.pd_out(90, parameter_set=3, motor_on=True, move=True)
     assert len(frame) == 6
     fields = sreh_twin.decode_pd_out(frame)
-    assert fields["target_position"] == 16384 and fields["parameter_set"] == 3  # manual 2.5: 2^16 per rev
+    assert fields["target_raw"] == 16384 and fields["parameter_set"] == 3  # manual 2.5: 2^16 per rev
+    assert fields["target_deg"] == 90.0
     assert fields["motor_on"] and fields["move"] and not fields["stop"]
-    assert sreh_twin.decode_pd_out(sreh_twin.pd_out(target_counts=-1))["target_position"] == -1
+    assert sreh_twin.decode_pd_out(sreh_twin.pd_out(target_raw=-1))["target_raw"] == -1
+    position = sreh_twin.decode_pd_in(bytes([0xFF, 0xFF, 0xC0, 0x00, 0, 0, 0x02]))  # -16384 counts, Ready
+    assert position["position_raw"] == -16384 and position["position_deg"] == -90.0 and position["ready"]
     with pytest.raises(sreh_twin.InputError, match="6 bytes"):
         sreh_twin.decode_pd_out(b"\x00")
     with pytest.raises(sreh_twin.InputError):
         sreh_twin.Twin().exchange(b"\x00" * 7)
     with pytest.raises(TypeError):
         sreh_twin.Twin().exchange("abcdef")
+
+
+def test_process_data_old_names_are_deprecated_aliases():
+    # Issue 30: one vocabulary (target_raw, position_raw); the old names
+    # still work for one release and say so.
+    with pytest.warns(DeprecationWarning, match="target_raw"):
+        frame = sreh_twin.pd_out(target_counts=-1)
+    with pytest.warns(DeprecationWarning, match="target_raw"):
+        assert sreh_twin.decode_pd_out(frame)["target_position"] == -1
+    with pytest.warns(DeprecationWarning, match="position_raw"):
+        assert sreh_twin.decode_pd_in(bytes(7))["actual_position"] == 0
+    with pytest.raises(KeyError):
+        sreh_twin.decode_pd_in(bytes(7))["no_such_field"]

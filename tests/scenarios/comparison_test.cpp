@@ -29,7 +29,7 @@ TEST(Comparison, OperatorsAndSavedValues) {
   EXPECT_FALSE(eq.holds(-0.5 + 0.006, vars));
 }
 
-TEST(Comparison, NeOnPositionUsesTheWireCountTolerance_Manual2_5) {
+TEST(Comparison, NeOnPositionUsesTheWireCountTolerance_2_5) {
   const Scenario s = parse("name: x\nsteps:\n  - expect: {position_deg: {ne: 90}}\n");
   const Comparison& c = *std::get<ExpectStep>(s.steps[0].action).check.position_deg;
   EXPECT_FALSE(c.holds(90.002, {}));
@@ -63,7 +63,7 @@ TEST(WaitUntilAfter, TooEarlyFails) {
   EXPECT_TRUE(window.passed) << (window.failures.empty() ? "" : window.failures[0]);
 }
 
-TEST(LinkUp, FirstCheckAfterTheLinkReturnsIsCurrent_Manual5) {
+TEST(LinkUp, FirstCheckAfterTheLinkReturnsIsCurrent_5) {
   const RunResult r = run("name: x\nsteps:\n  - pd: {motor_on: 1}\n  - wait_s: 0.01\n  - link: {down_s: 0.05}\n"
                           "  - expect: {state: ErrorOff}\n");
   EXPECT_TRUE(r.passed) << (r.failures.empty() ? "" : r.failures[0]);
@@ -75,7 +75,7 @@ TEST(LinkUp, FirstCheckAfterTheLinkReturnsIsCurrent_Manual5) {
 namespace sreh {
 namespace {
 
-TEST(FirmwareStep, PowerOffAtOneLeavesTheImageUnchecked_Manual9_A_SCN_18) {
+TEST(FirmwareStep, PowerOffAtOneLeavesTheImageUnchecked_9_A_SCN_18) {
   const RunResult r = run_scenario(parse_scenario_text(
       "name: x\nsteps:\n  - isdu_write: {index: 2, value: 80}\n  - isdu_write: {index: 2, value: 81}\n"
       "  - isdu_write: {index: 2, value: 82}\n  - firmware: {image: good, size_kB: 1, power_off_at: 1}\n"

@@ -128,7 +128,7 @@ TEST(ScenarioRunner, JsonHoldsTheInterfaceKeys) {
 }
 
 TEST(ScenarioRunner, RunsAreDeterministic) {
-  // style.md 8/9: same scenario, same result.
+  // docs/style.md 8/9: same scenario, same result.
   const std::string text = R"(name: x
 load: {inertia_gcm2: 2000}
 steps:

@@ -1,5 +1,5 @@
 // Scenario parsing: interfaces.md "Scenario files" becomes plain structs;
-// broken input is a ScenarioError with file:line:col (style.md 13).
+// broken input is a ScenarioError with file:line:col (docs/style.md 13).
 #include <gtest/gtest.h>
 
 #include <string>

@@ -23,7 +23,7 @@ struct ModbusMap : ::testing::Test {
   }
 };
 
-TEST_F(ModbusMap, ProcessDataOutOctetsBigEndian_Manual2_2) {
+TEST_F(ModbusMap, ProcessDataOutOctetsBigEndian_2_2) {
   write(kPdOut, {0x0000, 0x4000, 0x0101}); // target 90 deg, set 1, motor on
   EXPECT_EQ(port.twin.pd_out().target_position, 16384);
   EXPECT_EQ(port.twin.pd_out().parameter_set, 1);
@@ -33,7 +33,7 @@ TEST_F(ModbusMap, ProcessDataOutOctetsBigEndian_Manual2_2) {
   EXPECT_FALSE(port.twin.pd_out().motor_on);
 }
 
-TEST_F(ModbusMap, ProcessDataInAfterCycles_Manual2_3) {
+TEST_F(ModbusMap, ProcessDataInAfterCycles_2_3) {
   write(kPdOut, {0, 0, 0x0001});
   for (int i = 0; i < 50; ++i) hub.step_all();
   fill_port(block.data(), port, regs, events);

@@ -14,7 +14,7 @@ struct PortApi : ::testing::Test {
   Hub::Port& port = hub.port(1);
 };
 
-TEST_F(PortApi, DecodedFieldsKeepWhatIsLeftOut_Manual2_2) {
+TEST_F(PortApi, DecodedFieldsKeepWhatIsLeftOut_2_2) {
   apply_pd_out(port, Json{{"motor_on", true}});
   apply_pd_out(port, Json{{"target_deg", 90.0}, {"parameter_set", 1}});
   const Json pd = processdata_json(port);
@@ -41,13 +41,13 @@ TEST_F(PortApi, BadFieldChangesNothing) {
   EXPECT_EQ(port.twin.pd_out(), before);
 }
 
-TEST_F(PortApi, OutputsInvalidFlag_Manual5) {
+TEST_F(PortApi, OutputsInvalidFlag_5) {
   apply_pd_out(port, Json{{"valid", false}});
   EXPECT_FALSE(port.outputs_valid);
   EXPECT_FALSE(processdata_json(port)["out"]["valid"].get<bool>());
 }
 
-TEST_F(PortApi, ParameterReadGivesRawWireValue_Manual6_2) {
+TEST_F(PortApi, ParameterReadGivesRawWireValue_6_2) {
   const Json j = read_parameter(port, 64, 1); // maximum speed of parameter set 0
   EXPECT_EQ(j["value"], 300);
   EXPECT_EQ(j["raw"], "012C");

@@ -147,7 +147,7 @@ TEST(Feasible, AGivenSetIsJudgedLikeTheSearch) {
 
 // The thermal margin (default 5 K below the 70 degC warning) is honoured;
 // a larger margin never gives a hotter set.
-TEST(Feasible, ThermalMarginIsConfigurable_Manual7_3) {
+TEST(Feasible, ThermalMarginIsConfigurable_7_3) {
   SizingRequest rq = request(180.0, 15000.0);
   rq.thermal_margin_K = 15.0;
   const SizingResult r = size(rq);

@@ -30,7 +30,7 @@ SizingRequest request(double angle_deg, double load_gcm2, std::optional<MotionSe
 
 // Manual 3.5.2 (1): the travel time is the duration of the target
 // trajectory, i.e. the time-optimal S-curve for the set's limits.
-TEST(Size, ExplicitSetTravelTimeIsThePlannersExactly_Manual3_5_2) {
+TEST(Size, ExplicitSetTravelTimeIsThePlannersExactly_3_5_2) {
   const SizingResult r = size(request(90.0, 1000.0, MotionSetting{1500.0, 60.0, 40.0}));
   const Evaluation& e = r.evaluation;
   EXPECT_FALSE(r.recommended);
@@ -51,7 +51,7 @@ TEST(Size, ExplicitSetTravelTimeIsThePlannersExactly_Manual3_5_2) {
 
 // Manual 3.5.2 (2), (4): settling and positioning come from the simulation;
 // positioning = travel + settling.
-TEST(Size, SettlingAndPositioningFromSimulationAreConsistent_Manual3_5_2) {
+TEST(Size, SettlingAndPositioningFromSimulationAreConsistent_3_5_2) {
   const SizingResult r = size(request(45.0, 3000.0, MotionSetting{2000.0, 80.0, 80.0}, 2));
   const Evaluation& e = r.evaluation;
   ASSERT_TRUE(e.feasible) << e.reason;
@@ -92,7 +92,7 @@ TEST(Size, DwellLengthensTheCycleAndLowersTheTemperature) {
 
 // Manual 3.5.3: at 16 V the reachable speed is about 4300 x 16 / 24; the
 // full 4300 deg/s ends in a position tracking error (114.5): infeasible.
-TEST(Size, TooFastForTheVoltageIsInfeasible_Manual3_5_3) {
+TEST(Size, TooFastForTheVoltageIsInfeasible_3_5_3) {
   SizingRequest rq = request(360.0, 0.0, MotionSetting{4300.0, 100.0, 100.0});
   rq.voltage_V = 16.0;
   const Evaluation e = size(rq).evaluation;
@@ -122,7 +122,7 @@ TEST(Size, RecommendedSetRunsInTheTwinWithoutError) {
   ASSERT_FALSE(r.tried.empty());
   EXPECT_FALSE(r.tried.front().feasible);
   EXPECT_TRUE(e.set.setting.accel_pct < 100.0 || e.set.setting.jerk_pct < 100.0 ||
-              e.set.setting.speed_dps < kMaxSpeed_dps);
+              e.set.setting.speed_dps < max_speed_dps());
   EXPECT_LE(e.steady_temperature_C, kTemperatureWarning_C - 5.0); // the default margin
   EXPECT_EQ(e.set.load_gcm2, 15000.0);
 
@@ -161,7 +161,7 @@ TEST(Size, RecommendedSetRunsInTheTwinWithoutError) {
 // A move that is feasible at 100 %/100 % and the voltage's top speed needs
 // little search; a speed the move never reaches is recommended as the
 // lowest grid speed above its peak (the same trajectory, A-SIZE-10).
-TEST(Size, FeasibleAtFullLimitsNeedsFewSimulations_Manual3_5_3) {
+TEST(Size, FeasibleAtFullLimitsNeedsFewSimulations_3_5_3) {
   SizingRequest rq = request(30.0, 500.0, std::nullopt);
   rq.dwell_s = 0.5;
   rq.voltage_V = 19.0;
@@ -179,7 +179,7 @@ TEST(Size, FeasibleAtFullLimitsNeedsFewSimulations_Manual3_5_3) {
 }
 
 // Manual 6.2 ranges and the module's limits: refused before any simulation.
-TEST(Size, RefusesInputsOutsideTheModulesLimits_Manual6_2) {
+TEST(Size, RefusesInputsOutsideTheModulesLimits_6_2) {
   EXPECT_THROW(size(request(90.0, 20000.0, std::nullopt)), SizingInputError); // 64.4: <= 15000 g cm^2
   SizingRequest volts = request(90.0, 2000.0, std::nullopt);
   volts.voltage_V = 40.0; // index 85: 16..32 V
@@ -241,7 +241,7 @@ TEST(ParameterSet, IsduWriteLinesAreScenarioSteps) {
   }
 }
 
-TEST(ParameterSet, TopSpeedFallsWithVoltage_Manual3_5_3) {
+TEST(ParameterSet, TopSpeedFallsWithVoltage_3_5_3) {
   EXPECT_DOUBLE_EQ(voltage_speed_limit_dps(24.0), 4300.0);
   EXPECT_DOUBLE_EQ(voltage_speed_limit_dps(32.0), 4300.0);
   EXPECT_DOUBLE_EQ(voltage_speed_limit_dps(18.0), 4300.0 * 18.0 / 24.0);
@@ -249,7 +249,7 @@ TEST(ParameterSet, TopSpeedFallsWithVoltage_Manual3_5_3) {
 
 // Manual 7.3 115.1: warning at 70 degC; the steady state of the twin's
 // lumped model (A-TWIN-THERMAL-1: 58 K/W in series).
-TEST(Thermal, SteadyStateAndTimeToWarning_Manual7_3) {
+TEST(Thermal, SteadyStateAndTimeToWarning_7_3) {
   const ThermalEstimate cool = estimate_thermal(0.5, 25.0, default_module_model().thermal);
   EXPECT_NEAR(cool.steady_C, 25.0 + 0.5 * 58.0, 1e-9);
   EXPECT_FALSE(cool.time_to_warning_s.has_value());

@@ -42,7 +42,7 @@ TEST(Sweep, GridOrderLoadsOutermost) {
   EXPECT_EQ(g[0].setting->speed_dps, 1000.0);
 }
 
-TEST(Sweep, RefusesBadAxes_Manual6_2) {
+TEST(Sweep, RefusesBadAxes_6_2) {
   SweepRequest rq = small_grid();
   rq.loads_gcm2 = {};
   EXPECT_THROW(sweep_requests(rq), SizingInputError);

@@ -17,7 +17,7 @@ double temperature_after(double loss_W, double ambient_C, double t_s) {
   return th.sensor_C();
 }
 
-TEST(ThermalEstimate, TripFollowsWarningWhenTheSteadyStateIsAbove75_Manual7_2) {
+TEST(ThermalEstimate, TripFollowsWarningWhenTheSteadyStateIsAbove75_7_2) {
   const ThermalEstimate e = estimate_thermal(1.2, 25.0, default_module_model().thermal); // steady 25 + 1.2 x 58 K/W = 94.6 degC
   EXPECT_NEAR(e.steady_C, 25.0 + 1.2 * 58.0, 1e-9);
   ASSERT_TRUE(e.time_to_warning_s);

@@ -24,7 +24,7 @@ std::vector<double> upward_crossings(const std::vector<double>& x, double dt_s) 
   return t;
 }
 
-TEST(DriveTrain, TwoMassesMakeUpJIntern_Manual3_5_4) {
+TEST(DriveTrain, TwoMassesMakeUpJIntern_3_5_4) {
   Plant plant(PlantConfig{});
   EXPECT_NEAR(plant.rotor_inertia_kgm2() + plant.flange_inertia_kgm2(), kInternalInertia_kgm2, 1e-11);
   EXPECT_GT(plant.stiffness_Nm_per_rad(), 0.0);

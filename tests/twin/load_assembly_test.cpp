@@ -75,7 +75,7 @@ TEST(LoadAssembly, StlCubeAsciiAndBinaryAt50mm) {
   EXPECT_NEAR(f.mass_kg, 0.0216, 1e-6);
 }
 
-TEST(LoadAssembly, MeshKeepsTheFilesOwnOrigin_ATwin39) {
+TEST(LoadAssembly, MeshKeepsTheFilesOwnOrigin_A_TWIN_39) {
   // A CAD export whose cube sits at x = 50 mm, z = 10 mm in the file's own
   // coordinates: at_m [0, 0, 0] keeps it there (MuJoCo re-centres meshes
   // internally; the twin's figures must not).
@@ -99,7 +99,7 @@ TEST(LoadAssembly, UserMjcfNamedPlateAndFlangeLoadsAloneAndTwice) {
   EXPECT_NEAR(gcm2(AssemblyLoad{{part(MjcfLoad{file}), part(MjcfLoad{file}, {0, 0, 0.02})}, ""}), kgm2_to_gcm2(2 * one), 1e-6);
 }
 
-TEST(LoadAssembly, LimitHasARelativeTolerance_Manual6_2_Index64_4) {
+TEST(LoadAssembly, LimitHasARelativeTolerance_6_2_64_4) {
   EXPECT_EQ(refusal(ArmLoad{0.15, 0.1, 0}), "(accepted)"); // 15000 computes as 15000.00001
   EXPECT_EQ(refusal(AssemblyLoad{{part(PointPart{0.15}, {0.1, 0, 0.01})}, ""}), "(accepted)");
   const std::string msg = refusal(AssemblyLoad{{part(PointPart{0.2}, {0.1, 0, 0.01}), part(DiskLoad{0.1, 0.05, 0.01})}, "l.yaml:2:3"});

@@ -26,7 +26,7 @@ std::string refusal(const LoadSpec& load) {
 
 const std::string kData = std::string(SREH_SOURCE_DIR) + "/tests/twin/data/";
 
-TEST(LoadBuilder, ModuleAloneHasJIntern_Manual3_5_4) {
+TEST(LoadBuilder, ModuleAloneHasJIntern_3_5_4) {
   // A-TWIN-4: rotor J_m (armature of joint "rotor") + flange J_f = J_intern.
   BuiltModel built = build_model(NoLoad{}, {}, 1e-4);
   const int rotor = mj_name2id(built.model.get(), mjOBJ_JOINT, "rotor");
@@ -55,7 +55,7 @@ TEST(LoadBuilder, ArmIsPointMassPlusRodAboutItsEnd) {
   EXPECT_NEAR(load_gcm2(ArmLoad{0.05, 0.15, 0.0}), kgm2_to_gcm2(0.05 * 0.15 * 0.15), 1e-4);
 }
 
-TEST(LoadBuilder, GivenInertiaIsReproduced_Manual3_5_6) {
+TEST(LoadBuilder, GivenInertiaIsReproduced_3_5_6) {
   EXPECT_NEAR(load_gcm2(InertiaLoad{5000}), 5000, 1e-6);
   EXPECT_NEAR(load_gcm2(InertiaLoad{15000}), 15000, 1e-6); // the limit itself is accepted
   EXPECT_LT(load_gcm2(InertiaLoad{0}), 1e-4);
@@ -80,7 +80,7 @@ TEST(LoadBuilder, RelativeLoadPathResolvesInTheSourceTree) {
   EXPECT_GT(load_gcm2(MjcfLoad{"models/loads/gripper.xml"}), 100.0);
 }
 
-TEST(LoadBuilder, RefusesLoadAboveModuleLimit_Manual6_2_Index64_4) {
+TEST(LoadBuilder, RefusesLoadAboveModuleLimit_6_2_64_4) {
   const std::string msg = refusal(InertiaLoad{20000});
   EXPECT_NE(msg.find("20000"), std::string::npos) << msg;
   EXPECT_NE(msg.find("15000"), std::string::npos) << msg;

@@ -38,7 +38,7 @@ TEST(Plant, ModelLoadsWithNamedElements) {
 }
 
 // Architecture "Units and encodings": 2^19 counts per revolution, multiturn.
-TEST(Plant, EncoderQuantisesTo2Pow19PerRevolution_Manual6_2) {
+TEST(Plant, EncoderQuantisesTo2Pow19PerRevolution_6_2) {
   Plant plant(PlantConfig{});
   const double angles[] = {0.0, 1e-6, 0.5 * 2 * kPi / 524288.0 * 0.999, 1.2345, -0.75, 3 * 2 * kPi + 0.1, -5 * 2 * kPi - 2.0};
   for (double q : angles) {
@@ -163,7 +163,7 @@ TEST(Plant, RendererHooksSetLedColourAndGhostAngle) {
   EXPECT_LT(plant.data()->geom_xpos[3 * ghost_tip + 1], -0.04);
 }
 
-TEST(Plant, FlangeMarkTurnsClockwiseSeenFromAbove_Manual4_2) {
+TEST(Plant, FlangeMarkTurnsClockwiseSeenFromAbove_4_2) {
   Plant plant(PlantConfig{});
   set_angle(plant, kPi / 2);
   const int mark = mj_name2id(plant.model(), mjOBJ_GEOM, "mark");

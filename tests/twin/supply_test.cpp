@@ -48,7 +48,7 @@ TEST(Supply, RegenerationChargesTheCapacitorAboveTheSource) {
 
 // Braking a large inertia without a chopper over-voltages the bus (manual 7.2,
 // error 114.4.2 advice): the plant feeds motor power into the supply.
-TEST(Supply, BrakingLargeInertiaRaisesBusVoltage_Manual7_2) {
+TEST(Supply, BrakingLargeInertiaRaisesBusVoltage_7_2) {
   PlantConfig c;
   c.load = InertiaLoad{15000};
   c.supply = SupplySpec{24.0, 0.5, 1e-3};

@@ -71,7 +71,7 @@ TEST(TraceRow, LastRowIsTheSameWhetherTheTraceIsKeptOrNot) {
   EXPECT_EQ(csv_line(b.last_row()), csv_line(a.trace().back()));
 }
 
-TEST(TraceRow, LedBandIsOffWhileUnpowered_Manual3_1) {
+TEST(TraceRow, LedBandIsOffWhileUnpowered_3_1) {
   Twin twin(TwinConfig{});
   start_move(twin);
   twin.run_cycle();

@@ -12,7 +12,7 @@
 namespace sreh {
 namespace {
 
-TEST(TwinConformance, MasterCycleChangesTimeStepAndRefusesBadValues_Manual1_A_LINK_2) {
+TEST(TwinConformance, MasterCycleChangesTimeStepAndRefusesBadValues_1_A_LINK_2) {
   Twin twin(TwinConfig{});
   twin.run_cycle();
   EXPECT_NEAR(twin.time_s(), 0.002, 1e-12);
@@ -26,7 +26,7 @@ TEST(TwinConformance, MasterCycleChangesTimeStepAndRefusesBadValues_Manual1_A_LI
   EXPECT_EQ(twin.cycles(), 2u);
 }
 
-TEST(TwinConformance, TurnedWhileOffReadsTheFourRevolutionRule_Manual4_1) {
+TEST(TwinConformance, TurnedWhileOffReadsTheFourRevolutionRule_4_1) {
   Twin twin(TwinConfig{});
   twin.run_cycle();
   twin.power_off_for(0.5, 1080.0);
@@ -38,7 +38,7 @@ TEST(TwinConformance, TurnedWhileOffReadsTheFourRevolutionRule_Manual4_1) {
   EXPECT_NEAR(twin.time_s(), 0.002 + 0.5 + 0.006, 1e-9);
 }
 
-TEST(TwinConformance, TurnIsSpreadOverTheOffTime_Manual4_1) {
+TEST(TwinConformance, TurnIsSpreadOverTheOffTime_4_1) {
   Twin twin(TwinConfig{});
   twin.power_off();
   twin.turn_flange(90.0, 0.1); // 50 cycles
@@ -82,7 +82,7 @@ TEST(TwinConformance, AmbientChangeHeatsTheModule) {
   EXPECT_LT(twin.telemetry().temperature_C, 60.0 + 1e-9);
 }
 
-TEST(TwinConformance, FirmwareTransferTakesItsWireTime_Manual9_A_FW_5) {
+TEST(TwinConformance, FirmwareTransferTakesItsWireTime_9_A_FW_5) {
   EXPECT_EQ(isdu_write_cycles(232), 120u);
   EXPECT_EQ(isdu_write_cycles(1), 5u);
   // A 256 KiB image at the 2 ms minimum cycle: "several minutes" (manual 9).

@@ -10,6 +10,7 @@
 #include "device_logic/units.hpp"
 #include "twin/plant.hpp"
 #include "twin/twin.hpp"
+#include "twin/twin_snapshot.hpp"
 
 namespace sreh {
 namespace {

@@ -59,7 +59,7 @@ TEST(Twin, ReportsActualLoadInertia) {
   EXPECT_NEAR(twin.load_inertia_gcm2(), 9600.0, 1e-6);
 }
 
-TEST(Twin, RefusesLoadBeyondModuleLimit_Manual6_2) {
+TEST(Twin, RefusesLoadBeyondModuleLimit_6_2) {
   EXPECT_THROW({ Twin t(config_with(InertiaLoad{20000})); }, std::invalid_argument);
 }
 
@@ -78,7 +78,7 @@ TEST(Twin, ClocksAreIntegerCycles) {
   EXPECT_EQ(twin.trace().size(), 500u);
 }
 
-TEST(Twin, NinetyDegreeMoveCompletes_Manual3_5_2) {
+TEST(Twin, NinetyDegreeMoveCompletes_3_5_2) {
   Twin twin(config_2000());
   write_u16(twin, 65, 4, 2000); // parameter set 1: configured load = actual load
   switch_on_and_move(twin, 90.0);
@@ -122,7 +122,7 @@ TEST(Twin, SameRunTwiceGivesIdenticalTraceBytes) {
   EXPECT_NE(a.find("Done"), std::string::npos);
 }
 
-TEST(Twin, HardStopCausesTrackingError_Manual7_2_114_5) {
+TEST(Twin, HardStopCausesTrackingError_7_2_114_5) {
   TwinConfig c = config_2000();
   c.hard_stops = {HardStop{45.0}};
   Twin twin(c);
@@ -139,7 +139,7 @@ TEST(Twin, HardStopCausesTrackingError_Manual7_2_114_5) {
   EXPECT_FALSE(twin.moves()[0].positioning_s.has_value());
 }
 
-TEST(Twin, LinkDownWhileMotorOnIsAnError_Manual5) {
+TEST(Twin, LinkDownWhileMotorOnIsAnError_5) {
   Twin twin(TwinConfig{});
   ProcessDataOut pd;
   pd.motor_on = true;
@@ -152,7 +152,7 @@ TEST(Twin, LinkDownWhileMotorOnIsAnError_Manual5) {
   EXPECT_NE(twin.telemetry().error_code & 0x04, 0); // bit 2: communication
 }
 
-TEST(Twin, PowerCycleKeepsAbsolutePosition_Manual4_1) {
+TEST(Twin, PowerCycleKeepsAbsolutePosition_4_1) {
   Twin twin(config_2000());
   write_u16(twin, 65, 4, 2000);
   switch_on_and_move(twin, 90.0);
@@ -179,7 +179,7 @@ TEST(Twin, ExternalTorqueIsResistedWhileHolding) {
 
 // A-TWIN-30: a blocked flange stays where it is, whatever the motor does;
 // the device's own monitor then reports the tracking error (manual 7.2 114.5).
-TEST(Twin, BlockedFlangeHoldsAndGivesTrackingError_Manual7_2_114_5) {
+TEST(Twin, BlockedFlangeHoldsAndGivesTrackingError_7_2_114_5) {
   Twin twin(config_2000());
   write_u16(twin, 65, 4, 2000);
   switch_on_and_move(twin, 120.0);
@@ -281,7 +281,7 @@ TwinConfig heavy_config(double time_scale) {
 // temperature warning (manual 2.4 warning bit 7, 115.1) and then the
 // temperature error (error bit 5, 114.3) within minutes of thermal time.
 // time_scale 20: 30 s simulated = 10 min thermal.
-TEST(Twin, HeavyFastCyclingOverheats_Manual7_2_114_3) {
+TEST(Twin, HeavyFastCyclingOverheats_7_2_114_3) {
   Twin twin(heavy_config(20.0));
   const uint8_t load[2] = {static_cast<uint8_t>(15000 >> 8), static_cast<uint8_t>(15000 & 0xFF)};
   ASSERT_TRUE(twin.isdu_write(65, 4, load).ok());

@@ -1,3 +1,6 @@
+// The whole Device answering what its monitors see (errors, warnings, what
+// the state machine does with them); each monitor alone is in
+// monitor_steps_test.cpp.
 // Monitors: motor voltage (6.2 index 85, 7.2 114.4, 7.3 115.2), temperature
 // (7.2 114.3, 7.3 115.1), tracking error (6.2 index 87, 7.2 114.5), settling
 // (3.5.7, 3.5.8, 7.2 114.8, 7.3 115.3), connection loss and invalid process
@@ -47,7 +50,7 @@ TEST(Voltage, OutOfRangeWithMotorOffIsSelfClearingWarning_7_3_115_2) {
   EXPECT_EQ(r.read_u(115, 2), 0);
 }
 
-TEST(Voltage, ConfiguredRangeIsUsed_6_2_index85) {
+TEST(Voltage, ConfiguredRangeIsUsed_6_2_85) {
   Rig r;
   ASSERT_TRUE(r.write_u(85, 1, 23000).ok());
   r.switch_on();
@@ -102,7 +105,7 @@ TEST(TrackingError, CorrectLoadConfigurationTracks_3_5_6) {
   EXPECT_EQ(r.in.error_code, 0);
 }
 
-TEST(TrackingError, MonitoringCanBeDisabled_6_2_index87) {
+TEST(TrackingError, MonitoringCanBeDisabled_6_2_87) {
   Rig r;
   ASSERT_TRUE(r.write_u(87, 2, 0).ok());
   r.switch_on();

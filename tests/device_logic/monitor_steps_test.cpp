@@ -1,5 +1,6 @@
 // The Device's monitors as values (device_monitors.hpp): each one's step
 // function alone, with the timing the manual and ASSUMPTIONS.md give.
+// The Device answering them is in monitored_faults_test.cpp.
 #include <gtest/gtest.h>
 
 #include "device_logic/device_monitors.hpp"
@@ -54,7 +55,7 @@ TEST(TemperatureMonitorAlone, WarningHysteresisAndError_7_2_7_3_A_MON_2) {
   EXPECT_TRUE(TemperatureMonitor::step(75.0, true).over_temperature);
 }
 
-TEST(TrackingMonitorAlone, StepPeakAndLimit_6_2_index87) {
+TEST(TrackingMonitorAlone, StepPeakAndLimit_6_2_87) {
   TrackingMonitor t;
   EXPECT_FALSE(t.step(0.5, 1.0, true));
   EXPECT_FALSE(t.step(1.0, 1.0, true)); // at the limit: not beyond
