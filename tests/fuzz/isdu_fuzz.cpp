@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "device_logic/device.hpp"
+#include "device_logic/device_snapshot.hpp"
 #include "twin/module_model.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
