@@ -15,9 +15,19 @@ if ! command -v dask > /dev/null || ! /usr/bin/python3 -c 'import distributed' 2
 fi
 dir=$(mktemp -d)
 pids=()
+# Workers first, then the scheduler (a worker whose scheduler is gone
+# retries its connection instead of exiting); what has not exited 10 s
+# after SIGTERM gets SIGKILL, so a slow shutdown never hangs the test.
 stop() {
-  local pid
-  for pid in "${pids[@]}"; do kill -TERM "$pid" 2> /dev/null || true; done
+  local i pid alive
+  for ((i = ${#pids[@]} - 1; i >= 0; i--)); do kill -TERM "${pids[i]}" 2> /dev/null || true; done
+  for _ in $(seq 100); do
+    alive=0
+    for pid in "${pids[@]}"; do kill -0 "$pid" 2> /dev/null && alive=1; done
+    [ "$alive" -eq 0 ] && break
+    sleep 0.1
+  done
+  for pid in "${pids[@]}"; do kill -KILL "$pid" 2> /dev/null || true; done
   for pid in "${pids[@]}"; do wait "$pid" 2> /dev/null || true; done
   rm -rf "$dir"
 }
