@@ -35,8 +35,8 @@ constexpr std::array kResolutions{
     Resolution{"Hz", 3},
     Resolution{"gcm2", 3},
     Resolution{"kgm2", 10}, // = 1e-3 g cm^2
-    Resolution{"min", 3},   // per_min: cycles per minute
 };
+constexpr int kPerMinuteDecimals = 3; // `cycles_per_min`: a rate, not a time in minutes
 
 constexpr std::array<std::string_view, 3> kQualifiers{"_range", "_lo", "_hi"};
 
@@ -57,6 +57,7 @@ double parse(const char* first, const char* last, double fallback) {
 
 int figure_decimals(std::string_view name) {
   name = strip_qualifier(name);
+  if (name.ends_with("_per_min")) return kPerMinuteDecimals;
   const std::size_t cut = name.rfind('_');
   if (cut == std::string_view::npos) return -1;
   const std::string_view unit = name.substr(cut + 1);

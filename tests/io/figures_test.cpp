@@ -22,6 +22,8 @@ TEST(Figures, TheUnitSuffixChoosesTheResolution) {
   EXPECT_EQ(figure_decimals("steady_temperature_C"), 4);
   EXPECT_EQ(figure_decimals("settling_s_range"), 6); // a qualifier is looked through
   EXPECT_EQ(figure_decimals("positioning_s_hi"), 6);
+  EXPECT_EQ(figure_decimals("cycles_per_min"), 3);
+  EXPECT_EQ(figure_decimals("torque_min"), -1); // "min" alone is not a unit here
   EXPECT_EQ(figure_decimals("min_torque_headroom"), -1); // no unit: 9 significant digits
   EXPECT_EQ(figure_decimals("value"), -1);
 }
