@@ -19,6 +19,7 @@
 #include "calibration/report.hpp"
 #include "io/atomic_file.hpp"
 #include "io/cpus.hpp"
+#include "io/output_path.hpp"
 #include "sizing/sweep_options.hpp"
 
 namespace sreh::py {
@@ -206,6 +207,17 @@ void bind_tools(pyb::module_& m) {
         r.fit = std::move(fit);
         r.options.threads = threads.value_or(io::usable_cpus());
         r.options.max_iterations = max_iterations;
+        try { // the output rule before the fit, as the CLI (issue 12)
+          std::vector<std::string> inputs = r.logs;
+          for (const std::string* f : {&r.load_file, &r.setup, &r.model}) {
+            if (!f->empty()) inputs.push_back(*f);
+          }
+          io::check_outputs({{"out", out ? out->string() : "", io::OutputKind::File},
+                             {"report", report ? report->string() : "", io::OutputKind::Folder}},
+                            inputs);
+        } catch (const io::PathError& e) {
+          throw input_error(e.what());
+        }
         CalibrateOutcome outcome;
         try {
           pyb::gil_scoped_release release;

@@ -49,6 +49,14 @@ def test_calibrate_bad_log_names_file_and_line(tmp_path):
         sreh_twin.calibrate(bad, load_gcm2=0, out=tmp_path / "fit.yaml")
 
 
+def test_calibrate_refuses_a_bad_output_before_the_fit(short_log, tmp_path):
+    (tmp_path / "a_file").write_text("x")
+    with pytest.raises(sreh_twin.InputError, match=r"report"):
+        sreh_twin.calibrate(short_log, load_gcm2=0, report=tmp_path / "a_file")
+    with pytest.raises(sreh_twin.InputError, match=r"out"):
+        sreh_twin.calibrate(short_log, load_gcm2=0, out=short_log)  # would overwrite its own input
+
+
 def test_size_uncertainty_brackets_the_nominal_and_repeats():
     options = dict(angle_deg=90, load_gcm2=2000, speed_dps=2000, tolerance_deg=0.0103, wait_ms=0, uncertainty=True,
                    samples=4, seed=3)
