@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include "calibration_rig.hpp"
 
@@ -49,7 +50,7 @@ TEST(CalibrationReport, ShowsEachLogWithStartAndFittedCard) {
   fit.constants = {{"coulomb_friction", "N m", 0.0054, 0.004, 0.0050, 0.0058, true, ""},
                    {"viscous_friction", "N m s/rad", 1e-5, 1e-5, 0.0, 3e-5, false, "interval wider than +-25 %"}};
   fit.correlation = {{1.0, 0.95}, {0.95, 1.0}};
-  const auto dir = std::filesystem::temp_directory_path() / "sreh_calibration_report_test";
+  const auto dir = std::filesystem::temp_directory_path() / ("sreh_calibration_report_test_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   const std::filesystem::path index = write_calibration_report(dir, {c}, default_model_card(), fit);
   const std::string html = read_all(index);

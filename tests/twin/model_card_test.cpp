@@ -7,6 +7,8 @@
 #include <fstream>
 #include <string>
 
+#include <unistd.h>
+
 #include "device_logic/units.hpp"
 #include "twin/model_card.hpp"
 #include "twin/twin.hpp"
@@ -17,7 +19,7 @@ namespace {
 struct TempFile {
   explicit TempFile(const std::string& text) {
     path = (std::filesystem::temp_directory_path() /
-            ("sreh_model_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
+            ("sreh_model_" + std::to_string(::getpid()) + "_" +
              std::to_string(counter++) + ".yaml"))
                .string();
     std::ofstream(path) << text;
