@@ -88,7 +88,7 @@ void BM_VideoFrames(benchmark::State& state) {
       sreh::FrameInfo f;
       f.row.t_s = k / 30.0 / 20.0;
       f.step = "4 wait_until";
-      f.row.pd_out = sreh::encode(sreh::ProcessDataOut{.target_position = 49152, .parameter_set = 1}); // 270 deg (2^16 counts/rev)
+      f.row.pd_out = sreh::encode(sreh::ProcessDataOut{.target_raw = 49152, .parameter_set = 1}); // 270 deg (2^16 counts/rev)
       f.row.state = sreh::State::Busy;
       f.row.setpoint_deg = 3.0 * k;
       f.row.position_deg = 2.9 * k;

@@ -54,7 +54,7 @@ struct Plc {
             ProcessDataOut out = port.twin.pd_out();
             const ProcessDataIn in = port.twin.pd_in();
             if (in.ready && !out.move) {
-              out.target_position = out.target_position == 0 ? static_cast<int32_t>(deg_to_wire_counts(90)) : 0;
+              out.target_raw = out.target_raw == 0 ? static_cast<int32_t>(deg_to_wire_counts(90)) : 0;
               out.move = true;
             } else if (in.done && out.move) {
               out.move = false;

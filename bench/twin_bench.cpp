@@ -54,7 +54,7 @@ void BM_PlantStep(benchmark::State& state) {
 void plc_cycle(Twin& twin, ProcessDataOut& pd, bool& at_90) {
   const ProcessDataIn in = twin.pd_in();
   if (in.ready && !pd.move) {
-    pd.target_position = at_90 ? 0 : static_cast<int32_t>(deg_to_wire_counts(90));
+    pd.target_raw = at_90 ? 0 : static_cast<int32_t>(deg_to_wire_counts(90));
     pd.move = true;
     at_90 = !at_90;
   } else if (in.done && pd.move) {
@@ -97,7 +97,7 @@ void BM_TwinRunCycles(benchmark::State& state) {
   pd.motor_on = true;
   pd.parameter_set = 1;
   pd.move = true;
-  pd.target_position = static_cast<int32_t>(deg_to_wire_counts(90));
+  pd.target_raw = static_cast<int32_t>(deg_to_wire_counts(90));
   twin.set_pd_out(pd);
   for (auto _ : state) {
     twin.run_cycle();

@@ -25,7 +25,7 @@ Twin& mid_move_twin() {
     t->set_pd_out(pd);
     for (int i = 0; i < 20; ++i) t->run_cycle();
     pd.move = true;
-    pd.target_position = static_cast<int32_t>(deg_to_wire_counts(90));
+    pd.target_raw = static_cast<int32_t>(deg_to_wire_counts(90));
     t->set_pd_out(pd);
     for (int i = 0; i < 30; ++i) t->run_cycle();
     return t;

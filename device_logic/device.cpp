@@ -95,14 +95,14 @@ std::optional<ErrorBit> Device::Impl::prepare_move(const ProcessDataOut& cmd, ui
   const int64_t actual = user_now();
   int64_t target_user = 0;
   if (cmd.shortest_path) {
-    target_user = shortest_path_target(actual, cmd.target_position);
+    target_user = shortest_path_target(actual, cmd.target_raw);
   } else if (cmd.relative) {
     // From the last target, except on the first move after switching on or
     // after a positioning error: then from the actual position.
     const int64_t from = last_target_phys ? user_position(*last_target_phys, dir(), origin) : actual;
-    target_user = from + int64_t{cmd.target_position} * kInternalPerWireCount;
+    target_user = from + int64_t{cmd.target_raw} * kInternalPerWireCount;
   } else {
-    target_user = int64_t{cmd.target_position} * kInternalPerWireCount;
+    target_user = int64_t{cmd.target_raw} * kInternalPerWireCount;
   }
   // Manual 6.2 index 81: refused whatever the mode, before any motion.
   if (store.raw(param::kPositionLimitActive) == 1) {
@@ -193,7 +193,7 @@ void Device::Impl::enter(State to, Event via) {
 
 ProcessDataIn Device::Impl::pd_in() const {
   ProcessDataIn in;
-  in.actual_position = wrap_wire_position(user_to_wire(user_now()));
+  in.position_raw = wrap_wire_position(user_to_wire(user_now()));
   if (boot_mode) {
     in.motor_off = true;
     return in;

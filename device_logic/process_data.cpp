@@ -25,7 +25,7 @@ void check_length(std::size_t got, std::size_t want, const char* what) {
 // Byte 0 carries bits 47..40 (big-endian), byte 5 bits 7..0 (manual 2.2).
 PdOutFrame encode(const ProcessDataOut& pd) {
   PdOutFrame f{};
-  put_be32(&f[0], pd.target_position);
+  put_be32(&f[0], pd.target_raw);
   f[4] = pd.parameter_set;
   f[5] = static_cast<uint8_t>(flag(pd.shortest_path, 6) | flag(pd.relative, 5) | flag(pd.set_origin, 4) |
                               flag(pd.reset_error, 3) | flag(pd.stop, 2) | flag(pd.move, 1) |
@@ -35,7 +35,7 @@ PdOutFrame encode(const ProcessDataOut& pd) {
 
 ProcessDataOut decode_out(const PdOutFrame& f) {
   ProcessDataOut pd;
-  pd.target_position = get_be32(&f[0]);
+  pd.target_raw = get_be32(&f[0]);
   pd.parameter_set = f[4];
   pd.shortest_path = bit(f[5], 6);
   pd.relative = bit(f[5], 5);
@@ -50,7 +50,7 @@ ProcessDataOut decode_out(const PdOutFrame& f) {
 // Byte 0 carries bits 55..48, byte 6 bits 7..0 (manual 2.3).
 PdInFrame encode(const ProcessDataIn& pd) {
   PdInFrame f{};
-  put_be32(&f[0], pd.actual_position);
+  put_be32(&f[0], pd.position_raw);
   f[4] = pd.error_code;
   f[5] = pd.warning_code;
   f[6] = static_cast<uint8_t>(flag(pd.error, 5) | flag(pd.warning, 4) | flag(pd.done, 3) | flag(pd.busy, 2) |
@@ -60,7 +60,7 @@ PdInFrame encode(const ProcessDataIn& pd) {
 
 ProcessDataIn decode_in(const PdInFrame& f) {
   ProcessDataIn pd;
-  pd.actual_position = get_be32(&f[0]);
+  pd.position_raw = get_be32(&f[0]);
   pd.error_code = f[4];
   pd.warning_code = f[5];
   pd.error = bit(f[6], 5);

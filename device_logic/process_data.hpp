@@ -15,7 +15,7 @@ using PdInFrame = std::array<uint8_t, kPdInBytes>;
 
 // Outgoing process data: PLC -> module (manual 2.2).
 struct ProcessDataOut {
-  int32_t target_position = 0; // bits 47..16, 2^16 counts per revolution
+  int32_t target_raw = 0;      // bits 47..16, 2^16 counts per revolution
   uint8_t parameter_set = 0;   // bits 15..8, valid 0..7
   bool shortest_path = false;  // bit 6
   bool relative = false;       // bit 5
@@ -29,7 +29,7 @@ struct ProcessDataOut {
 
 // Incoming process data: module -> PLC (manual 2.3).
 struct ProcessDataIn {
-  int32_t actual_position = 0; // bits 55..24
+  int32_t position_raw = 0;    // bits 55..24
   uint8_t error_code = 0;      // bits 23..16, bit field (manual 2.4)
   uint8_t warning_code = 0;    // bits 15..8, bit field (manual 2.4)
   bool error = false;          // bit 5

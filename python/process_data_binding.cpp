@@ -38,7 +38,7 @@ pyb::bytes pd_out_bytes(double target_deg, std::optional<int64_t> target_raw, st
   }
   ProcessDataOut pd;
   // Manual 2.5: the int32 carries the low 32 bits of the position in 2^16 counts/rev.
-  pd.target_position = wrap_wire_position(target_raw ? *target_raw : deg_to_wire_counts(target_deg));
+  pd.target_raw = wrap_wire_position(target_raw ? *target_raw : deg_to_wire_counts(target_deg));
   pd.parameter_set = static_cast<uint8_t>(parameter_set);
   pd.shortest_path = shortest_path;
   pd.relative = relative;

@@ -35,7 +35,7 @@ std::vector<std::pair<std::string, std::string>> overlay_lines(const FrameInfo& 
   lines.emplace_back("t", fmt::format("{:.4f} s", r.t_s));
   if (!f.step.empty()) lines.emplace_back("", "step " + f.step);
   lines.emplace_back("state", std::string(state_name(r.state)));
-  lines.emplace_back("target", fmt::format("{:.2f} deg", wire_counts_to_deg(out.target_position)));
+  lines.emplace_back("target", fmt::format("{:.2f} deg", wire_counts_to_deg(out.target_raw)));
   lines.emplace_back("set", fmt::format("{}", out.parameter_set));
   lines.emplace_back("setpoint", fmt::format("{:.2f} deg", r.setpoint_deg));
   lines.emplace_back("actual", fmt::format("{:.2f} deg", r.position_deg));

@@ -79,7 +79,7 @@ PdOutUpdate read_pd_out(const PdFieldSource& in, const std::string& what) {
 }
 
 void apply_pd_out(const PdOutUpdate& u, ProcessDataOut& out) {
-  if (u.target_raw) out.target_position = *u.target_raw;
+  if (u.target_raw) out.target_raw = *u.target_raw;
   if (u.parameter_set) out.parameter_set = *u.parameter_set;
   for (const Bit& b : kBits) {
     if (u.*b.update) out.*b.out = *(u.*b.update);

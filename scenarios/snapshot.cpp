@@ -25,7 +25,7 @@ Snapshot take_snapshot(const Twin& twin) {
   s.in = twin.pd_in();
   s.telemetry = twin.telemetry();
   s.state = state_from_status_bits(s.in, s.telemetry.state);
-  s.position_deg = wire_counts_to_deg(s.in.actual_position);
+  s.position_deg = wire_counts_to_deg(s.in.position_raw);
   s.iolink_led = twin.iolink_led();
   return s;
 }
@@ -80,7 +80,7 @@ Evaluation evaluate(const Conditions& c, const Snapshot& s, const Variables& var
   Evaluator ev(vars);
   ev.one_of("state", c.state, s.state, state_name);
   ev.number("position_deg", c.position_deg, s.position_deg, 4);
-  ev.number("position_raw", c.position_raw, static_cast<double>(s.in.actual_position), 0);
+  ev.number("position_raw", c.position_raw, static_cast<double>(s.in.position_raw), 0);
   ev.number("error_code", c.error_code, s.in.error_code, 0);
   ev.number("warning_code", c.warning_code, s.in.warning_code, 0);
   ev.flag("error", c.error, s.in.error);
@@ -96,7 +96,7 @@ Evaluation evaluate(const Conditions& c, const Snapshot& s, const Variables& var
 
 std::optional<double> quantity(std::string_view key, const Snapshot& s) {
   if (key == "position_deg") return s.position_deg;
-  if (key == "position_raw") return static_cast<double>(s.in.actual_position);
+  if (key == "position_raw") return static_cast<double>(s.in.position_raw);
   if (key == "error_code") return s.in.error_code;
   if (key == "warning_code") return s.in.warning_code;
   if (key == "temperature_C") return s.telemetry.temperature_C;

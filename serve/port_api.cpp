@@ -125,7 +125,7 @@ Json port_summary(int p, Hub::Port& port) {
               {"vendor", "Afag"},
               {"state", state_name(tel.state)},
               {"led", led_name(tel.led)},
-              {"position_deg", wire_counts_to_deg(in.actual_position)},
+              {"position_deg", wire_counts_to_deg(in.position_raw)},
               {"pd_in_valid", port.faults.link_up && port.twin.device().powered()},
               {"pd_out_valid", port.outputs_valid},
               {"time_s", port.twin.time_s()},

@@ -14,7 +14,7 @@ std::optional<std::string> PlcHandshake::switch_on(uint8_t set) {
 }
 
 PlcHandshake::MoveEnd PlcHandshake::move(int32_t target, bool relative, uint8_t set, int max_cycles) {
-  pd_.target_position = target;
+  pd_.target_raw = target;
   pd_.relative = relative;
   pd_.parameter_set = set;
   pd_.move = true;

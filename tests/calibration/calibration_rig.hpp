@@ -42,7 +42,7 @@ inline MasterLog record_log(Scenario scenario, const ModelCard& card, std::optio
     std::uniform_int_distribution<int> count(-1, 1);
     for (MasterLogRow& row : log.rows) {
       ProcessDataIn in = decode_in(row.pd_in);
-      in.actual_position += count(rng);
+      in.position_raw += count(rng);
       row.pd_in = encode(in);
     }
   }

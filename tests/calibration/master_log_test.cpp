@@ -31,9 +31,9 @@ TEST(MasterLog, WrittenRowsReadBack) {
   write_master_log_header(out);
   ProcessDataOut o;
   o.motor_on = true;
-  o.target_position = -65536;
+  o.target_raw = -65536;
   ProcessDataIn i;
-  i.actual_position = 12345;
+  i.position_raw = 12345;
   write_master_log_row(out, 0.002, encode(o), encode(i), std::nullopt);
   write_master_log_row(out, 0.004, encode(o), encode(i), 31.5);
   EXPECT_EQ(out.str(),

@@ -50,7 +50,7 @@ TEST(VolatileDiagnostics, TemperatureVoltageAndProcessDataImages_6_4) {
   Rig r;
   r.temperature_C = 36.5;
   r.supply_V = 23.456;
-  r.pd.target_position = 0x01020304;
+  r.pd.target_raw = 0x01020304;
   r.cycle();
   r.cycle();
   EXPECT_EQ(r.read_u(112, 0), 73);
@@ -308,7 +308,7 @@ TEST(Persistence, SameInputsGiveSameOutputsBitForBit) {
     Rig r;
     r.switch_on();
     r.move_to_deg(123.4);
-    return std::make_pair(r.angle_rad, r.in.actual_position);
+    return std::make_pair(r.angle_rad, r.in.position_raw);
   };
   EXPECT_EQ(run(), run());
 }

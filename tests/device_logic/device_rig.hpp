@@ -96,7 +96,7 @@ struct Rig {
   }
 
   State state() const { return state_of(in); }
-  double position_deg() const { return wire_counts_to_deg(in.actual_position); }
+  double position_deg() const { return wire_counts_to_deg(in.position_raw); }
 
   // Motor on and wait for Ready.
   void switch_on() {
@@ -107,7 +107,7 @@ struct Rig {
   // Sets target, parameter set and Move (the mode bits as they are); the
   // device sees them at the next cycle.
   void start_move(double deg, uint8_t set = 1) {
-    pd.target_position = static_cast<int32_t>(deg_to_wire_counts(deg));
+    pd.target_raw = static_cast<int32_t>(deg_to_wire_counts(deg));
     pd.parameter_set = set;
     pd.move = true;
   }

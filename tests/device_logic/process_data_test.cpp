@@ -22,8 +22,8 @@ TEST(ProcessDataOut, FieldBitPositions_2_2) {
       {with([](auto& p) { p.relative = true; }), {0, 0, 0, 0, 0, 0x20}},
       {with([](auto& p) { p.shortest_path = true; }), {0, 0, 0, 0, 0, 0x40}},
       {with([](auto& p) { p.parameter_set = 7; }), {0, 0, 0, 0, 7, 0}},
-      {with([](auto& p) { p.target_position = 0x12345678; }), {0x12, 0x34, 0x56, 0x78, 0, 0}}, // bits 47..16, big-endian
-      {with([](auto& p) { p.target_position = -1; }), {0xFF, 0xFF, 0xFF, 0xFF, 0, 0}},
+      {with([](auto& p) { p.target_raw = 0x12345678; }), {0x12, 0x34, 0x56, 0x78, 0, 0}}, // bits 47..16, big-endian
+      {with([](auto& p) { p.target_raw = -1; }), {0xFF, 0xFF, 0xFF, 0xFF, 0, 0}},
   };
   for (const auto& c : cases) {
     EXPECT_EQ(encode(c.pd), c.frame);
@@ -45,7 +45,7 @@ TEST(ProcessDataIn, FieldBitPositions_2_3) {
       {with([](auto& p) { p.error = true; }), {0, 0, 0, 0, 0, 0, 0x20}},
       {with([](auto& p) { p.warning_code = 0xA0; }), {0, 0, 0, 0, 0, 0xA0, 0}}, // bits 15..8
       {with([](auto& p) { p.error_code = 0x81; }), {0, 0, 0, 0, 0x81, 0, 0}},   // bits 23..16
-      {with([](auto& p) { p.actual_position = -65536; }), {0xFF, 0xFF, 0x00, 0x00, 0, 0, 0}}, // -360 deg
+      {with([](auto& p) { p.position_raw = -65536; }), {0xFF, 0xFF, 0x00, 0x00, 0, 0, 0}}, // -360 deg
   };
   for (const auto& c : cases) {
     EXPECT_EQ(encode(c.pd), c.frame);
@@ -97,7 +97,7 @@ uint64_t field_mask(const PdField& f) { return ((uint64_t{1} << f.bit_length) - 
 TEST(ProcessDataLayout, OutFieldsMatchTheCodec_2_2) {
   auto set_all = [](std::string_view name) {
     ProcessDataOut p;
-    if (name == "target_raw") p.target_position = -1;
+    if (name == "target_raw") p.target_raw = -1;
     if (name == "parameter_set") p.parameter_set = 0xFF;
     p.shortest_path = name == "shortest_path";
     p.relative = name == "relative";
@@ -119,7 +119,7 @@ TEST(ProcessDataLayout, OutFieldsMatchTheCodec_2_2) {
 TEST(ProcessDataLayout, InFieldsMatchTheCodec_2_3) {
   auto set_all = [](std::string_view name) {
     ProcessDataIn p;
-    if (name == "position_raw") p.actual_position = -1;
+    if (name == "position_raw") p.position_raw = -1;
     if (name == "error_code") p.error_code = 0xFF;
     if (name == "warning_code") p.warning_code = 0xFF;
     p.error = name == "error";
@@ -137,7 +137,7 @@ TEST(ProcessDataLayout, InFieldsMatchTheCodec_2_3) {
 // wrote comes back, the position sign-extended (manual 2.2, 2.3, 2.5).
 TEST(ProcessDataLayout, FieldValuesReadThroughTheTableAreTheCodecs_2_2_2_3) {
   ProcessDataOut out;
-  out.target_position = -123456;
+  out.target_raw = -123456;
   out.parameter_set = 5;
   out.relative = true;
   out.motor_on = true;
@@ -150,7 +150,7 @@ TEST(ProcessDataLayout, FieldValuesReadThroughTheTableAreTheCodecs_2_2_2_3) {
     EXPECT_EQ(pd_field_value(of, f), want) << f.name;
   }
   ProcessDataIn in;
-  in.actual_position = 2147483647;
+  in.position_raw = 2147483647;
   in.error_code = 0x90;
   in.done = true;
   const PdInFrame inf = encode(in);

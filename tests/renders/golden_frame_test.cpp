@@ -64,7 +64,7 @@ GoldenScene render_golden_scene() {
   f.row.t_s = 0.123;
   f.row.state = State::Busy;
   f.step = "5 wait_until";
-  f.row.pd_out = encode(ProcessDataOut{.target_position = 16384, .parameter_set = 1}); // 90 deg (2^16 counts/rev)
+  f.row.pd_out = encode(ProcessDataOut{.target_raw = 16384, .parameter_set = 1}); // 90 deg (2^16 counts/rev)
   f.row.position_deg = 35;
   f.row.setpoint_deg = 40;
   f.row.tracking_error_deg = 5;

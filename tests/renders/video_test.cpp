@@ -154,7 +154,7 @@ TEST(OverlayLines, ShowStepTargetSetAndCodesButNotTheTimeScale) {
   f.row.state = State::ErrorOn;
   f.row.error_code = 0x08;
   f.step = "4 wait_until";
-  f.row.pd_out = encode(ProcessDataOut{.target_position = 16384, .parameter_set = 2}); // 90 deg (2^16 counts/rev)
+  f.row.pd_out = encode(ProcessDataOut{.target_raw = 16384, .parameter_set = 2}); // 90 deg (2^16 counts/rev)
   const auto lines = overlay_lines(f);
   auto value = [&](const std::string& label) {
     for (const auto& [l, v] : lines)

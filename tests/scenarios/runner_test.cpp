@@ -29,7 +29,7 @@ TEST(ScenarioRunner, PdStepLastsOneCycleAndKeepsOtherFields) {
   o.on_cycle = [&](const Twin& twin) { last = twin.pd_out(); };
   const RunResult r = run("name: x\nsteps:\n  - pd: {target_deg: 90, parameter_set: 3}\n  - pd: {relative: 1}\n", o);
   EXPECT_EQ(r.cycles, 2u);
-  EXPECT_EQ(last.target_position, 16384);
+  EXPECT_EQ(last.target_raw, 16384);
   EXPECT_EQ(last.parameter_set, 3);
   EXPECT_TRUE(last.relative);
   EXPECT_FALSE(last.motor_on);

@@ -25,11 +25,11 @@ struct ModbusMap : ::testing::Test {
 
 TEST_F(ModbusMap, ProcessDataOutOctetsBigEndian_2_2) {
   write(kPdOut, {0x0000, 0x4000, 0x0101}); // target 90 deg, set 1, motor on
-  EXPECT_EQ(port.twin.pd_out().target_position, 16384);
+  EXPECT_EQ(port.twin.pd_out().target_raw, 16384);
   EXPECT_EQ(port.twin.pd_out().parameter_set, 1);
   EXPECT_TRUE(port.twin.pd_out().motor_on);
   write(kPdOut + 2, {0x0100}); // one register alone: the rest of the frame stays
-  EXPECT_EQ(port.twin.pd_out().target_position, 16384);
+  EXPECT_EQ(port.twin.pd_out().target_raw, 16384);
   EXPECT_FALSE(port.twin.pd_out().motor_on);
 }
 

@@ -141,7 +141,7 @@ TEST(Size, RecommendedSetRunsInTheTwinWithoutError) {
   for (int i = 0; i < 10; ++i) twin.run_cycle();
   ASSERT_TRUE(twin.pd_in().ready);
   for (double target : {180.0, 0.0}) {
-    pd.target_position = static_cast<int32_t>(deg_to_wire_counts(target));
+    pd.target_raw = static_cast<int32_t>(deg_to_wire_counts(target));
     pd.move = true;
     twin.set_pd_out(pd);
     int cycles = 0;

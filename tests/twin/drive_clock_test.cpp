@@ -37,7 +37,7 @@ void switch_on(Twin& twin, uint8_t set) {
 // Absolute move with set 1 (manual 3.2 handshake: Move until Done, then drop it).
 MoveRecord move_to(Twin& twin, double target_deg) {
   ProcessDataOut pd = twin.pd_out();
-  pd.target_position = static_cast<int32_t>(deg_to_wire_counts(target_deg));
+  pd.target_raw = static_cast<int32_t>(deg_to_wire_counts(target_deg));
   pd.parameter_set = 1;
   pd.move = true;
   twin.set_pd_out(pd);
@@ -69,7 +69,7 @@ void converged_move(double load_gcm2, double physics_dt_s, Figures& out) {
   ASSERT_TRUE(twin.isdu_write(65, 8, timeout_off).ok());
   switch_on(twin, 1);
   ProcessDataOut pd = twin.pd_out();
-  pd.target_position = static_cast<int32_t>(deg_to_wire_counts(90));
+  pd.target_raw = static_cast<int32_t>(deg_to_wire_counts(90));
   pd.move = true;
   twin.set_pd_out(pd);
   for (int i = 0; i < 300; ++i) twin.run_cycle(); // 0.6 s: travel, settling and a hold

@@ -42,7 +42,7 @@ TEST(FaultInjection, BlockedFlangeHoldsPositionAndTripsTrackingError_2_4) {
   twin.set_flange_blocked(true);
   EXPECT_TRUE(twin.flange_blocked());
   const double start_deg = twin.telemetry().position_deg;
-  pd.target_position = static_cast<int32_t>(deg_to_wire_counts(90));
+  pd.target_raw = static_cast<int32_t>(deg_to_wire_counts(90));
   pd.parameter_set = 1;
   pd.move = true;
   twin.set_pd_out(pd);
@@ -63,7 +63,7 @@ TEST(FaultInjection, SameMoveUnblockedCompletes) {
   Twin twin(config_2000());
   ProcessDataOut pd;
   motor_on(twin, pd);
-  pd.target_position = static_cast<int32_t>(deg_to_wire_counts(90));
+  pd.target_raw = static_cast<int32_t>(deg_to_wire_counts(90));
   pd.parameter_set = 1;
   pd.move = true;
   twin.set_pd_out(pd);
@@ -80,7 +80,7 @@ TEST(FaultInjection, FreedFlangeMovesAgain) {
   for (int i = 0; i < 50; ++i) twin.run_cycle();
   twin.set_flange_blocked(false);
   EXPECT_FALSE(twin.flange_blocked());
-  pd.target_position = static_cast<int32_t>(deg_to_wire_counts(90));
+  pd.target_raw = static_cast<int32_t>(deg_to_wire_counts(90));
   pd.parameter_set = 1;
   pd.move = true;
   twin.set_pd_out(pd);

@@ -76,7 +76,7 @@ TEST(ModelLean, ALeanTwinRunsBitForBitAsTheDrawnOne) {
     t->set_pd_out(pd);
     for (int i = 0; i < 5; ++i) t->run_cycle();
     pd.move = true;
-    pd.target_position = static_cast<int32_t>(deg_to_wire_counts(135));
+    pd.target_raw = static_cast<int32_t>(deg_to_wire_counts(135));
     t->set_pd_out(pd);
     for (int i = 0; i < 400; ++i) t->run_cycle();
   }

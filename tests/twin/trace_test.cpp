@@ -26,7 +26,7 @@ void start_move(Twin& twin) {
   twin.set_pd_out(pd);
   for (int i = 0; i < 50 && !twin.pd_in().ready; ++i) twin.run_cycle();
   ASSERT_TRUE(twin.pd_in().ready);
-  pd.target_position = static_cast<int32_t>(deg_to_wire_counts(90.0));
+  pd.target_raw = static_cast<int32_t>(deg_to_wire_counts(90.0));
   pd.parameter_set = 1;
   pd.move = true;
   twin.set_pd_out(pd);

@@ -34,7 +34,7 @@ TEST(TwinConformance, TurnedWhileOffReadsTheFourRevolutionRule_4_1) {
   EXPECT_EQ(twin.iolink_led(), IoLinkLedMode::Startup);
   for (int i = 0; i < 3; ++i) twin.run_cycle();
   EXPECT_EQ(twin.iolink_led(), IoLinkLedMode::Operate);
-  EXPECT_NEAR(wire_counts_to_deg(twin.pd_in().actual_position), -360.0, 0.01);
+  EXPECT_NEAR(wire_counts_to_deg(twin.pd_in().position_raw), -360.0, 0.01);
   EXPECT_NEAR(twin.time_s(), 0.002 + 0.5 + 0.006, 1e-9);
 }
 

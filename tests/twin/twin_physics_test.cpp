@@ -31,7 +31,7 @@ Outcome move(Twin& twin, double target_deg, double max_s) {
   twin.set_pd_out(pd);
   for (int i = 0; i < 50 && !twin.pd_in().ready; ++i) twin.run_cycle();
   EXPECT_TRUE(twin.pd_in().ready);
-  pd.target_position = static_cast<int32_t>(deg_to_wire_counts(target_deg));
+  pd.target_raw = static_cast<int32_t>(deg_to_wire_counts(target_deg));
   pd.parameter_set = 1;
   pd.move = true;
   twin.set_pd_out(pd);
@@ -42,7 +42,7 @@ Outcome move(Twin& twin, double target_deg, double max_s) {
     if (in.done || in.error) break;
   }
   const ProcessDataIn in = twin.pd_in();
-  return {in.done, in.error_code, wire_counts_to_deg(in.actual_position)};
+  return {in.done, in.error_code, wire_counts_to_deg(in.position_raw)};
 }
 
 TEST(TwinPhysics, ConfiguredLoadsCompleteAcrossLoadsAndAngles_3_5) {

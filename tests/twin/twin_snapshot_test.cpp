@@ -44,7 +44,7 @@ struct Bits {
 void set(Twin& t, bool motor_on, double target_deg, bool move) {
   ProcessDataOut pd;
   pd.motor_on = motor_on;
-  pd.target_position = static_cast<int32_t>(deg_to_wire_counts(target_deg));
+  pd.target_raw = static_cast<int32_t>(deg_to_wire_counts(target_deg));
   pd.parameter_set = 1;
   pd.move = move;
   t.set_pd_out(pd);

@@ -36,7 +36,7 @@ void switch_on_and_move(Twin& twin, double target_deg) {
   pd.motor_on = true;
   twin.set_pd_out(pd);
   ASSERT_GT(run_until(twin, [&] { return twin.pd_in().ready; }, 100), 0);
-  pd.target_position = static_cast<int32_t>(deg_to_wire_counts(target_deg));
+  pd.target_raw = static_cast<int32_t>(deg_to_wire_counts(target_deg));
   pd.parameter_set = 1;
   pd.move = true;
   twin.set_pd_out(pd);
@@ -90,7 +90,7 @@ TEST(Twin, NinetyDegreeMoveCompletes_3_5_2) {
   EXPECT_EQ(t.warning_code, 0);
   EXPECT_NEAR(rad_to_deg(twin.plant().angle_rad()), 90.0, 0.1); // clockwise = physical positive (manual 4.2)
   const ProcessDataIn in = twin.pd_in();
-  EXPECT_NEAR(wire_counts_to_deg(in.actual_position), 90.0, 0.1);
+  EXPECT_NEAR(wire_counts_to_deg(in.position_raw), 90.0, 0.1);
 
   ASSERT_EQ(twin.moves().size(), 1u);
   const MoveRecord& m = twin.moves()[0];
@@ -255,7 +255,7 @@ int cycle_moves(Twin& twin, double angle_deg, int dwell_cycles, int max_cycles, 
   for (int k = 0; k < max_cycles; ++k) {
     const ProcessDataIn in = twin.pd_in();
     if (in.ready && !pd.move && wait-- <= 0) {
-      pd.target_position = at_far_end ? 0 : static_cast<int32_t>(deg_to_wire_counts(angle_deg));
+      pd.target_raw = at_far_end ? 0 : static_cast<int32_t>(deg_to_wire_counts(angle_deg));
       pd.move = true;
       at_far_end = !at_far_end;
     } else if (in.done && pd.move) {

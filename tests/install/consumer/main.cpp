@@ -21,13 +21,13 @@ int main() {
   out.motor_on = true;
   twin.set_pd_out(out);
   for (int i = 0; i < 25; ++i) twin.run_cycle();
-  out.target_position = 16384; // 90 deg, manual 2.5
+  out.target_raw = 16384; // 90 deg, manual 2.5
   out.parameter_set = 1;
   out.move = true;
   twin.set_pd_out(out);
   for (int i = 0; i < 250 && !twin.pd_in().done; ++i) twin.run_cycle();
   const sreh::ProcessDataIn in = twin.pd_in();
-  const double position_deg = in.actual_position * 360.0 / 65536.0;
+  const double position_deg = in.position_raw * 360.0 / 65536.0;
   std::printf("done=%d position_deg=%.3f\n", in.done ? 1 : 0, position_deg);
   return in.done && std::fabs(position_deg - 90.0) < 0.2 ? 0 : 1;
 }
