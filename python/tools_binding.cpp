@@ -130,6 +130,50 @@ pyb::dict sweep_arrays(const sizing::SweepResult& result) {
   return d;
 }
 
+// `sreh_twin.calibrate(...)`: `sreh-twin calibrate` on the CLI's code
+// (calibration/calibrate.hpp), outputs checked by the output rule first.
+pyb::object calibrate_py(std::vector<std::filesystem::path> logs, std::optional<double> load_gcm2,
+                         std::optional<std::filesystem::path> load, std::optional<std::filesystem::path> setup,
+                         std::optional<std::filesystem::path> model, std::vector<std::string> fit,
+                         std::optional<std::filesystem::path> out, std::optional<std::filesystem::path> report,
+                         std::optional<int> threads, int max_iterations) {
+  if (report && !calibration_reports_available()) throw input_error("report: this build has no renders");
+  CalibrateRequest r;
+  for (const auto& p : logs) r.logs.push_back(p.string());
+  r.load_gcm2 = load_gcm2;
+  if (load) r.load_file = load->string();
+  if (setup) r.setup = setup->string();
+  if (model) r.model = model->string();
+  r.fit = std::move(fit);
+  r.options.threads = threads.value_or(io::usable_cpus());
+  r.options.max_iterations = max_iterations;
+  try { // the output rule before the fit, as the CLI (issue 12)
+    std::vector<std::string> inputs = r.logs;
+    for (const std::string* f : {&r.load_file, &r.setup, &r.model}) {
+      if (!f->empty()) inputs.push_back(*f);
+    }
+    io::check_outputs({{"out", out ? out->string() : "", io::OutputKind::File},
+                       {"report", report ? report->string() : "", io::OutputKind::Folder}},
+                      inputs);
+  } catch (const io::PathError& e) {
+    throw input_error(e.what());
+  }
+  CalibrateOutcome outcome;
+  try {
+    pyb::gil_scoped_release release;
+    outcome = calibrate(r);
+  } catch (const CalibrationInputError& e) {
+    throw input_error(e.what());
+  } catch (const std::invalid_argument& e) {
+    throw input_error(e.what());
+  }
+  if (out) io::write_file_atomic(out->string(), [&](std::ostream& o) { o << outcome.model_yaml; });
+  if (report) write_calibration_report(*report, outcome.cases, outcome.start, outcome.fit);
+  nlohmann::json j = fit_json(outcome.fit);
+  j["model_yaml"] = outcome.model_yaml;
+  return to_python(j);
+}
+
 } // namespace
 
 void bind_tools(pyb::module_& m) {
@@ -193,46 +237,7 @@ void bind_tools(pyb::module_& m) {
       "Sizing over a grid (`sreh-twin sweep`); returns the CSV's columns as numpy arrays (missing times NaN).");
   m.def(
       "calibrate",
-      [](std::vector<std::filesystem::path> logs, std::optional<double> load_gcm2, std::optional<std::filesystem::path> load,
-         std::optional<std::filesystem::path> setup, std::optional<std::filesystem::path> model,
-         std::vector<std::string> fit, std::optional<std::filesystem::path> out, std::optional<std::filesystem::path> report,
-         std::optional<int> threads, int max_iterations) {
-        if (report && !calibration_reports_available()) throw input_error("report: this build has no renders");
-        CalibrateRequest r;
-        for (const auto& p : logs) r.logs.push_back(p.string());
-        r.load_gcm2 = load_gcm2;
-        if (load) r.load_file = load->string();
-        if (setup) r.setup = setup->string();
-        if (model) r.model = model->string();
-        r.fit = std::move(fit);
-        r.options.threads = threads.value_or(io::usable_cpus());
-        r.options.max_iterations = max_iterations;
-        try { // the output rule before the fit, as the CLI (issue 12)
-          std::vector<std::string> inputs = r.logs;
-          for (const std::string* f : {&r.load_file, &r.setup, &r.model}) {
-            if (!f->empty()) inputs.push_back(*f);
-          }
-          io::check_outputs({{"out", out ? out->string() : "", io::OutputKind::File},
-                             {"report", report ? report->string() : "", io::OutputKind::Folder}},
-                            inputs);
-        } catch (const io::PathError& e) {
-          throw input_error(e.what());
-        }
-        CalibrateOutcome outcome;
-        try {
-          pyb::gil_scoped_release release;
-          outcome = calibrate(r);
-        } catch (const CalibrationInputError& e) {
-          throw input_error(e.what());
-        } catch (const std::invalid_argument& e) {
-          throw input_error(e.what());
-        }
-        if (out) io::write_file_atomic(out->string(), [&](std::ostream& o) { o << outcome.model_yaml; });
-        if (report) write_calibration_report(*report, outcome.cases, outcome.start, outcome.fit);
-        nlohmann::json j = fit_json(outcome.fit);
-        j["model_yaml"] = outcome.model_yaml;
-        return to_python(j);
-      },
+      &calibrate_py,
       arg("logs"), pyb::kw_only(), arg("load_gcm2") = pyb::none(), arg("load") = pyb::none(), arg("setup") = pyb::none(),
       arg("model") = pyb::none(), arg("fit") = std::vector<std::string>{}, arg("out") = pyb::none(),
       arg("report") = pyb::none(), arg("threads") = pyb::none(), arg("max_iterations") = 25,

@@ -87,7 +87,10 @@ std::string clip(std::string s, std::size_t n) {
   return s.size() <= n ? s : s.substr(0, n - 3) + "...";
 }
 
-void print_table(std::ostream& os, const std::vector<std::vector<std::string>>& rows) {
+// Columns padded to their widest cell, two spaces apart, no trailing blanks;
+// the columns in `right_aligned` (numbers) flush right.
+void print_table(std::ostream& os, const std::vector<std::vector<std::string>>& rows,
+                 std::initializer_list<std::size_t> right_aligned = {}) {
   std::vector<std::size_t> width;
   for (const auto& r : rows) {
     width.resize(std::max(width.size(), r.size()), 0);
@@ -96,8 +99,8 @@ void print_table(std::ostream& os, const std::vector<std::vector<std::string>>& 
   for (const auto& r : rows) {
     std::string line;
     for (std::size_t c = 0; c < r.size(); ++c) {
-      const bool numeric_col = c == 0 || c == 1 || c == 7 || c == 8;
-      line += numeric_col ? fmt::format("{:>{}}", r[c], width[c]) : fmt::format("{:<{}}", r[c], width[c]);
+      const bool right = std::find(right_aligned.begin(), right_aligned.end(), c) != right_aligned.end();
+      line += right ? fmt::format("{:>{}}", r[c], width[c]) : fmt::format("{:<{}}", r[c], width[c]);
       if (c + 1 < r.size()) line += "  ";
     }
     while (!line.empty() && line.back() == ' ') line.pop_back();
@@ -157,20 +160,6 @@ std::vector<std::string> narrow_cells(const ParameterEntry& row) {
           clip(default_cell(row), 10)};
 }
 
-void print_narrow(std::ostream& os, const std::vector<std::vector<std::string>>& rows) {
-  std::vector<std::size_t> width;
-  for (const auto& r : rows) {
-    width.resize(std::max(width.size(), r.size()), 0);
-    for (std::size_t c = 0; c < r.size(); ++c) width[c] = std::max(width[c], r[c].size());
-  }
-  for (const auto& r : rows) {
-    std::string line;
-    for (std::size_t c = 0; c < r.size(); ++c) line += fmt::format("{:<{}}  ", r[c], width[c]);
-    while (!line.empty() && line.back() == ' ') line.pop_back();
-    os << line << "\n";
-  }
-}
-
 int list_command(const ParamsArgs& a) {
   if (a.json) {
     Json out = Json::array();
@@ -181,14 +170,14 @@ int list_command(const ParamsArgs& a) {
   if (!a.wide) {
     std::vector<std::vector<std::string>> rows{{"param", "name", "type", "acc", "raw range", "raw unit", "default"}};
     for (const auto& row : parameter_table()) rows.push_back(narrow_cells(row));
-    print_narrow(std::cout, rows);
+    print_table(std::cout, rows);
     std::cout << "Raw wire values. Units, sections: 'params show INDEX.SUB'; all columns: --wide\n";
     return 0;
   }
   std::vector<std::vector<std::string>> rows{
       {"index", "sub", "name", "type", "access", "raw unit", "display unit", "min", "max", "default", "section"}};
   for (const auto& row : parameter_table()) rows.push_back(row_cells(row));
-  print_table(std::cout, rows);
+  print_table(std::cout, rows, {0, 1, 7, 8}); // index, sub, min, max
   return 0;
 }
 

@@ -171,11 +171,7 @@ void write_report_dir(const RunArgs& a, const RunResult& r, ReportRecorder& reco
   summary.max_tracking_error_deg = r.max_tracking_error_deg;
   summary.hints = r.hints;
   if (!a.video.empty()) summary.video_source = a.video; // copied in: the folder stays movable
-  try {
-    write_report(a.report, summary, recorded);
-  } catch (const std::exception& e) {
-    throw InputError(fmt::format("--report {}: {}", a.report, e.what()));
-  }
+  for_option("--report", a.report, [&] { write_report(a.report, summary, recorded); });
 }
 
 // Hands the run's checks and moves to the report as well as to the output.
@@ -294,18 +290,10 @@ Scenario read_checked_scenario(RunArgs& a) {
 // with run length stays in memory, issue 12).
 void open_streams(const RunArgs& a, std::optional<TraceStream>& trace, std::optional<MasterLogStream>& master_log) {
   if (!a.trace.empty()) {
-    try {
-      trace.emplace(a.trace, a.trace_every, a.limits.max_trace_bytes);
-    } catch (const std::runtime_error& e) {
-      throw InputError(fmt::format("--trace {}: {}", a.trace, e.what()));
-    }
+    for_option("--trace", a.trace, [&] { trace.emplace(a.trace, a.trace_every, a.limits.max_trace_bytes); });
   }
   if (!a.master_log.empty()) {
-    try {
-      master_log.emplace(a.master_log);
-    } catch (const std::runtime_error& e) {
-      throw InputError(fmt::format("--master-log {}: {}", a.master_log, e.what()));
-    }
+    for_option("--master-log", a.master_log, [&] { master_log.emplace(a.master_log); });
   }
 }
 

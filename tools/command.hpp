@@ -5,6 +5,7 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace sreh::tools {
 
@@ -13,6 +14,18 @@ namespace sreh::tools {
 struct InputError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+
+// Runs `write`, the work behind an output option; a file that cannot be
+// made fails as one InputError naming the option and its path
+// ("--trace out/t.csv: ..."), the CLI's one-line error.
+template <class Write>
+decltype(auto) for_option(std::string_view option, const std::string& path, Write&& write) {
+  try {
+    return write();
+  } catch (const std::runtime_error& e) {
+    throw InputError(std::string(option) + " " + path + ": " + e.what());
+  }
+}
 
 // A subcommand's setup: add the subcommand to `app`; its callback returns the
 // process exit code through `exit_code`.

@@ -134,11 +134,7 @@ int run_folder(const FolderArgs& a) {
                              shard_note(shard, shards, begin, end, all.size()));
   }
   if (!a.junit.empty()) {
-    try {
-      junit.write(a.junit);
-    } catch (const std::runtime_error& e) {
-      throw InputError(fmt::format("--junit {}: {}", a.junit, e.what()));
-    }
+    for_option("--junit", a.junit, [&] { junit.write(a.junit); });
   }
   // After the runs: bad input found before them stays one line on stderr.
   const std::string note = io::one_task_array_note(a.shard, getenv_ptr);
