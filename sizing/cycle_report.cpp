@@ -48,7 +48,7 @@ std::string cycle_speed_torque_plot(const CycleRequest& rq, const CycleEvaluatio
     return report_parts::motor_envelope(rq.module.drive.motor, volts, 1.02, label, color, width, dashed);
   };
   p.series.push_back(envelope(rq.voltage_V, fmt::format("envelope {:.1f} V", rq.voltage_V), "#d62728", 1.8, false));
-  for (double v : {16.0, 32.0}) {
+  for (double v : {min_voltage_V(), max_voltage_V()}) { // the index 85 window (manual 6.2)
     if (std::abs(v - rq.voltage_V) > 0.5) p.series.push_back(envelope(v, fmt::format("envelope {:.0f} V", v), "#bbbbbb", 1.0, true));
   }
   double sq_speed = 0;
