@@ -19,7 +19,7 @@ namespace {
 SizingRequest request(double angle_deg, double load_gcm2) {
   SizingRequest rq;
   rq.angle_deg = angle_deg;
-  rq.load = InertiaLoad{load_gcm2};
+  rq.world.load = InertiaLoad{load_gcm2};
   return rq;
 }
 

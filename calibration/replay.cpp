@@ -39,13 +39,7 @@ double master_cycle_s(const MasterLog& log, double physics_dt_s) {
 ReplaySetup replay_setup(const MasterLog& log, const LoadSpec& load, const Scenario* scenario) {
   ReplaySetup s;
   if (scenario) {
-    s.config.load = scenario->load;
-    s.config.hard_stops = scenario->hard_stops;
-    s.config.mounting_tilt_deg = scenario->mounting_tilt_deg;
-    s.config.supply = SupplySpec{scenario->device.supply_V, scenario->device.source_resistance_ohm,
-                                 scenario->device.bus_capacitance_F};
-    s.config.thermal = ThermalSpec{scenario->device.ambient_C, scenario->sim.thermal_time_scale};
-    s.config.physics_dt_s = scenario->sim.physics_dt_s;
+    s.config = twin_config(scenario->world); // its world; replay() puts the fitted module in
     s.startup_writes = scenario->device.isdu;
     s.configure_load = false;
   }

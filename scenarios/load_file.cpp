@@ -17,7 +17,7 @@ LoadFileContents parse_load_text(const std::string& yaml_text, const std::string
   }
   if (root["steps"]) { // a whole scenario: its parser checks all of it
     const Scenario sc = parse_scenario_text(yaml_text, file, base_dir, limits);
-    return {sc.load, root["mounting"] ? std::optional<double>(sc.mounting_tilt_deg) : std::nullopt};
+    return {sc.world.load, root["mounting"] ? std::optional<double>(sc.world.mounting_tilt_deg) : std::nullopt};
   }
   const detail::YamlReader reader(file);
   reader.check_map(root, "load file", {"name", "description", "load", "mounting"});

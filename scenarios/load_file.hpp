@@ -28,7 +28,7 @@ LoadFileContents parse_load_file(const std::string& path, const Limits& limits =
 // One `load:` value and one `mounting:` value inside a file read elsewhere
 // (through detail::load_yaml_safely; sizing cycles): the scenario's keys,
 // limits and "FILE:LINE:COL" errors (ScenarioError). `base_dir` resolves an
-// MJCF path. Implemented in scenario_parser.cpp.
+// MJCF path. Implemented in world_parser.cpp.
 LoadSpec parse_load_node(const YAML::Node& node, const std::string& file, const std::string& base_dir);
 double parse_mounting_node(const YAML::Node& node, const std::string& file); // tilt from vertical, deg
 

@@ -481,8 +481,8 @@ std::unique_ptr<Twin> make_twin(const Scenario& s, const TwinConfig& config) {
     // One line on stderr (interfaces.md): MuJoCo's messages span several.
     std::string why = e.what();
     std::replace(why.begin(), why.end(), '\n', ' ');
-    const bool has_load = !std::holds_alternative<NoLoad>(s.load);
-    throw ScenarioError(has_load ? s.load_loc : SourceLoc{s.file, 0, 0},
+    const bool has_load = !std::holds_alternative<NoLoad>(s.world.load);
+    throw ScenarioError(has_load ? s.world.load_loc : SourceLoc{s.file, 0, 0},
                         fmt::format("{}the twin rejects this setup: {}", has_load ? "load: " : "", why));
   }
 }
@@ -496,15 +496,8 @@ std::vector<uint8_t> read_bytes(const std::string& path, const SourceLoc& loc) {
 } // namespace
 
 TwinConfig make_twin_config(const Scenario& s) {
-  TwinConfig c;
-  c.load = s.load;
-  c.hard_stops = s.hard_stops;
-  c.mounting_tilt_deg = s.mounting_tilt_deg;
-  c.supply = SupplySpec{s.device.supply_V, s.device.source_resistance_ohm, s.device.bus_capacitance_F};
-  c.thermal = ThermalSpec{s.device.ambient_C, s.sim.thermal_time_scale};
-  c.physics_dt_s = s.sim.physics_dt_s;
+  TwinConfig c = twin_config(s.world);
   c.cycle_s = s.sim.cycle_s;
-  c.module = s.module;
   if (s.device.nvm_image_path) c.nvm_image = read_bytes(*s.device.nvm_image_path, s.device.nvm_image_loc);
   c.record_trace = false;
   return c;

@@ -1,4 +1,5 @@
 #include "scenarios/scenario.hpp"
+#include "scenarios/source_loc.hpp"
 
 #include <cmath>
 

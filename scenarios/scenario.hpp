@@ -13,28 +13,11 @@
 #include "device_logic/device_types.hpp"
 #include "scenarios/comparison.hpp"
 #include "scenarios/pd_out_fields.hpp"
+#include "scenarios/source_loc.hpp"
+#include "scenarios/world.hpp"
 #include "twin/twin.hpp"
 
 namespace sreh {
-
-// A position in a scenario file; line and column are 1-based (0: unknown).
-struct SourceLoc {
-  std::string file;
-  int line = 0;
-  int column = 0;
-  std::string str() const; // "FILE:LINE:COL" (or just FILE when unknown)
-};
-
-// Bad scenario input (exit code 2). what() is "FILE:LINE:COL: what is wrong".
-class ScenarioError : public std::runtime_error {
- public:
-  ScenarioError(const SourceLoc& loc, const std::string& message);
-  const SourceLoc& where() const { return loc_; }
-  const std::string& message() const { return message_; } // without the location
- private:
-  SourceLoc loc_;
-  std::string message_;
-};
 
 // What a PLC (process data in) or the world (LED band, sensors) shows at an
 // instant. Every present field must hold; `state` and `led` hold when the
@@ -168,36 +151,27 @@ struct RunCheck {
   SourceLoc loc;
 };
 
+// `device:` besides its world keys (supply, ambient: WorldSetup).
 struct DeviceSetup {
-  double supply_V = 24.0;
-  double ambient_C = 25.0;
-  double source_resistance_ohm = 0.0;
-  double bus_capacitance_F = 0.0;
   std::optional<std::string> nvm_image_path; // resolved against the scenario's folder
   SourceLoc nvm_image_loc;
   std::vector<IsduWriteStep> isdu;          // acyclic writes at start-up
 };
 
+// `sim:` besides the physics step and the thermal time scale (WorldSpec).
 struct SimSetup {
-  double physics_dt_s = 1e-4;
   double cycle_s = 0.002;
-  double thermal_time_scale = 1.0;
 };
 
 struct Scenario {
   std::string file;
   std::string name;
+  // `model`, `load`, `mounting`, `world`, and `device:`'s supply and ambient
+  // (A-SCN-22); `sim:`'s physics_dt_s and thermal_time_scale; `run
+  // --model` is applied to `world.module`.
+  WorldSetup world;
   DeviceSetup device;
-  LoadSpec load = NoLoad{};
-  SourceLoc load_loc;
-  double mounting_tilt_deg = 0.0; // `mounting:`, 0 = vertical axis, 90 = horizontal (A-TWIN-24)
-  std::vector<HardStop> hard_stops;
   SimSetup sim;
-  // `model: FILE` (issue 25): overrides of the model card, relative to the
-  // scenario; `module` is the card with them applied (and with `run --model`'s).
-  std::string model_file;
-  SourceLoc model_loc;
-  ModuleModel module = default_module_model();
   bool stop_on_failure = false; // default: a failed check is recorded and the run goes on
   std::vector<Step> steps;
   std::vector<RunCheck> expect;

@@ -26,6 +26,7 @@
 #include "twin/model_card.hpp"
 #include "scenarios/yaml_reader.hpp"
 #include "scenarios/yaml_safety.hpp"
+#include "scenarios/world_parser.hpp"
 
 namespace sreh {
 namespace {
@@ -37,7 +38,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // Half a wire count (manual 2.5): a plain position in degrees matches the nearest count.
 constexpr double kHalfWireCountDeg = 180.0 / static_cast<double>(kWireCountsPerRev);
 // A-SCN-1: plausibility limits of world inputs.
-constexpr double kMaxSupplyV = 40.0;
+constexpr WorldRanges kSupplyRange{}; // a `supply:` step: the world's supply range
 constexpr double kMaxTorqueNm = 50.0;
 constexpr double kMaxDurationS = 3600.0;
 constexpr int kMaxRepeat = 100000;
@@ -78,31 +79,18 @@ class Parser {
   Parser(const std::string& file, std::string base_dir) : r_(file), base_dir_(std::move(base_dir)) {}
 
   Scenario parse(const YAML::Node& root) {
-    r_.check_map(root, "scenario",
-                 {"name", "description", "model", "device", "load", "mounting", "world", "sim", "stop_on_failure", "steps",
-                  "expect"});
+    std::vector<std::string_view> keys = {"name", "description"};
+    keys.insert(keys.end(), detail::kWorldTopKeys.begin(), detail::kWorldTopKeys.end());
+    keys.insert(keys.end(), {"sim", "stop_on_failure", "steps", "expect"});
+    r_.check_map(root, "scenario", keys);
     Scenario s;
     s.file = r_.file();
     s.name = r_.text(r_.require(root, "name", "scenario"), "name");
-    if (root["model"]) {
-      s.model_loc = r_.loc(root["model"]);
-      s.model_file = existing_file(root["model"], "model", true);
-      try {
-        s.module = apply_model_file(default_model_card(), s.model_file).module_model();
-      } catch (const ModelCardError& e) {
-        r_.fail(root["model"], std::string("model: ") + e.what());
-      }
-    }
+    s.world = world_.read(root, WorldRanges{}, {"nvm_image", "isdu"});
     if (root["device"]) parse_device(root["device"], s.device);
-    if (root["load"]) {
-      s.load_loc = r_.loc(root["load"]);
-      s.load = parse_load(root["load"]);
-    }
-    if (root["mounting"]) s.mounting_tilt_deg = parse_mounting(root["mounting"]);
-    if (root["world"]) s.hard_stops = parse_world(root["world"]);
-    if (root["sim"]) s.sim = parse_sim(root["sim"]);
+    if (root["sim"]) parse_sim(root["sim"], s);
     check_clocks(s, root["sim"] ? root["sim"] : root);
-    sim_ = s.sim;
+    physics_dt_s_ = s.world.physics_dt_s;
     if (root["stop_on_failure"]) s.stop_on_failure = r_.boolean(root["stop_on_failure"], "stop_on_failure");
     const YAML::Node steps = r_.require(root, "steps", "scenario");
     s.steps = parse_steps(steps, "", "steps");
@@ -110,23 +98,13 @@ class Parser {
     return s;
   }
 
-  // For files that embed scenario loads (load_file.hpp: sizing cycles).
-  LoadSpec load(const YAML::Node& n) { return parse_load(n); }
-  double mounting(const YAML::Node& n) { return parse_mounting(n); }
-
  private:
   // ---- world and configuration ----
+  // The device's own keys; its world keys (supply, ambient) are the world reader's.
   void parse_device(const YAML::Node& n, DeviceSetup& d) {
-    r_.check_map(n, "device", {"supply_V", "ambient_C", "source_resistance_ohm", "bus_capacitance_F", "nvm_image", "isdu"});
-    if (n["supply_V"]) d.supply_V = r_.number(n["supply_V"], "device.supply_V", 0.0, kMaxSupplyV);
-    if (n["ambient_C"]) d.ambient_C = r_.number(n["ambient_C"], "device.ambient_C", -40.0, 100.0);
-    if (n["source_resistance_ohm"]) {
-      d.source_resistance_ohm = r_.number(n["source_resistance_ohm"], "device.source_resistance_ohm", 0.0, 1000.0);
-    }
-    if (n["bus_capacitance_F"]) d.bus_capacitance_F = r_.number(n["bus_capacitance_F"], "device.bus_capacitance_F", 0.0, 10.0);
     if (n["nvm_image"]) {
       d.nvm_image_loc = r_.loc(n["nvm_image"]);
-      d.nvm_image_path = existing_file(n["nvm_image"], "device.nvm_image", false);
+      d.nvm_image_path = world_.existing_file(n["nvm_image"], "device.nvm_image", false);
     }
     if (n["isdu"]) {
       const YAML::Node list = n["isdu"];
@@ -137,88 +115,37 @@ class Parser {
     }
   }
 
-  // Shapes, assemblies and the twin's own checks: scenarios/load_parser.cpp (issue 28).
-  LoadSpec parse_load(const YAML::Node& n) {
-    return detail::parse_load_value(r_, n, [this](const YAML::Node& f, const std::string& what) {
-      return existing_file(f, what, true);
-    });
-  }
-
-  // Axis orientation (A-TWIN-24): {axis: vertical|horizontal} or {tilt_deg: T}.
-  double parse_mounting(const YAML::Node& n) {
-    r_.check_map(n, "mounting", {"axis", "tilt_deg"});
-    if (n["axis"] && n["tilt_deg"]) r_.fail(n, "mounting: give either axis or tilt_deg, not both");
-    if (n["tilt_deg"]) return r_.number(n["tilt_deg"], "mounting.tilt_deg", 0.0, 180.0);
-    if (n["axis"]) {
-      const std::string axis = r_.text(n["axis"], "mounting.axis");
-      if (axis == "vertical") return 0.0;
-      if (axis == "horizontal") return 90.0;
-      r_.fail(n["axis"], "mounting.axis: expected vertical or horizontal, got '" + axis + "'");
-    }
-    r_.fail(n, "mounting: expected {axis: vertical|horizontal} or {tilt_deg: T}");
-    return 0.0;
-  }
-
-  std::vector<HardStop> parse_world(const YAML::Node& n) {
-    r_.check_map(n, "world", {"hard_stops"});
-    std::vector<HardStop> stops;
-    if (const YAML::Node list = n["hard_stops"]) {
-      if (!list.IsSequence()) r_.fail(list, "world.hard_stops: expected a list of {angle_deg: A}");
-      for (std::size_t i = 0; i < list.size(); ++i) {
-        const std::string what = fmt::format("world.hard_stops[{}]", i);
-        r_.check_map(list[i], what, {"angle_deg"});
-        stops.push_back(HardStop{r_.number(r_.require(list[i], "angle_deg", what), what + ".angle_deg", -720.0, 720.0)});
-      }
-    }
-    return stops;
-  }
-
-  SimSetup parse_sim(const YAML::Node& n) {
+  // `sim:`: the IO-Link cycle, and the world's physics step and thermal time scale.
+  void parse_sim(const YAML::Node& n, Scenario& sc) {
     r_.check_map(n, "sim", {"physics_dt_s", "cycle_s", "thermal_time_scale"});
-    SimSetup s;
-    if (n["physics_dt_s"]) s.physics_dt_s = r_.number(n["physics_dt_s"], "sim.physics_dt_s", 1e-6, 1e-3);
+    double& physics_dt_s = sc.world.physics_dt_s;
+    double& cycle_s = sc.sim.cycle_s;
+    if (n["physics_dt_s"]) physics_dt_s = r_.number(n["physics_dt_s"], "sim.physics_dt_s", 1e-6, 1e-3);
     // manual 1: minimum IO-Link cycle time 2 ms.
-    if (n["cycle_s"]) s.cycle_s = r_.number(n["cycle_s"], "sim.cycle_s", detail::kMinCycleS, detail::kMaxCycleS);
-    if (!detail::integer_multiple(s.cycle_s, s.physics_dt_s)) {
+    if (n["cycle_s"]) cycle_s = r_.number(n["cycle_s"], "sim.cycle_s", detail::kMinCycleS, detail::kMaxCycleS);
+    if (!detail::integer_multiple(cycle_s, physics_dt_s)) {
       r_.fail(n["cycle_s"] ? n["cycle_s"] : n["physics_dt_s"],
-              fmt::format("sim: cycle_s {} must be an integer multiple of physics_dt_s {}", s.cycle_s, s.physics_dt_s));
+              fmt::format("sim: cycle_s {} must be an integer multiple of physics_dt_s {}", cycle_s, physics_dt_s));
     }
-    if (n["thermal_time_scale"]) s.thermal_time_scale = r_.number(n["thermal_time_scale"], "sim.thermal_time_scale", 1.0, 1e6);
-    return s;
+    if (n["thermal_time_scale"]) {
+      sc.world.thermal.time_scale = r_.number(n["thermal_time_scale"], "sim.thermal_time_scale", 1.0, 1e6);
+    }
   }
 
   // Issue 25: the physics sub-steps the drive's control period (model card).
   void check_clocks(const Scenario& s, const YAML::Node& at) {
-    const double period_s = s.module.drive.control_period_s();
-    if (!detail::integer_multiple(period_s, s.sim.physics_dt_s)) {
+    const double period_s = s.world.module.drive.control_period_s();
+    if (!detail::integer_multiple(period_s, s.world.physics_dt_s)) {
       r_.fail(at["physics_dt_s"] ? at["physics_dt_s"] : at,
               fmt::format("sim.physics_dt_s {} must divide the drive's control period {} s (model card "
                           "control_period): the physics sub-steps the drive's clock",
-                          s.sim.physics_dt_s, period_s));
+                          s.world.physics_dt_s, period_s));
     }
     if (!detail::integer_multiple(s.sim.cycle_s, period_s)) {
       r_.fail(at["cycle_s"] ? at["cycle_s"] : at,
               fmt::format("sim.cycle_s {} must be an integer multiple of the drive's control period {} s",
                           s.sim.cycle_s, period_s));
     }
-  }
-
-  // A file that must exist; relative to the scenario's folder, or (models/...)
-  // to the project's models folder.
-  std::string existing_file(const YAML::Node& n, const std::string& what, bool allow_models_dir) {
-    const std::string p = r_.text(n, what);
-    if (p.empty()) r_.fail(n, what + ": empty path");
-    std::vector<fs::path> tried;
-    const fs::path given(p);
-    tried.push_back(given.is_absolute() || base_dir_.empty() ? given : fs::path(base_dir_) / given);
-    if (allow_models_dir && !given.is_absolute() && p.rfind("models/", 0) == 0) {
-      tried.push_back(fs::path(models_dir()).parent_path() / given); // twin/models_dir.hpp
-    }
-    for (const auto& t : tried) {
-      std::error_code ec;
-      if (fs::is_regular_file(t, ec)) return t.lexically_normal().string();
-    }
-    r_.fail(n, fmt::format("{}: file '{}' not found (looked for {})", what, p, tried.front().lexically_normal().string()));
   }
 
   // ---- steps ----
@@ -254,7 +181,7 @@ class Parser {
     const std::string& k = step.kind;
     if (k == "pd") step.action = parse_pd(v, kw);
     else if (k == "wait_s") step.action = WaitStep{r_.number(v, kw, 0.0, kMaxDurationS)};
-    else if (k == "set") step.action = detail::parse_set(r_, v, kw, sim_.physics_dt_s);
+    else if (k == "set") step.action = detail::parse_set(r_, v, kw, physics_dt_s_);
     else if (k == "save") step.action = detail::parse_save(r_, v, kw, saved_);
     else if (k == "wait_until") step.action = parse_wait_until(v, kw);
     else if (k == "expect") {
@@ -271,9 +198,9 @@ class Parser {
       step.action = t;
     } else if (k == "supply") {
       r_.check_map(v, kw, {"V"});
-      step.action = SupplyStep{r_.number(r_.require(v, "V", kw), kw + ".V", 0.0, kMaxSupplyV)};
+      step.action = SupplyStep{r_.number(r_.require(v, "V", kw), kw + ".V", kSupplyRange.min_supply_V, kSupplyRange.max_supply_V)};
     } else if (k == "load") {
-      step.action = LoadStep{parse_load(v)};
+      step.action = LoadStep{world_.load(v)};
     } else if (k == "link") {
       step.action = detail::parse_link(r_, v, kw);
     } else if (k == "pd_valid") step.action = PdValidStep{r_.boolean(v, kw)};
@@ -459,7 +386,8 @@ class Parser {
 
   YamlReader r_;
   std::string base_dir_;
-  SimSetup sim_;                // for checks of later steps (set.master_cycle_s)
+  detail::WorldReader world_{r_, base_dir_};
+  double physics_dt_s_ = 0;     // for checks of later steps (set.master_cycle_s)
   std::set<std::string> saved_; // names saved so far, in file order
 };
 
@@ -477,25 +405,19 @@ Scenario parse_scenario_text(const std::string& yaml_text, const std::string& fi
   }
 }
 
-LoadSpec parse_load_node(const YAML::Node& node, const std::string& file, const std::string& base_dir) {
-  return Parser(file, base_dir).load(node);
-}
-
-double parse_mounting_node(const YAML::Node& node, const std::string& file) { return Parser(file, "").mounting(node); }
-
 void apply_command_line_model(Scenario& s, const std::string& model_path) {
   if (model_path.empty()) return;
   try {
     ModelCard card = default_model_card();
-    if (!s.model_file.empty()) card = apply_model_file(card, s.model_file);
-    s.module = apply_model_file(card, model_path).module_model();
+    if (!s.world.model_file.empty()) card = apply_model_file(card, s.world.model_file);
+    s.world.module = apply_model_file(card, model_path).module_model();
   } catch (const ModelCardError& e) {
     throw ScenarioError(SourceLoc{s.file}, std::string("--model: ") + e.what());
   }
-  const double period_s = s.module.drive.control_period_s();
-  if (!detail::integer_multiple(period_s, s.sim.physics_dt_s) || !detail::integer_multiple(s.sim.cycle_s, period_s)) {
+  const double period_s = s.world.module.drive.control_period_s();
+  if (!detail::integer_multiple(period_s, s.world.physics_dt_s) || !detail::integer_multiple(s.sim.cycle_s, period_s)) {
     throw ScenarioError(SourceLoc{s.file}, fmt::format("sim: physics_dt_s {} and cycle_s {} do not fit the control period "
-                                                       "{} s of --model {}", s.sim.physics_dt_s, s.sim.cycle_s, period_s,
+                                                       "{} s of --model {}", s.world.physics_dt_s, s.sim.cycle_s, period_s,
                                                        model_path));
   }
 }

@@ -43,18 +43,11 @@ struct CycleSegment {
 
 struct CycleRequest {
   std::string file;               // for messages
-  LoadSpec load = NoLoad{};       // at the start of every repetition (A-SIZE-19)
-  int load_line = 0, load_column = 0; // of `load:` in the file (messages)
-  double mounting_tilt_deg = 0;   // 0 vertical, 90 horizontal (A-TWIN-24)
-  ModuleModel module = default_module_model(); // model card, `--model FILE` (issue 25)
-  std::string model_file;         // that FILE, absolute ("" none): --emit-scenario names it
-  double voltage_V = 24.0;
-  double source_resistance_ohm = 0.0;
-  double bus_capacitance_F = 0.0;
-  double ambient_C = 25.0;
-  double tolerance_deg = 0.1;     // 64+n.5 of every set
-  double wait_ms = 25.0;          // 64+n.6
-  std::optional<double> timeout_ms; // 64+n.7; unset: A-SIZE-4
+  // The world: `model`, `device` (or `supply` and `ambient_C`), `load` (at
+  // the start of every repetition, A-SIZE-19), `mounting`, `world`, read
+  // as in a scenario (A-SCN-22); `--model FILE` sets `world.model_file` too.
+  WorldSetup world;
+  SettlingSpec settling;          // of every set
   double process_torque_Nm = 0;   // on every move without its own
   double thermal_margin_K = 5.0;
   int handshake_cycles = 4;       // A-SIZE-16

@@ -25,10 +25,8 @@ namespace {
 // A SizingRequest carrying the cycle's set-wide values, for make_parameter_set.
 SizingRequest set_request(const CycleRequest& rq, int set) {
   SizingRequest s;
-  s.voltage_V = rq.voltage_V;
-  s.tolerance_deg = rq.tolerance_deg;
-  s.wait_ms = rq.wait_ms;
-  s.timeout_ms = rq.timeout_ms;
+  s.world = rq.world; // the supply decides the index 85 writes
+  s.settling = rq.settling;
   s.parameter_set = set;
   return s;
 }
@@ -79,7 +77,7 @@ struct CycleRun {
 
   // Mean torque^2 and loss over trace rows [from, to).
   std::pair<double, double> mean_of(std::size_t from, std::size_t to) const {
-    const MotorModel& motor = rq.module.drive.motor;
+    const MotorModel& motor = rq.world.module.drive.motor;
     double sq = 0, loss = 0;
     std::size_t n = 0;
     for (std::size_t r = from; r < to; ++r) {
@@ -166,7 +164,7 @@ struct CycleRun {
                                                                                       : "load";
     }
     if (!load_is_initial) { // A-SIZE-19: every repetition starts with the file's load
-      twin.set_load(rq.load);
+      twin.set_load(rq.world.load);
       load_is_initial = true;
     }
     for (std::size_t i = 0; i < rq.segments.size() && reasons.list.empty(); ++i) {
@@ -213,13 +211,13 @@ void repetition_means(const CycleRun& run, double cycle_s, CycleEvaluation& ev) 
 
 CycleEvaluation evaluate_cycle(const CycleRequest& rq, const CyclePlan& plan, const std::vector<MotionSetting>& settings,
                                bool keep_trace) {
-  const TwinConfig cfg = sizing_twin_config(rq);
+  const TwinConfig cfg = sizing_twin_config(rq.world);
   Twin& twin = fresh_twin(cfg); // as make_twin(cfg) builds it (issue 31)
-  const Thermal thermal(cfg.thermal, rq.module.thermal);
+  const Thermal thermal(cfg.thermal, rq.world.module.thermal);
   const double cycle_s = cfg.cycle_s;
 
   CycleEvaluation ev;
-  ev.torque_capability_Nm = rq.module.drive.motor.peak_torque_Nm();
+  ev.torque_capability_Nm = rq.world.module.drive.motor.peak_torque_Nm();
   std::vector<MotionLimits> limits;
   for (std::size_t k = 0; k < plan.sets.size(); ++k) {
     ev.sets.push_back(make_parameter_set(set_request(rq, plan.sets[k].set), settings[k], plan.sets[k].load_gcm2));
@@ -249,9 +247,9 @@ CycleEvaluation evaluate_cycle(const CycleRequest& rq, const CyclePlan& plan, co
   }
   ev.cycles_per_min = ev.completed && ev.cycle_s > 0 ? 60.0 / ev.cycle_s : 0.0;
   if (ev.completed) repetition_means(run, cycle_s, ev);
-  derive_figures(rq.module, rows, first_move_row, ev.last_repetition_row, cycle_s, rq.ambient_C, rq.thermal_margin_K, ev);
+  derive_figures(rq.world.module, rows, first_move_row, ev.last_repetition_row, cycle_s, rq.world.thermal.ambient_C, rq.thermal_margin_K, ev);
   // The same checks and margins as a single move (A-SIZE-5).
-  judge_into(limit_figures(ev, scan, rq.voltage_V, rq.ambient_C, rq.thermal_margin_K), std::move(reasons), ev);
+  judge_into(limit_figures(ev, scan, rq.world.supply.voltage_V, rq.world.thermal.ambient_C, rq.thermal_margin_K), std::move(reasons), ev);
   if (keep_trace) ev.trace = rows;
   return ev;
 }

@@ -45,14 +45,14 @@ nlohmann::json cycle_to_json(const CycleRequest& rq, const CycleResult& r) {
   nlohmann::json j;
   j["mode"] = r.recommended ? "recommend" : "evaluate";
   j["request"] = {{"cycle_file", rq.file},
-                  {"voltage_V", rq.voltage_V},
-                  {"source_resistance_ohm", rq.source_resistance_ohm},
-                  {"bus_capacitance_F", rq.bus_capacitance_F},
-                  {"ambient_C", rq.ambient_C},
-                  {"mounting_tilt_deg", rq.mounting_tilt_deg},
+                  {"voltage_V", rq.world.supply.voltage_V},
+                  {"source_resistance_ohm", rq.world.supply.source_resistance_ohm},
+                  {"bus_capacitance_F", rq.world.supply.bus_capacitance_F},
+                  {"ambient_C", rq.world.thermal.ambient_C},
+                  {"mounting_tilt_deg", rq.world.mounting_tilt_deg},
                   {"process_torque_Nm", rq.process_torque_Nm},
-                  {"tolerance_deg", rq.tolerance_deg},
-                  {"wait_ms", rq.wait_ms},
+                  {"tolerance_deg", rq.settling.tolerance_deg},
+                  {"wait_ms", rq.settling.wait_ms},
                   {"thermal_margin_K", rq.thermal_margin_K},
                   {"handshake_cycles", rq.handshake_cycles},
                   {"cycles", rq.cycles}};
@@ -91,7 +91,7 @@ std::string cycle_summary_text(const CycleRequest& rq, const CycleResult& r) {
   const CycleEvaluation& e = r.evaluation;
   std::string s;
   s += fmt::format("Cycle {}: {} segments, {:.1f} V, ambient {} degC, mounting tilt {} deg, {} repetitions simulated\n",
-                   rq.file, rq.segments.size(), rq.voltage_V, rq.ambient_C, rq.mounting_tilt_deg, rq.cycles);
+                   rq.file, rq.segments.size(), rq.world.supply.voltage_V, rq.world.thermal.ambient_C, rq.world.mounting_tilt_deg, rq.cycles);
   s += r.recommended ? fmt::format("Recommended sets ({} simulations{}):\n", r.simulations,
                                    r.backoffs ? fmt::format(", slowed down {} times for the whole cycle", r.backoffs) : "")
                      : std::string("Given sets:\n");

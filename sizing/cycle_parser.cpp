@@ -1,7 +1,8 @@
 // The cycle file (docs/sizing.md "Cycles"): read through the YAML safety
 // layer (size, nodes, depth, tags; scenarios/yaml_safety.hpp), every key
-// checked with the scenario reader, loads and mounting parsed by the
-// scenario parser itself, so a load means the same as in a scenario.
+// checked with the scenario reader, the world (model, device or supply and
+// ambient, load, mounting, hard stops) by the scenario's own world reader
+// (scenarios/world_parser.hpp), so a key means the same as in a scenario.
 // Every error: "FILE:LINE:COL: what" (exit 2).
 #include <cmath>
 #include <filesystem>
@@ -10,7 +11,7 @@
 
 #include "device_logic/parameter_ids.hpp"
 #include "device_logic/units.hpp"
-#include "scenarios/load_file.hpp"
+#include "scenarios/world_parser.hpp"
 #include "scenarios/yaml_reader.hpp"
 #include "scenarios/yaml_safety.hpp"
 #include "sizing/cycle.hpp"
@@ -26,39 +27,26 @@ constexpr double kMaxProcessTorque_Nm = 5.0; // far above the motor's 0.6 N m: s
 
 class CycleParser {
  public:
-  CycleParser(const std::string& file, std::string base_dir) : r_(file), base_dir_(std::move(base_dir)) {}
+  CycleParser(const std::string& file, std::string base_dir) : r_(file), world_(r_, std::move(base_dir)) {}
 
   CycleRequest parse(const YAML::Node& root) {
     if (!root.IsDefined() || root.IsNull()) r_.fail(root, "empty cycle file (expected segments: [...])");
-    r_.check_map(root, "cycle",
-                 {"name", "description", "mounting", "load", "supply", "ambient_C", "process_torque_Nm",
-                  "tolerance_deg", "wait_ms", "timeout_ms", "thermal_margin_K", "handshake_cycles", "cycles",
-                  "segments"});
+    std::vector<std::string_view> keys = {"name", "description"};
+    keys.insert(keys.end(), detail::kWorldTopKeys.begin(), detail::kWorldTopKeys.end());
+    keys.insert(keys.end(), {"process_torque_Nm", "tolerance_deg", "wait_ms", "timeout_ms", "thermal_margin_K",
+                             "handshake_cycles", "cycles", "segments"});
+    r_.check_map(root, "cycle", keys);
     CycleRequest c;
     c.file = r_.file();
     if (root["name"]) (void)r_.text(root["name"], "name");
     if (root["description"]) (void)r_.text(root["description"], "description");
-    if (root["mounting"]) c.mounting_tilt_deg = parse_mounting_node(root["mounting"], r_.file());
-    if (root["load"]) {
-      c.load = parse_load_node(root["load"], r_.file(), base_dir_);
-      const SourceLoc loc = r_.loc(root["load"]);
-      c.load_line = loc.line;
-      c.load_column = loc.column;
-    }
-    if (const YAML::Node s = root["supply"]) {
-      r_.check_map(s, "supply", {"voltage_V", "source_resistance_ohm", "bus_capacitance_F"});
-      if (s["voltage_V"]) c.voltage_V = r_.number(s["voltage_V"], "supply.voltage_V", min_voltage_V(), max_voltage_V());
-      if (s["source_resistance_ohm"]) {
-        c.source_resistance_ohm = r_.number(s["source_resistance_ohm"], "supply.source_resistance_ohm", 0.0, 10.0);
-      }
-      if (s["bus_capacitance_F"]) c.bus_capacitance_F = r_.number(s["bus_capacitance_F"], "supply.bus_capacitance_F", 0.0, 1.0);
-    }
-    if (root["ambient_C"]) c.ambient_C = r_.number(root["ambient_C"], "ambient_C", 0.0, 50.0);
+    // The world as in a scenario (A-SCN-22), narrowed to what a sizing takes.
+    c.world = world_.read(root, sizing_world_ranges(), {});
     if (root["process_torque_Nm"]) c.process_torque_Nm = torque(root["process_torque_Nm"], "process_torque_Nm", 0.0);
     const param::MotionSet set(0); // the rows every set shares (manual 6.2)
-    if (root["tolerance_deg"]) c.tolerance_deg = r_.row_number(root["tolerance_deg"], "tolerance_deg", set.tolerance);
-    if (root["wait_ms"]) c.wait_ms = r_.row_number(root["wait_ms"], "wait_ms", set.waiting_time);
-    if (root["timeout_ms"]) c.timeout_ms = r_.row_number(root["timeout_ms"], "timeout_ms", set.settling_timeout);
+    if (root["tolerance_deg"]) c.settling.tolerance_deg = r_.row_number(root["tolerance_deg"], "tolerance_deg", set.tolerance);
+    if (root["wait_ms"]) c.settling.wait_ms = r_.row_number(root["wait_ms"], "wait_ms", set.waiting_time);
+    if (root["timeout_ms"]) c.settling.timeout_ms = r_.row_number(root["timeout_ms"], "timeout_ms", set.settling_timeout);
     if (root["thermal_margin_K"]) {
       c.thermal_margin_K = r_.number(root["thermal_margin_K"], "thermal_margin_K", 0.0, kMaxThermalMargin_K);
     }
@@ -119,7 +107,7 @@ class CycleParser {
       seg.what = d;
     } else {
       r_.check_map(n, what, {"load"});
-      seg.what = CycleLoadChange{parse_load_node(n["load"], r_.file(), base_dir_)};
+      seg.what = CycleLoadChange{world_.load(n["load"])};
     }
     return seg;
   }
@@ -127,7 +115,7 @@ class CycleParser {
   static bool at_least_one_count(double deg) { return deg_to_wire_counts(deg) != 0; } // manual 2.5
 
   YamlReader r_;
-  std::string base_dir_;
+  detail::WorldReader world_;
 };
 
 } // namespace

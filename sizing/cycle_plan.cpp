@@ -51,9 +51,9 @@ bool same(const std::optional<MotionSetting>& a, const std::optional<MotionSetti
 // The load of every segment: the file's load at the start of each
 // repetition (A-SIZE-19), changed by load segments.
 void segment_loads(const CycleRequest& rq, std::vector<double>& seg_load, std::vector<const LoadSpec*>& seg_spec) {
-  const std::string top = fmt::format("{}:{}:{}: load", rq.file, rq.load_line, rq.load_column);
-  double now = inertia_gcm2(rq.load, top);
-  const LoadSpec* spec = &rq.load;
+  const std::string top = fmt::format("{}:{}:{}: load", rq.file, rq.world.load_loc.line, rq.world.load_loc.column);
+  double now = inertia_gcm2(rq.world.load, top);
+  const LoadSpec* spec = &rq.world.load;
   seg_load.assign(rq.segments.size(), now);
   seg_spec.assign(rq.segments.size(), spec);
   for (std::size_t i = 0; i < rq.segments.size(); ++i) {

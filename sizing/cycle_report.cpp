@@ -43,13 +43,13 @@ std::string when(const std::optional<double>& s) { return s ? fmt::format("{:.0f
 std::string cycle_speed_torque_plot(const CycleRequest& rq, const CycleEvaluation& e) {
   svg::Plot p = report_parts::speed_torque_plane(
       "cycle-speed-torque",
-      fmt::format("Speed-torque plane: operating points of the cycle, motor envelope at {:.1f} V", rq.voltage_V));
+      fmt::format("Speed-torque plane: operating points of the cycle, motor envelope at {:.1f} V", rq.world.supply.voltage_V));
   auto envelope = [&rq](double volts, const std::string& label, const char* color, double width, bool dashed) {
-    return report_parts::motor_envelope(rq.module.drive.motor, volts, 1.02, label, color, width, dashed);
+    return report_parts::motor_envelope(rq.world.module.drive.motor, volts, 1.02, label, color, width, dashed);
   };
-  p.series.push_back(envelope(rq.voltage_V, fmt::format("envelope {:.1f} V", rq.voltage_V), "#d62728", 1.8, false));
+  p.series.push_back(envelope(rq.world.supply.voltage_V, fmt::format("envelope {:.1f} V", rq.world.supply.voltage_V), "#d62728", 1.8, false));
   for (double v : {min_voltage_V(), max_voltage_V()}) { // the index 85 window (manual 6.2)
-    if (std::abs(v - rq.voltage_V) > 0.5) p.series.push_back(envelope(v, fmt::format("envelope {:.0f} V", v), "#bbbbbb", 1.0, true));
+    if (std::abs(v - rq.world.supply.voltage_V) > 0.5) p.series.push_back(envelope(v, fmt::format("envelope {:.0f} V", v), "#bbbbbb", 1.0, true));
   }
   double sq_speed = 0;
   std::size_t n = 0;
@@ -150,14 +150,14 @@ std::string cycle_report_html(const CycleRequest& rq, const CycleResult& r, cons
   for (const SegmentResult& s : e.segments) {
     if (s.kind == "move") load_gcm2 = std::max(load_gcm2, s.load_gcm2);
   }
-  o += report_parts::verdict_block({&e, e.feasible, e.binding_limit, rq.thermal_margin_K, rq.ambient_C, speed_dps, load_gcm2});
+  o += report_parts::verdict_block({&e, e.feasible, e.binding_limit, rq.thermal_margin_K, rq.world.thermal.ambient_C, speed_dps, load_gcm2});
   if (u) {
     const WorstMove w = worst_move(e);
     o += report_parts::uncertainty_section(*u, {w.positioning_s, w.settling_s, e.peak_torque_Nm, e.steady_temperature_C, e.cycle_s});
   }
   o += "<h2>Numbers</h2>\n<table>\n";
-  o += row("supply / ambient / mounting", fmt::format("{:.1f} V / {:.1f} degC / tilt {} deg", rq.voltage_V, rq.ambient_C,
-                                                      rq.mounting_tilt_deg));
+  o += row("supply / ambient / mounting", fmt::format("{:.1f} V / {:.1f} degC / tilt {} deg", rq.world.supply.voltage_V, rq.world.thermal.ambient_C,
+                                                      rq.world.mounting_tilt_deg));
   o += row("cycle", e.completed ? fmt::format("{:.4f} s, {:.1f} cycles/min (handshake {:.0f} ms per move)", e.cycle_s,
                                               e.cycles_per_min, e.handshake_s * 1e3)
                                 : std::string("not completed"));
@@ -191,7 +191,7 @@ std::string cycle_report_html(const CycleRequest& rq, const CycleResult& r, cons
   o += "</table>\n<h2>Plots</h2>\n";
   o += segment_time_plot(e);
   if (!e.trace.empty()) o += cycle_speed_torque_plot(rq, e);
-  o += temperature_plot(e.mean_loss_W, rq.ambient_C, rq.thermal_margin_K, e.time_to_trip_s, rq.module.thermal, u);
+  o += temperature_plot(e.mean_loss_W, rq.world.thermal.ambient_C, rq.thermal_margin_K, e.time_to_trip_s, rq.world.module.thermal, u);
   if (!e.trace.empty()) {
     svg::Plot q;
     q.id = "cycle-torque";

@@ -18,24 +18,18 @@ constexpr int kMaxBackoffs = 8;
 double round_tenth(double v) { return std::max(0.1, std::round(v * 10.0) / 10.0); }
 
 // The single-move question for one set (A-SIZE-20): its longest move back
-// and forth with its load, mounting and supply, with the cycle's dwell time
-// shared among its moves.
+// and forth in the cycle's world (supply, ambient, mounting, model card)
+// with the set's load, with the cycle's dwell time shared among its moves.
 SizingRequest single_request(const CycleRequest& rq, const SetPlan& p, double dwell_per_move_s) {
   SizingRequest s;
   s.angle_deg = p.longest_move_deg;
-  s.load = p.load;
-  s.voltage_V = rq.voltage_V;
+  s.world = rq.world;
+  s.world.load = p.load;
   s.dwell_s = std::min(dwell_per_move_s, kMaxDwell_s);
-  s.tolerance_deg = rq.tolerance_deg;
-  s.wait_ms = rq.wait_ms;
-  s.timeout_ms = rq.timeout_ms;
-  s.ambient_C = rq.ambient_C;
+  s.settling = rq.settling;
   s.parameter_set = p.set;
   s.thermal_margin_K = rq.thermal_margin_K;
-  s.source_resistance_ohm = rq.source_resistance_ohm;
-  s.bus_capacitance_F = rq.bus_capacitance_F;
   s.handshake_cycles = rq.handshake_cycles;
-  s.mounting_tilt_deg = rq.mounting_tilt_deg;
   return s;
 }
 

@@ -87,15 +87,8 @@ bool has_load_change(const CycleRequest& rq) {
 CycleRequest cycle_of_single(const SizingRequest& rq) {
   CycleRequest c;
   c.file = "size";
-  c.load = rq.load;
-  c.mounting_tilt_deg = rq.mounting_tilt_deg;
-  c.voltage_V = rq.voltage_V;
-  c.source_resistance_ohm = rq.source_resistance_ohm;
-  c.bus_capacitance_F = rq.bus_capacitance_F;
-  c.ambient_C = rq.ambient_C;
-  c.tolerance_deg = rq.tolerance_deg;
-  c.wait_ms = rq.wait_ms;
-  c.timeout_ms = rq.timeout_ms;
+  c.world = rq.world;
+  c.settling = rq.settling;
   c.thermal_margin_K = rq.thermal_margin_K;
   c.handshake_cycles = rq.handshake_cycles;
   c.cycles = rq.cycles;
@@ -125,11 +118,11 @@ std::string scenario_yaml(const CycleRequest& rq, const std::vector<ParameterSet
   y += fmt::format("# Written by sreh-twin size --emit-scenario: the sized cycle replayed in the twin.\n"
                    "# Run it with: sreh-twin run THIS_FILE\n");
   y += fmt::format("name: {}\n", nlohmann::json(name).dump());
-  if (!rq.model_file.empty()) y += fmt::format("model: {}  # the sizing's --model\n", nlohmann::json(rq.model_file).dump());
+  if (!rq.world.model_file.empty()) y += fmt::format("model: {}  # the sizing's --model\n", nlohmann::json(rq.world.model_file).dump());
   y += "device:\n";
-  y += fmt::format("  supply_V: {}\n  ambient_C: {}\n", num(rq.voltage_V), num(rq.ambient_C));
-  if (rq.source_resistance_ohm > 0) y += fmt::format("  source_resistance_ohm: {}\n", num(rq.source_resistance_ohm));
-  if (rq.bus_capacitance_F > 0) y += fmt::format("  bus_capacitance_F: {}\n", num(rq.bus_capacitance_F));
+  y += fmt::format("  supply_V: {}\n  ambient_C: {}\n", num(rq.world.supply.voltage_V), num(rq.world.thermal.ambient_C));
+  if (rq.world.supply.source_resistance_ohm > 0) y += fmt::format("  source_resistance_ohm: {}\n", num(rq.world.supply.source_resistance_ohm));
+  if (rq.world.supply.bus_capacitance_F > 0) y += fmt::format("  bus_capacitance_F: {}\n", num(rq.world.supply.bus_capacitance_F));
   y += "  isdu:  # every parameter set the cycle uses (manual 6.2, index 64 + n)\n";
   std::vector<std::pair<uint16_t, uint8_t>> written;
   for (const ParameterSetValues& s : sets) {
@@ -139,8 +132,13 @@ std::string scenario_yaml(const CycleRequest& rq, const std::vector<ParameterSet
       y += fmt::format("    - {{index: {}, subindex: {}, value: {}}}  # {}\n", w.index, w.subindex, w.value, w.comment);
     }
   }
-  y += fmt::format("load: {}\n", load_yaml(rq.load));
-  y += fmt::format("mounting: {{tilt_deg: {}}}\n", num(rq.mounting_tilt_deg));
+  y += fmt::format("load: {}\n", load_yaml(rq.world.load));
+  y += fmt::format("mounting: {{tilt_deg: {}}}\n", num(rq.world.mounting_tilt_deg));
+  if (!rq.world.hard_stops.empty()) {
+    std::string stops;
+    for (const HardStop& h : rq.world.hard_stops) stops += fmt::format("{}{{angle_deg: {}}}", stops.empty() ? "" : ", ", num(h.angle_deg));
+    y += "world: {hard_stops: [" + stops + "]}\n";
+  }
   y += "steps:\n";
   y += "  - pd: {motor_on: 1}\n";
   y += "  - wait_until: {state: Ready, within_s: 0.1}\n";
@@ -158,7 +156,7 @@ std::string scenario_yaml(const CycleRequest& rq, const std::vector<ParameterSet
   for (int rep = 0; rep < rq.cycles; ++rep) {
     y += in + fmt::format("- comment: repetition {} of {}\n", rep + 1, rq.cycles);
     if (rep > 0 && has_load_change(rq)) {
-      y += in + fmt::format("- load: {}  # every repetition starts with the cycle's load\n", load_yaml(rq.load));
+      y += in + fmt::format("- load: {}  # every repetition starts with the cycle's load\n", load_yaml(rq.world.load));
     }
     for (std::size_t i = 0; i < rq.segments.size(); ++i) {
       const CycleSegment& seg = rq.segments[i];

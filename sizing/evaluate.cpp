@@ -197,7 +197,7 @@ Rows run_moves(Twin& twin, const SizingRequest& rq, const ParameterSetValues& se
 // dwells (A-SIZE-9) counts with the mean of the last simulated dwell.
 void cycle_means(const SizingRequest& rq, const Thermal& thermal, const std::vector<TraceRow>& rows, const Rows& at,
                  double cycle_s, Evaluation& ev) {
-  const MotorModel& motor = rq.module.drive.motor;
+  const MotorModel& motor = rq.world.module.drive.motor;
   struct Sums { double torque_sq = 0, loss = 0; std::size_t n = 0; };
   auto sums = [&](std::size_t from) {
     Sums s;
@@ -224,10 +224,10 @@ void cycle_means(const SizingRequest& rq, const Thermal& thermal, const std::vec
 } // namespace
 
 Evaluation evaluate(const SizingRequest& rq, const ParameterSetValues& set, bool keep_trace) {
-  const TwinConfig cfg = sizing_twin_config(rq);
+  const TwinConfig cfg = sizing_twin_config(rq.world);
   Twin& twin = fresh_twin(cfg); // as make_twin(cfg) builds it (issue 31)
-  const MotorModel& motor = rq.module.drive.motor;
-  const Thermal thermal(cfg.thermal, rq.module.thermal);
+  const MotorModel& motor = rq.world.module.drive.motor;
+  const Thermal thermal(cfg.thermal, rq.world.module.thermal);
 
   Evaluation ev;
   ev.set = set;
@@ -265,10 +265,10 @@ Evaluation evaluate(const SizingRequest& rq, const ParameterSetValues& set, bool
   const TorqueScan scan = scan_torque(rows, at.first_move, ev);
   ev.completed = reasons.list.empty() && static_cast<int>(ev.moves.size()) == 2 * std::max(1, rq.cycles);
   if (ev.completed) cycle_means(rq, thermal, rows, at, cycle_s, ev);
-  derive_figures(rq.module, rows, at.first_move, at.last_cycle, cycle_s, rq.ambient_C, rq.thermal_margin_K, ev);
+  derive_figures(rq.world.module, rows, at.first_move, at.last_cycle, cycle_s, rq.world.thermal.ambient_C, rq.thermal_margin_K, ev);
   // Feasible with margin (A-SIZE-5); the same checks for a given set, for
   // every set the search tries and for cycles (judge(), limits.cpp).
-  LimitFigures lf = limit_figures(ev, scan, rq.voltage_V, rq.ambient_C, rq.thermal_margin_K);
+  LimitFigures lf = limit_figures(ev, scan, rq.world.supply.voltage_V, rq.world.thermal.ambient_C, rq.thermal_margin_K);
   if (rq.max_positioning_ms) lf.positioning_target = std::pair{ev.positioning_s, *rq.max_positioning_ms * 1e-3};
   if (rq.max_cycle_ms) lf.cycle_target = std::pair{ev.cycle_s, *rq.max_cycle_ms * 1e-3};
   judge_into(lf, std::move(reasons), ev);

@@ -97,11 +97,11 @@ nlohmann::json to_json(const SizingRequest& rq, const SizingResult& r) {
   const Evaluation& e = r.evaluation;
   nlohmann::json j;
   j["mode"] = r.recommended ? "recommend" : "evaluate";
-  j["request"] = {{"angle_deg", rq.angle_deg},   {"load_gcm2", e.load_gcm2},       {"voltage_V", rq.voltage_V},
-                  {"dwell_s", rq.dwell_s},       {"tolerance_deg", rq.tolerance_deg}, {"wait_ms", rq.wait_ms},
-                  {"ambient_C", rq.ambient_C},   {"parameter_set", rq.parameter_set}, {"cycles", rq.cycles},
+  j["request"] = {{"angle_deg", rq.angle_deg},   {"load_gcm2", e.load_gcm2},       {"voltage_V", rq.world.supply.voltage_V},
+                  {"dwell_s", rq.dwell_s},       {"tolerance_deg", rq.settling.tolerance_deg}, {"wait_ms", rq.settling.wait_ms},
+                  {"ambient_C", rq.world.thermal.ambient_C},   {"parameter_set", rq.parameter_set}, {"cycles", rq.cycles},
                   {"thermal_margin_K", rq.thermal_margin_K},
-                  {"mounting_tilt_deg", rq.mounting_tilt_deg},
+                  {"mounting_tilt_deg", rq.world.mounting_tilt_deg},
                   {"handshake_cycles", rq.handshake_cycles},
                   {"max_positioning_ms", optional_number(rq.max_positioning_ms)},
                   {"max_cycle_ms", optional_number(rq.max_cycle_ms)}};
@@ -143,7 +143,7 @@ std::string summary_text(const SizingRequest& rq, const SizingResult& r) {
   const Evaluation& e = r.evaluation;
   std::string s;
   s += fmt::format("Sizing: {} deg back and forth, load {:.1f} g cm^2, {:.1f} V, dwell {} s, ambient {} degC\n",
-                   rq.angle_deg, e.load_gcm2, rq.voltage_V, rq.dwell_s, rq.ambient_C);
+                   rq.angle_deg, e.load_gcm2, rq.world.supply.voltage_V, rq.dwell_s, rq.world.thermal.ambient_C);
   s += fmt::format("{} parameter set {}: speed {:.1f} deg/s, acceleration {:.1f} %, jerk {:.1f} %\n",
                    r.recommended ? (r.feasible ? (r.objective == "gentlest" ? "Gentlest set meeting the target:"
                                                                              : "Fastest feasible set:")

@@ -36,15 +36,15 @@ ParameterSetValues make_parameter_set(const SizingRequest& rq, const MotionSetti
   const param::MotionSet ids{rq.parameter_set};
   ParameterSetValues v;
   v.set = rq.parameter_set;
-  v.voltage_V = rq.voltage_V;
+  v.voltage_V = rq.world.supply.voltage_V;
   // Raw values nearest to the request, within the table's ranges (manual 6.2).
   const int64_t speed = display_to_raw(ids.speed, s.speed_dps);
   const int64_t accel = display_to_raw(ids.acceleration, s.accel_pct);
   const int64_t jerk = display_to_raw(ids.jerk, s.jerk_pct);
   const int64_t load = display_to_raw(ids.load, load_gcm2);
-  const int64_t tol = display_to_raw(ids.tolerance, rq.tolerance_deg);
-  const int64_t wait = display_to_raw(ids.waiting_time, rq.wait_ms);
-  const int64_t timeout = display_to_raw(ids.settling_timeout, rq.timeout_ms.value_or(default_timeout_ms(rq.wait_ms)));
+  const int64_t tol = display_to_raw(ids.tolerance, rq.settling.tolerance_deg);
+  const int64_t wait = display_to_raw(ids.waiting_time, rq.settling.wait_ms);
+  const int64_t timeout = display_to_raw(ids.settling_timeout, rq.settling.timeout_ms.value_or(default_timeout_ms(rq.settling.wait_ms)));
 
   // Read back through the device's own store: same scaling, same rounding.
   ParameterStore store;
@@ -83,11 +83,11 @@ ParameterSetValues make_parameter_set(const SizingRequest& rq, const MotionSetti
   // outside the factory window (the rows' defaults, 18..30 V) needs it
   // widened or the device reports 114.4 (A-SIZE-2).
   const ParamId vmin = param::kMotorVoltageMin, vmax = param::kMotorVoltageMax;
-  if (rq.voltage_V < display_default(vmin)) {
+  if (rq.world.supply.voltage_V < display_default(vmin)) {
     v.writes.push_back({vmin.index, vmin.subindex, parameter_row(vmin).min,
                         fmt::format("motor voltage window minimum {:.1f} V (supply below the factory 18 V)", display_min(vmin))});
   }
-  if (rq.voltage_V > display_default(vmax)) {
+  if (rq.world.supply.voltage_V > display_default(vmax)) {
     v.writes.push_back({vmax.index, vmax.subindex, parameter_row(vmax).max,
                         fmt::format("motor voltage window maximum {:.1f} V (supply above the factory 30 V)", display_max(vmax))});
   }

@@ -59,7 +59,7 @@ std::string numbers_table(const SizingRequest& rq, const SizingResult& r) {
   std::string o = "<table>\n";
   o += row("move", fmt::format("{} deg back and forth, dwell {} s, {} cycles", rq.angle_deg, rq.dwell_s, rq.cycles));
   o += row("load (actual, MuJoCo)", fmt::format("{:.1f} g cm^2", e.load_gcm2));
-  o += row("supply / ambient", fmt::format("{:.1f} V / {:.1f} degC", rq.voltage_V, rq.ambient_C));
+  o += row("supply / ambient", fmt::format("{:.1f} V / {:.1f} degC", rq.world.supply.voltage_V, rq.world.thermal.ambient_C));
   o += row("speed / acceleration / jerk", fmt::format("{:.1f} deg/s / {:.1f} % / {:.1f} %", e.set.setting.speed_dps,
                                                       e.set.setting.accel_pct, e.set.setting.jerk_pct));
   o += row("travel time (1)", fmt::format("{:.4f} s", e.travel_s));
@@ -82,8 +82,8 @@ std::string numbers_table(const SizingRequest& rq, const SizingResult& r) {
 // manual 3.5.3) with the move's operating points: motoring and braking.
 std::string speed_torque_plot(const SizingRequest& rq, const Evaluation& e) {
   svg::Plot p = report_parts::speed_torque_plane(
-      "speed-torque", fmt::format("Speed-torque: operating points and motor capability at {:.1f} V", rq.voltage_V));
-  const svg::Series cap = report_parts::motor_envelope(rq.module.drive.motor, rq.voltage_V, 1.05, "capability (motoring)", "#d62728", 1.6, false);
+      "speed-torque", fmt::format("Speed-torque: operating points and motor capability at {:.1f} V", rq.world.supply.voltage_V));
+  const svg::Series cap = report_parts::motor_envelope(rq.world.module.drive.motor, rq.world.supply.voltage_V, 1.05, "capability (motoring)", "#d62728", 1.6, false);
   svg::Series motoring{"motoring", {}, {}, "#1f77b4", 1.0, false, true};
   svg::Series braking{"braking", {}, {}, "#ff7f0e", 1.0, false, true};
   for (const TraceRow& r : e.trace) {
@@ -180,9 +180,9 @@ bool reports_available() { return true; }
 
 std::string size_report_html(const SizingRequest& rq, const SizingResult& r, const UncertaintyResult* u) {
   const Evaluation& e = r.evaluation;
-  std::string o = page_head(fmt::format("Sizing: {} deg, {:.0f} g cm^2, {:.1f} V", rq.angle_deg, e.load_gcm2, rq.voltage_V));
+  std::string o = page_head(fmt::format("Sizing: {} deg, {:.0f} g cm^2, {:.1f} V", rq.angle_deg, e.load_gcm2, rq.world.supply.voltage_V));
   // The verdict first (issue 29), from the figures the text and JSON print.
-  o += report_parts::verdict_block({&e, r.feasible, r.binding_limit, rq.thermal_margin_K, rq.ambient_C, e.set.setting.speed_dps,
+  o += report_parts::verdict_block({&e, r.feasible, r.binding_limit, rq.thermal_margin_K, rq.world.thermal.ambient_C, e.set.setting.speed_dps,
                                     e.load_gcm2});
   if (u) {
     o += report_parts::uncertainty_section(
@@ -246,7 +246,7 @@ std::string size_report_html(const SizingRequest& rq, const SizingResult& r, con
     te.bands = {{{}, {}, -e.set.tolerance_deg, e.set.tolerance_deg, "tolerance window", "#2ca02c", 0.15}};
     o += report::figure(te);
   }
-  o += temperature_plot(e.mean_loss_W, rq.ambient_C, rq.thermal_margin_K, e.time_to_trip_s, rq.module.thermal, u);
+  o += temperature_plot(e.mean_loss_W, rq.world.thermal.ambient_C, rq.thermal_margin_K, e.time_to_trip_s, rq.world.module.thermal, u);
   o += "<p class=\"note\">Travel time from the device's planner; settling and positioning simulated; torque "
        "sampled per IO-Link cycle; temperature from the twin's lumped thermal model at the cycle's mean loss "
        "(docs/assumptions/sizing.md).</p>\n" + io::html_page_close();
@@ -263,7 +263,7 @@ std::string sweep_report_html(const SweepRequest& rq, const SweepResult& result,
   std::size_t feasible = 0;
   for (const SweepPoint& p : result.points) feasible += p.result.evaluation.feasible ? 1 : 0;
   o += fmt::format("<p>{} of {} points feasible; dwell {} s, ambient {} degC; {}.</p>\n", feasible,
-                   result.points.size(), rq.base.dwell_s, rq.base.ambient_C,
+                   result.points.size(), rq.base.dwell_s, rq.base.world.thermal.ambient_C,
                    rq.speeds_dps.empty() ? "recommended set per point"
                                          : fmt::format("given acceleration {} %, jerk {} %", rq.accel_pct, rq.jerk_pct));
   // Every point's verdict (issue 29), from the figures its CSV row carries.
@@ -271,7 +271,7 @@ std::string sweep_report_html(const SweepRequest& rq, const SweepResult& result,
   for (const SweepPoint& pt : result.points) {
     const Evaluation& e = pt.result.evaluation;
     verdicts.push_back({fmt::format("{} deg, {} g cm^2, {:.1f} V, {:.1f} deg/s", pt.angle_deg, pt.load_gcm2, pt.voltage_V, e.set.tidy.speed_dps),
-                        {&e, e.feasible, e.binding_limit, rq.base.thermal_margin_K, rq.base.ambient_C, e.set.tidy.speed_dps, e.load_gcm2}});
+                        {&e, e.feasible, e.binding_limit, rq.base.thermal_margin_K, rq.base.world.thermal.ambient_C, e.set.tidy.speed_dps, e.load_gcm2}});
   }
   o += "<h2>Verdict per point</h2>\n" + report_parts::verdict_table(verdicts, 200);
   const std::vector<SweepGroup> groups = sweep_groups(result);

@@ -30,18 +30,10 @@ void write_all(Twin& twin, const std::vector<IsduWrite>& writes); // throws std:
 double read_display(Twin& twin, ParamId id);
 int cycles_for(double seconds, double cycle_s);
 
-// The twin a sizing run drives: the request's load, supply, mounting and
-// ambient, trace recorded (SizingRequest and CycleRequest alike).
-template <class Request>
-TwinConfig sizing_twin_config(const Request& rq) {
-  TwinConfig cfg;
-  cfg.load = rq.load;
-  cfg.supply.voltage_V = rq.voltage_V;
-  cfg.supply.source_resistance_ohm = rq.source_resistance_ohm;
-  cfg.supply.bus_capacitance_F = rq.bus_capacitance_F;
-  cfg.mounting_tilt_deg = rq.mounting_tilt_deg;
-  cfg.thermal.ambient_C = rq.ambient_C;
-  cfg.module = rq.module;
+// The twin a sizing run drives: the request's world (SizingRequest and
+// CycleRequest alike), trace recorded.
+inline TwinConfig sizing_twin_config(const WorldSpec& world) {
+  TwinConfig cfg = twin_config(world);
   cfg.record_trace = true;
   cfg.visual_detail = false; // never rendered: coarse textures, faster builds (issue 31)
   return cfg;

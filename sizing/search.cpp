@@ -64,14 +64,14 @@ Profile planned(const SizingRequest& rq, const MotionSetting& s, double load_gcm
 // was ~10 % of a sweep's CPU time), the gentlest one for all.
 void with_proxies(const SizingRequest& rq, double load_gcm2, double fixed_s, Candidate& c) {
   if (c.proxies) return;
-  const MotorModel& motor = rq.module.drive.motor;
+  const MotorModel& motor = rq.world.module.drive.motor;
   const Profile p = planned(rq, c.setting, load_gcm2);
   constexpr int kSamples = 48;
   double sq = 0;
   for (int k = 0; k < kSamples; ++k) {
     const KinematicState st = p.at((k + 0.5) * p.duration_s() / kSamples);
     sq += st.acc_rad_s2 * st.acc_rad_s2;
-    const double cap = motor.max_torque_Nm(std::abs(st.vel_rad_s), rq.voltage_V, st.acc_rad_s2 * st.vel_rad_s >= 0 ? 1.0 : -1.0);
+    const double cap = motor.max_torque_Nm(std::abs(st.vel_rad_s), rq.world.supply.voltage_V, st.acc_rad_s2 * st.vel_rad_s >= 0 ? 1.0 : -1.0);
     c.torque_proxy = std::max(c.torque_proxy, std::abs(st.acc_rad_s2) / std::max(cap, 1e-6));
   }
   c.rms_proxy = std::sqrt(sq / kSamples);
@@ -88,7 +88,7 @@ double fixed_per_move_s(const SizingRequest& rq, double load_gcm2) {
 // Every grid point with its planned travel; speeds the move never reaches
 // collapse into the lowest such speed (same trajectory, same behaviour).
 std::vector<Candidate> candidates(const SizingRequest& rq, double load_gcm2) {
-  const double v_top = voltage_speed_limit_dps(rq.voltage_V);
+  const double v_top = voltage_speed_limit_dps(rq.world.supply.voltage_V);
   std::vector<Candidate> out;
   out.reserve(std::size(kLevels_pct) * std::size(kLevels_pct) * std::size(kLevels_pct));
   for (double a : kLevels_pct) {
@@ -152,11 +152,11 @@ struct Runner {
     const bool limit_failed =
         !ev.feasible && ev.binding_limit != "max_positioning" && ev.binding_limit != "max_cycle";
     if (limit_failed) {
-      const double allowed_rise = kTemperatureWarning_C - rq.thermal_margin_K - rq.ambient_C;
+      const double allowed_rise = kTemperatureWarning_C - rq.thermal_margin_K - rq.world.thermal.ambient_C;
       const double torque_used =
           std::max(1.0 - ev.min_torque_headroom, ev.peak_torque_Nm / ev.torque_capability_Nm) / kTorqueMargin;
       if (ev.binding_limit == "temperature" && ev.completed && allowed_rise > 0 && c.heat_proxy > 0) {
-        heat.push_back({c.heat_proxy, std::max(1.0, (ev.steady_temperature_C - rq.ambient_C) / allowed_rise)});
+        heat.push_back({c.heat_proxy, std::max(1.0, (ev.steady_temperature_C - rq.world.thermal.ambient_C) / allowed_rise)});
       } else if (ev.binding_limit == "torque_at_speed" && ev.completed && c.torque_proxy > 0) {
         torque.push_back({c.torque_proxy, std::max(1.0, torque_used)});
       } else {

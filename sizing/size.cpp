@@ -29,6 +29,15 @@ void check_row(const char* option, double value, ParamId row, const char* unit, 
 
 } // namespace
 
+WorldRanges sizing_world_ranges() {
+  WorldRanges r;
+  r.min_supply_V = min_voltage_V();
+  r.max_supply_V = max_voltage_V();
+  r.min_ambient_C = 0.0; // A-SIZE-1
+  r.max_ambient_C = 50.0;
+  return r;
+}
+
 ModuleModel module_from_option(const std::string& model_path) {
   try {
     return load_module_model(model_path);
@@ -45,22 +54,26 @@ double validate(const SizingRequest& rq) {
     throw SizingInputError(fmt::format("--angle-deg {} is no move: below one position count (360/65536 deg, manual 2.5)",
                                        rq.angle_deg));
   }
-  check_range("--voltage-V", rq.voltage_V, min_voltage_V(), max_voltage_V(), " V",
+  const WorldRanges world = sizing_world_ranges();
+  check_range("--voltage-V", rq.world.supply.voltage_V, world.min_supply_V, world.max_supply_V, " V",
               "the motor voltage window index 85 can be configured to, manual 6.2");
   check_range("--dwell-s", rq.dwell_s, 0.0, kMaxDwell_s, " s", "A-SIZE-1");
   const param::MotionSet set(0); // every set has the same rows
-  check_row("--tolerance-deg", rq.tolerance_deg, set.tolerance, " deg", "index 64+n.5: uint16 of 2^-19 rev, manual 6.2");
-  check_row("--wait-ms", rq.wait_ms, set.waiting_time, " ms", "index 64+n.6, manual 6.2");
-  if (rq.timeout_ms) check_row("--timeout-ms", *rq.timeout_ms, set.settling_timeout, " ms", "index 64+n.7, manual 6.2");
-  check_range("--ambient-C", rq.ambient_C, 0.0, 50.0, " degC", "A-SIZE-1");
+  check_row("--tolerance-deg", rq.settling.tolerance_deg, set.tolerance, " deg", "index 64+n.5: uint16 of 2^-19 rev, manual 6.2");
+  check_row("--wait-ms", rq.settling.wait_ms, set.waiting_time, " ms", "index 64+n.6, manual 6.2");
+  if (rq.settling.timeout_ms) {
+    check_row("--timeout-ms", *rq.settling.timeout_ms, set.settling_timeout, " ms", "index 64+n.7, manual 6.2");
+  }
+  check_range("--ambient-C", rq.world.thermal.ambient_C, world.min_ambient_C, world.max_ambient_C, " degC", "A-SIZE-1");
   check_range("--parameter-set", rq.parameter_set, 0, param::kMotionSets - 1, "", "index 64..71, manual 6.2");
   check_range("--cycles", rq.cycles, 1, 20, "", "A-SIZE-3");
   check_range("--thermal-margin-K", rq.thermal_margin_K, 0.0, kMaxThermalMargin_K, " K",
               "required distance below the 70 degC warning, A-SIZE-5");
   if (rq.max_positioning_ms) check_range("--max-positioning-ms", *rq.max_positioning_ms, 1.0, 600000.0, " ms", "A-SIZE-10");
-  check_range("--source-resistance-ohm", rq.source_resistance_ohm, 0.0, 10.0, " ohm", "A-SIZE-15");
-  check_range("--bus-capacitance-F", rq.bus_capacitance_F, 0.0, 1.0, " F", "A-SIZE-15");
-  check_range("--mounting-tilt-deg", rq.mounting_tilt_deg, 0.0, 180.0, " deg", "0 vertical, 90 horizontal, A-TWIN-24");
+  check_range("--source-resistance-ohm", rq.world.supply.source_resistance_ohm, 0.0, kMaxSourceResistance_ohm, " ohm",
+              "A-SCN-22");
+  check_range("--bus-capacitance-F", rq.world.supply.bus_capacitance_F, 0.0, kMaxBusCapacitance_F, " F", "A-SCN-22");
+  check_range("--mounting-tilt-deg", rq.world.mounting_tilt_deg, 0.0, 180.0, " deg", "0 vertical, 90 horizontal, A-TWIN-24");
   check_range("--handshake-cycles", rq.handshake_cycles, 0, 100, "", "IO-Link cycles per move, A-SIZE-16");
   if (rq.max_cycle_ms) check_range("--max-cycle-ms", *rq.max_cycle_ms, 1.0, 600000.0, " ms", "A-SIZE-10");
   if (rq.setting) {
@@ -69,7 +82,7 @@ double validate(const SizingRequest& rq) {
     check_row("--accel-pct", rq.setting->accel_pct, set.acceleration, " %", why);
     check_row("--jerk-pct", rq.setting->jerk_pct, set.jerk, " %", why);
   }
-  if (const auto* j = std::get_if<InertiaLoad>(&rq.load)) {
+  if (const auto* j = std::get_if<InertiaLoad>(&rq.world.load)) {
     if (!std::isfinite(j->inertia_gcm2) || j->inertia_gcm2 < 0 || j->inertia_gcm2 > max_load_gcm2()) {
       throw SizingInputError(fmt::format(
           "--load-gcm2 {} is outside 0 .. {} g cm^2 (the module's load limit, manual 3.5.6, 6.2 index 64.4)",
@@ -81,7 +94,7 @@ double validate(const SizingRequest& rq) {
   double load = 0;
   try {
     const TwinConfig cfg;
-    load = kgm2_to_gcm2(built_load_inertia_kgm2(rq.load, cfg.hard_stops, cfg.physics_dt_s, cfg.module.mechanics));
+    load = kgm2_to_gcm2(built_load_inertia_kgm2(rq.world.load, cfg.hard_stops, cfg.physics_dt_s, cfg.module.mechanics));
   } catch (const std::invalid_argument& e) {
     throw SizingInputError(e.what());
   }

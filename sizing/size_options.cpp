@@ -90,35 +90,36 @@ SizingRequest make_request(const SizeOptions& a) {
     throw SizingInputError(fmt::format("--load-gcm2 {}: above 0 but below {} g cm^2, too small to model; give 0 for no load",
                                        *a.load_gcm2, kMinInertiaGcm2));
   }
-  if (a.load_gcm2) rq.load = InertiaLoad{*a.load_gcm2};
+  if (a.load_gcm2) rq.world.load = InertiaLoad{*a.load_gcm2};
   else if (!a.load.empty()) {
     LoadFileContents f = read_load_file(a.load);
-    rq.load = std::move(f.load);
-    rq.mounting_tilt_deg = f.mounting_tilt_deg.value_or(0.0);
+    rq.world.load = std::move(f.load);
+    rq.world.mounting_tilt_deg = f.mounting_tilt_deg.value_or(0.0);
   }
   else throw SizingInputError("size: give the load with --load-gcm2 J or --load LOAD.yaml");
-  rq.voltage_V = a.voltage_V;
+  rq.world.supply.voltage_V = a.voltage_V;
   rq.dwell_s = a.dwell_s;
-  rq.tolerance_deg = a.tolerance_deg;
-  rq.wait_ms = a.wait_ms;
-  rq.timeout_ms = a.timeout_ms;
-  rq.ambient_C = a.ambient_C;
+  rq.settling.tolerance_deg = a.tolerance_deg;
+  rq.settling.wait_ms = a.wait_ms;
+  rq.settling.timeout_ms = a.timeout_ms;
+  rq.world.thermal.ambient_C = a.ambient_C;
   rq.parameter_set = a.parameter_set;
   rq.cycles = a.cycles;
   rq.thermal_margin_K = a.thermal_margin_K;
   rq.max_positioning_ms = a.max_positioning_ms;
   rq.max_cycle_ms = a.max_cycle_ms;
-  rq.source_resistance_ohm = a.source_resistance_ohm;
-  rq.bus_capacitance_F = a.bus_capacitance_F;
+  rq.world.supply.source_resistance_ohm = a.source_resistance_ohm;
+  rq.world.supply.bus_capacitance_F = a.bus_capacitance_F;
   rq.handshake_cycles = a.handshake_cycles;
-  if (a.mounting_tilt_deg) rq.mounting_tilt_deg = *a.mounting_tilt_deg;
+  if (a.mounting_tilt_deg) rq.world.mounting_tilt_deg = *a.mounting_tilt_deg;
   if (a.speed_dps || a.accel_pct || a.jerk_pct) {
     // Options left out keep the factory value of sets 1..7 (manual 6.2).
     const MotionSetting factory;
     rq.setting = MotionSetting{a.speed_dps.value_or(factory.speed_dps), a.accel_pct.value_or(factory.accel_pct),
                                a.jerk_pct.value_or(factory.jerk_pct)};
   }
-  rq.module = module_from_option(a.model);
+  rq.world.module = module_from_option(a.model);
+  if (!a.model.empty()) rq.world.model_file = std::filesystem::absolute(a.model).lexically_normal().string(); // --emit-scenario names it
   rq.keep_trace = !a.report.empty();
   return rq;
 }
@@ -147,22 +148,29 @@ void refuse_with_cycle(const SizeOptions& a) {
   }
 }
 
-// The card the uncertainty samples: the model card with --model's values and ranges.
-ModelCard card_of(const SizeOptions& a) {
-  return a.model.empty() ? default_model_card() : apply_model_file(default_model_card(), a.model);
+// The card the uncertainty samples: the model card with the world's model
+// file (--model, or a cycle file's `model:`) applied, values and ranges.
+ModelCard card_of(const WorldSetup& world) {
+  return world.model_file.empty() ? default_model_card() : apply_model_file(default_model_card(), world.model_file);
 }
 
 SizeOutcome run_cycle(const SizeOptions& a) {
   refuse_with_cycle(a);
   SizeOutcome out;
   CycleRequest rq = parse_cycle_file(a.cycle);
-  rq.module = module_from_option(a.model);
-  if (!a.model.empty()) rq.model_file = std::filesystem::absolute(a.model).lexically_normal().string(); // --emit-scenario names it
+  if (!a.model.empty()) { // the file's own `model:` or --model, not both (A-SCN-22)
+    if (!rq.world.model_file.empty()) {
+      throw SizingInputError(fmt::format("--model {}: the cycle file names its own model ({}); give one of them",
+                                         a.model, rq.world.model_loc.str()));
+    }
+    rq.world.module = module_from_option(a.model);
+    rq.world.model_file = std::filesystem::absolute(a.model).lexically_normal().string(); // --emit-scenario names it
+  }
   rq.keep_trace = !a.report.empty();
   out.cycle_result = size_cycle(rq);
   std::optional<UncertaintyResult> u;
   if (a.uncertainty) {
-    u = cycle_uncertainty(rq, plan_sets(rq), out.cycle_result.settings, card_of(a), out.cycle_result.evaluation,
+    u = cycle_uncertainty(rq, plan_sets(rq), out.cycle_result.settings, card_of(rq.world), out.cycle_result.evaluation,
                           a.samples, static_cast<uint64_t>(a.seed), io::usable_cpus());
   }
   if (!a.report.empty()) {
@@ -209,7 +217,7 @@ SizeOutcome run_size(const SizeOptions& a) {
   out.result = size(out.request);
   std::optional<UncertaintyResult> u;
   if (a.uncertainty) {
-    u = size_uncertainty(out.request, card_of(a), out.result.evaluation, a.samples, static_cast<uint64_t>(a.seed),
+    u = size_uncertainty(out.request, card_of(out.request.world), out.result.evaluation, a.samples, static_cast<uint64_t>(a.seed),
                          io::usable_cpus());
   }
   if (!a.report.empty()) {
@@ -220,8 +228,7 @@ SizeOutcome run_size(const SizeOptions& a) {
     }
   }
   if (!a.emit_scenario.empty()) {
-    CycleRequest c = cycle_of_single(out.request);
-    if (!a.model.empty()) c.model_file = std::filesystem::absolute(a.model).lexically_normal().string();
+    const CycleRequest c = cycle_of_single(out.request);
     write_scenario_file(a.emit_scenario,
                         scenario_yaml(c, {out.result.evaluation.set}, {out.request.parameter_set, -1, out.request.parameter_set, -1},
                                       fmt::format("sized move {} deg back and forth", out.request.angle_deg)));

@@ -18,19 +18,20 @@ struct SizeOptions {
   std::optional<double> angle_deg; // required unless --cycle
   std::optional<double> load_gcm2;
   std::string load;          // --load LOAD.yaml
-  double voltage_V = 24.0;
+  // Defaults: the world's and the settling spec's, never retyped.
+  double voltage_V = SupplySpec{}.voltage_V;
   double dwell_s = 0.0;
-  double tolerance_deg = 0.1;
-  double wait_ms = 25.0;
+  double tolerance_deg = SettlingSpec{}.tolerance_deg;
+  double wait_ms = SettlingSpec{}.wait_ms;
   std::optional<double> timeout_ms;
-  double ambient_C = 25.0;
+  double ambient_C = ThermalSpec{}.ambient_C;
   std::optional<double> speed_dps, accel_pct, jerk_pct;
   int parameter_set = 1;
   int cycles = 2;
   double thermal_margin_K = 5.0;
   std::optional<double> max_positioning_ms, max_cycle_ms;
-  double source_resistance_ohm = 0.0;
-  double bus_capacitance_F = 0.0;
+  double source_resistance_ohm = SupplySpec{}.source_resistance_ohm;
+  double bus_capacitance_F = SupplySpec{}.bus_capacitance_F;
   int handshake_cycles = 4;
   std::optional<double> mounting_tilt_deg;
   std::string report;        // HTML report folder ("" none)

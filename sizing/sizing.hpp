@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "device_logic/parameter_ids.hpp"
+#include "scenarios/world.hpp"
 #include "twin/trace.hpp"
 #include "twin/twin.hpp"
 
@@ -31,15 +33,25 @@ struct MotionSetting {
   double jerk_pct = 100.0;
 };
 
+// The settling rows every motion set repeats (manual 3.5.7, 6.2: 64+n.5..7),
+// written alike to every set a sizing uses; one spec for the command line,
+// single moves and cycles.
+struct SettlingSpec {
+  // 64+n.5: the manual's factory default 0.1 deg, as users give it; the
+  // table keeps it as 146 counts (0.10025 deg), which 0.1 rounds to.
+  double tolerance_deg = 0.1;
+  double wait_ms = display_default(param::MotionSet(0).waiting_time); // 64+n.6, the table's default
+  std::optional<double> timeout_ms; // 64+n.7; unset: A-SIZE-4
+};
+
 struct SizingRequest {
   double angle_deg = 90.0;       // move distance; the cycle goes 0 -> A -> 0
-  LoadSpec load = NoLoad{};
-  double voltage_V = 24.0;       // motor supply, 16..32 V (index 85 window, A-SIZE-2)
+  // Load, supply (16..32 V, the index 85 window, A-SIZE-2; the source
+  // model, A-SIZE-15), ambient, mounting (A-TWIN-24) and the model card
+  // (`--model FILE`, issue 25): the same world a scenario runs in.
+  WorldSetup world;
   double dwell_s = 0.0;          // pause after each move (after Done)
-  double tolerance_deg = 0.1;    // 64+n.5, factory default
-  double wait_ms = 25.0;         // 64+n.6, factory default
-  std::optional<double> timeout_ms; // 64+n.7; unset: A-SIZE-4
-  double ambient_C = 25.0;
+  SettlingSpec settling;
   int parameter_set = 1;         // which of 64..71 the writes and moves use
   std::optional<MotionSetting> setting; // given: evaluate it; unset: recommend one
   int cycles = 2;                // back-and-forth cycles simulated (A-SIZE-3)
@@ -51,19 +63,10 @@ struct SizingRequest {
   // (lowest RMS torque) meeting it; an explicit set must meet it to be feasible.
   std::optional<double> max_positioning_ms; // worst move's positioning time
   std::optional<double> max_cycle_ms;       // cycle_s (2 positionings + 2 dwells)
-  // The 24 V source as the twin models it (SupplySpec): 0 ohm is ideal.
-  double source_resistance_ohm = 0.0;
-  double bus_capacitance_F = 0.0;
   // IO-Link cycles per move the PLC handshake adds to the cycle (A-SIZE-16):
   // Move reaches the device (1), Done comes back (1), the PLC reacts (1),
   // Move stays low one cycle before the next command (manual 3.2 T7) (1).
   int handshake_cycles = 4;
-  // Mounting (A-TWIN-24): axis tilt from vertical, 0 = vertical (gravity
-  // along the axis, no torque), 90 = horizontal (an eccentric load's weight
-  // loads the motor).
-  double mounting_tilt_deg = 0.0;
-  // The module's constants (model card, `--model FILE`): issue 25.
-  ModuleModel module = default_module_model();
 };
 
 // What the motor supply sees (issue 17, A-SIZE-15), from the trace.
@@ -181,6 +184,9 @@ inline constexpr double kMaxDwell_s = 60.0;
 // configured to (A-SIZE-2).
 double min_voltage_V();
 double max_voltage_V();
+// The world a sizing accepts (A-SCN-22): the supply within the index 85
+// window (A-SIZE-2), the ambient 0 .. 50 degC (A-SIZE-1); the rest as any world.
+WorldRanges sizing_world_ranges();
 // Index 64+n.1: the highest speed a set can ask for, deg/s.
 double max_speed_dps();
 inline constexpr double kTemperatureWarning_C = 70.0; // manual 7.3 115.1

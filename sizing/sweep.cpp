@@ -48,9 +48,9 @@ std::vector<SizingRequest> sweep_requests(const SweepRequest& rq) {
       for (double voltage : rq.voltages_V) {
         for (std::size_t s = 0; s < settings; ++s) {
           SizingRequest r = rq.base;
-          r.load = InertiaLoad{load};
+          r.world.load = InertiaLoad{load};
           r.angle_deg = angle;
-          r.voltage_V = voltage;
+          r.world.supply.voltage_V = voltage;
           r.keep_trace = false;
           if (!rq.speeds_dps.empty()) r.setting = MotionSetting{rq.speeds_dps[s], rq.accel_pct, rq.jerk_pct};
           else r.setting.reset();
@@ -85,9 +85,9 @@ SweepResult run_sweep(const SweepRequest& rq) {
     for (std::size_t i = next++; i < requests.size(); i = next++) {
       SweepPoint& p = result.points[i];
       const SizingRequest& r = requests[i];
-      p.load_gcm2 = std::get<InertiaLoad>(r.load).inertia_gcm2;
+      p.load_gcm2 = std::get<InertiaLoad>(r.world.load).inertia_gcm2;
       p.angle_deg = r.angle_deg;
-      p.voltage_V = r.voltage_V;
+      p.voltage_V = r.world.supply.voltage_V;
       if (r.setting) p.speed_dps = r.setting->speed_dps;
       try {
         p.result = size(r);

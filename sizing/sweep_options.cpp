@@ -97,12 +97,12 @@ SweepRequest make_sweep_request(const SweepOptions& a) {
   rq.accel_pct = a.accel_pct;
   rq.jerk_pct = a.jerk_pct;
   rq.base.dwell_s = a.dwell_s;
-  rq.base.tolerance_deg = a.tolerance_deg;
-  rq.base.wait_ms = a.wait_ms;
-  rq.base.timeout_ms = a.timeout_ms;
-  rq.base.ambient_C = a.ambient_C;
+  rq.base.settling.tolerance_deg = a.tolerance_deg;
+  rq.base.settling.wait_ms = a.wait_ms;
+  rq.base.settling.timeout_ms = a.timeout_ms;
+  rq.base.world.thermal.ambient_C = a.ambient_C;
   rq.base.cycles = a.cycles;
-  rq.base.module = module_from_option(a.model);
+  rq.base.world.module = module_from_option(a.model);
   if (a.uncertainty) {
     if (a.samples < 2 || a.samples > 1000) throw SizingInputError(fmt::format("--samples {}: expected 2 .. 1000", a.samples));
     rq.uncertainty = true;

@@ -15,9 +15,11 @@
 namespace sreh::sizing {
 
 struct SweepOptions {
-  std::vector<double> loads_gcm2, angles_deg, voltages_V{24.0}, speeds_dps, targets_s;
+  std::vector<double> loads_gcm2, angles_deg, voltages_V{SupplySpec{}.voltage_V}, speeds_dps, targets_s;
   double accel_pct = 100.0, jerk_pct = 100.0;
-  double dwell_s = 0.0, tolerance_deg = 0.1, wait_ms = 25.0, ambient_C = 25.0;
+  // Defaults: the world's and the settling spec's, never retyped.
+  double dwell_s = 0.0, tolerance_deg = SettlingSpec{}.tolerance_deg, wait_ms = SettlingSpec{}.wait_ms,
+         ambient_C = ThermalSpec{}.ambient_C;
   std::optional<double> timeout_ms;
   int cycles = 2;
   int threads = 0; // 0: io::default_threads (the CPUs this process may use, SLURM_CPUS_PER_TASK if fewer)

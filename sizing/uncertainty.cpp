@@ -128,7 +128,7 @@ UncertaintyResult size_uncertainty(const SizingRequest& request, const ModelCard
   std::vector<Outcome> outcomes(cards.size());
   io::parallel_for(cards.size(), threads, [&](std::size_t i) {
     SizingRequest rq = request;
-    rq.module = cards[i].module_model();
+    rq.world.module = cards[i].module_model();
     outcomes[i] = outcome_of(evaluate(rq, nominal.set, false));
   });
   return bands(card, samples, seed, outcome_of(nominal), outcomes);
@@ -141,7 +141,7 @@ UncertaintyResult cycle_uncertainty(const CycleRequest& request, const CyclePlan
   std::vector<Outcome> outcomes(cards.size());
   io::parallel_for(cards.size(), threads, [&](std::size_t i) {
     CycleRequest rq = request;
-    rq.module = cards[i].module_model();
+    rq.world.module = cards[i].module_model();
     outcomes[i] = outcome_of(evaluate_cycle(rq, plan, settings, false));
   });
   return bands(card, samples, seed, outcome_of(nominal), outcomes);

@@ -106,9 +106,9 @@ class VideoHook {
   explicit VideoHook(const Scenario& s) {
     title_.scenario_name = s.name;
     title_.scenario_file = s.file;
-    title_.load = describe_load(s.load);
-    title_.mounting_tilt_deg = s.mounting_tilt_deg;
-    title_.supply_V = s.device.supply_V;
+    title_.load = describe_load(s.world.load);
+    title_.mounting_tilt_deg = s.world.mounting_tilt_deg;
+    title_.supply_V = s.world.supply.voltage_V;
   }
   void on_step(const Step& step) { step_ = step.number + " " + step.kind; }
   void on_cycle(const Twin& twin) {
@@ -217,9 +217,9 @@ RunResult timed_run(const Scenario& scenario, const RunOptions& options, double&
 std::vector<std::string> inputs_of(const RunArgs& a, const Scenario& s) {
   std::vector<std::string> in{a.scenario};
   if (s.device.nvm_image_path) in.push_back(*s.device.nvm_image_path);
-  if (!s.model_file.empty()) in.push_back(s.model_file);
+  if (!s.world.model_file.empty()) in.push_back(s.world.model_file);
   if (!a.model.empty()) in.push_back(a.model);
-  for (const std::string& f : load_input_files(s.load)) in.push_back(f); // MJCF and mesh files
+  for (const std::string& f : load_input_files(s.world.load)) in.push_back(f); // MJCF and mesh files
   return in;
 }
 

@@ -23,7 +23,7 @@ inline Scenario plan_scenario(double load_gcm2) {
 // The master log of `scenario` run on a module with `card`; with a seed,
 // one wire count of uniform noise added to every logged position.
 inline MasterLog record_log(Scenario scenario, const ModelCard& card, std::optional<unsigned> noise_seed = {}) {
-  scenario.module = card.module_model();
+  scenario.world.module = card.module_model();
   MasterLog log;
   log.path = "recorded.csv";
   log.has_temperature = true;
@@ -77,7 +77,7 @@ steps:
   - wait_s: 0.2
 )",
                                    "held_out.yaml", "");
-  s.module = card.module_model();
+  s.world.module = card.module_model();
   RunOptions o;
   const RunResult r = run_scenario(s, o);
   return r.moves.at(0);

@@ -68,7 +68,7 @@ expect:
   EXPECT_EQ(s.device.isdu[0].index, 65);
   EXPECT_EQ(s.device.isdu[0].subindex, 4);
   EXPECT_EQ(s.device.isdu[0].data, (std::vector<uint8_t>{0x07, 0xD0})); // uint16 2000, big-endian (manual 6.2)
-  const auto& disk = std::get<DiskLoad>(s.load);
+  const auto& disk = std::get<DiskLoad>(s.world.load);
   EXPECT_DOUBLE_EQ(disk.mass_kg, 0.2);
   EXPECT_DOUBLE_EQ(disk.radius_m, 0.1);
   ASSERT_EQ(s.steps.size(), 15u);
@@ -112,7 +112,7 @@ TEST(ScenarioParser, AssemblyPartsWithOffsetsAndNames_Issue28) {
   const Scenario s = parse("name: x\nload:\n  parts:\n    - box: {mass_kg: 0.2, x_m: 0.02, y_m: 0.02, z_m: 0.02}\n"
                            "      at_m: [0.06, 0, 0.02]\n      rpy_deg: [0, 0, 45]\n      name: cube\n"
                            "    - point: {mass_kg: 0.1}\n      at_m: [0, 0.05, 0]\nsteps:\n  - wait_s: 0.1\n");
-  const auto& a = std::get<AssemblyLoad>(s.load);
+  const auto& a = std::get<AssemblyLoad>(s.world.load);
   ASSERT_EQ(a.parts.size(), 2u);
   EXPECT_EQ(a.parts[0].at_m, (std::array<double, 3>{0.06, 0, 0.02}));
   EXPECT_EQ(a.parts[0].rpy_deg[2], 45);

@@ -62,11 +62,11 @@ TEST(CycleFile, ReadsTheIssueShape) {
       "  - {dwell_s: 0.2}\n"
       "  - {load: {inertia_gcm2: 4000}}\n"
       "  - {move_deg: -45, relative: true, parameter_set: 3, process_torque_Nm: 0.1}\n");
-  EXPECT_EQ(c.mounting_tilt_deg, 90.0);
-  EXPECT_TRUE(std::holds_alternative<ArmLoad>(c.load));
-  EXPECT_EQ(c.voltage_V, 20.0);
-  EXPECT_EQ(c.source_resistance_ohm, 0.5);
-  EXPECT_EQ(c.ambient_C, 35.0);
+  EXPECT_EQ(c.world.mounting_tilt_deg, 90.0);
+  EXPECT_TRUE(std::holds_alternative<ArmLoad>(c.world.load));
+  EXPECT_EQ(c.world.supply.voltage_V, 20.0);
+  EXPECT_EQ(c.world.supply.source_resistance_ohm, 0.5);
+  EXPECT_EQ(c.world.thermal.ambient_C, 35.0);
   ASSERT_EQ(c.segments.size(), 4u);
   EXPECT_EQ(std::get<CycleMove>(c.segments[0].what).target_deg, 90.0);
   EXPECT_EQ(std::get<CycleDwell>(c.segments[1].what).dwell_s, 0.2);

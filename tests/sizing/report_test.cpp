@@ -20,7 +20,7 @@ TEST(Report, SizeReportHasPlotsNumbersAndWrites) {
   if (!reports_available()) GTEST_SKIP() << "built without renders";
   SizingRequest rq;
   rq.angle_deg = 30;
-  rq.load = InertiaLoad{1000};
+  rq.world.load = InertiaLoad{1000};
   rq.setting = MotionSetting{1000, 100, 100};
   rq.cycles = 1;
   rq.keep_trace = true;
@@ -62,7 +62,7 @@ TEST(Report, SizeReportOpensWithTheVerdictOfTheJson) {
   if (!reports_available()) GTEST_SKIP() << "built without renders";
   SizingRequest rq;
   rq.angle_deg = 90;
-  rq.load = InertiaLoad{2000};
+  rq.world.load = InertiaLoad{2000};
   rq.cycles = 1;
   rq.keep_trace = true;
   const SizingResult r = size(rq);
@@ -103,7 +103,7 @@ TEST(Report, SizeReportShowsTheUncertaintyBands) {
   if (!reports_available()) GTEST_SKIP() << "built without renders";
   SizingRequest rq;
   rq.angle_deg = 90;
-  rq.load = InertiaLoad{5000};
+  rq.world.load = InertiaLoad{5000};
   rq.setting = MotionSetting{2000, 100, 100};
   rq.cycles = 1;
   rq.keep_trace = true;

@@ -21,7 +21,7 @@ namespace {
 SizingRequest request(double angle_deg, double load_gcm2) {
   SizingRequest rq;
   rq.angle_deg = angle_deg;
-  rq.load = InertiaLoad{load_gcm2};
+  rq.world.load = InertiaLoad{load_gcm2};
   rq.cycles = 1;
   return rq;
 }
@@ -58,7 +58,7 @@ TEST_P(Fastest, WithinHalfAPercentOfBruteForce) {
   const Case c = GetParam();
   SizingRequest rq = request(c.angle_deg, c.load_gcm2);
   rq.dwell_s = c.dwell_s;
-  rq.voltage_V = c.voltage_V;
+  rq.world.supply.voltage_V = c.voltage_V;
   const SizingResult r = size(rq);
   ASSERT_TRUE(r.feasible) << r.evaluation.reason;
   ASSERT_TRUE(r.evaluation.feasible);
@@ -67,7 +67,7 @@ TEST_P(Fastest, WithinHalfAPercentOfBruteForce) {
   EXPECT_LE(r.evaluation.steady_temperature_C, kTemperatureWarning_C - rq.thermal_margin_K);
   const double wait_s = r.evaluation.set.wait_ms * 1e-3;
   int runs = 0;
-  for (const MotionSetting& s : brute_grid(voltage_speed_limit_dps(rq.voltage_V), 11, 8.7)) {
+  for (const MotionSetting& s : brute_grid(voltage_speed_limit_dps(rq.world.supply.voltage_V), 11, 8.7)) {
     if (travel_s(rq, s, c.load_gcm2) + wait_s >= 0.995 * best) continue; // cannot beat it by 0.5 %
     SizingRequest one = rq;
     one.setting = s;
@@ -102,7 +102,7 @@ TEST(Gentlest, MeetsTheTargetWithTheLowestRmsTorque) {
   const double rms = r.evaluation.rms_torque_Nm;
   const double wait_s = r.evaluation.set.wait_ms * 1e-3;
   // Coarser than the fastest check: every point meeting T on travel runs.
-  for (const MotionSetting& s : brute_grid(voltage_speed_limit_dps(rq.voltage_V), 6, 15.3)) {
+  for (const MotionSetting& s : brute_grid(voltage_speed_limit_dps(rq.world.supply.voltage_V), 6, 15.3)) {
     if (travel_s(rq, s, 4000.0) + wait_s > 0.260) continue;
     SizingRequest one = rq;
     one.setting = s;
@@ -189,11 +189,11 @@ TEST(Mounting, HorizontalEccentricMassNeedsMoreTorque) {
   // torque m g r, pushing toward +); 0 -> -90 deg lifts it, the dwells hold it.
   rq.angle_deg = -90.0;
   rq.dwell_s = 0.2;
-  rq.load = ArmLoad{0.3, 0.06, 0.0};
+  rq.world.load = ArmLoad{0.3, 0.06, 0.0};
   rq.cycles = 1;
   rq.setting = MotionSetting{1000.0, 50.0, 50.0};
   const Evaluation vertical = size(rq).evaluation;
-  rq.mounting_tilt_deg = 90.0;
+  rq.world.mounting_tilt_deg = 90.0;
   const Evaluation horizontal = size(rq).evaluation;
   ASSERT_TRUE(vertical.completed) << vertical.reason;
   ASSERT_TRUE(horizontal.completed) << horizontal.reason;

@@ -22,7 +22,7 @@ namespace {
 SizingRequest request(double angle_deg, double load_gcm2, std::optional<MotionSetting> setting, int cycles = 1) {
   SizingRequest rq;
   rq.angle_deg = angle_deg;
-  rq.load = InertiaLoad{load_gcm2};
+  rq.world.load = InertiaLoad{load_gcm2};
   rq.setting = setting;
   rq.cycles = cycles;
   return rq;
@@ -94,7 +94,7 @@ TEST(Size, DwellLengthensTheCycleAndLowersTheTemperature) {
 // full 4300 deg/s ends in a position tracking error (114.5): infeasible.
 TEST(Size, TooFastForTheVoltageIsInfeasible_3_5_3) {
   SizingRequest rq = request(360.0, 0.0, MotionSetting{4300.0, 100.0, 100.0});
-  rq.voltage_V = 16.0;
+  rq.world.supply.voltage_V = 16.0;
   const Evaluation e = size(rq).evaluation;
   EXPECT_FALSE(e.feasible);
   EXPECT_FALSE(e.completed);
@@ -164,7 +164,7 @@ TEST(Size, RecommendedSetRunsInTheTwinWithoutError) {
 TEST(Size, FeasibleAtFullLimitsNeedsFewSimulations_3_5_3) {
   SizingRequest rq = request(30.0, 500.0, std::nullopt);
   rq.dwell_s = 0.5;
-  rq.voltage_V = 19.0;
+  rq.world.supply.voltage_V = 19.0;
   const SizingResult r = size(rq);
   ASSERT_TRUE(r.evaluation.feasible) << r.evaluation.reason;
   EXPECT_LE(r.simulations, 3);
@@ -182,9 +182,9 @@ TEST(Size, FeasibleAtFullLimitsNeedsFewSimulations_3_5_3) {
 TEST(Size, RefusesInputsOutsideTheModulesLimits_6_2) {
   EXPECT_THROW(size(request(90.0, 20000.0, std::nullopt)), SizingInputError); // 64.4: <= 15000 g cm^2
   SizingRequest volts = request(90.0, 2000.0, std::nullopt);
-  volts.voltage_V = 40.0; // index 85: 16..32 V
+  volts.world.supply.voltage_V = 40.0; // index 85: 16..32 V
   EXPECT_THROW(size(volts), SizingInputError);
-  volts.voltage_V = 15.9;
+  volts.world.supply.voltage_V = 15.9;
   EXPECT_THROW(size(volts), SizingInputError);
   EXPECT_THROW(size(request(0.0, 2000.0, std::nullopt)), SizingInputError);
   EXPECT_THROW(size(request(5000.0, 2000.0, std::nullopt)), SizingInputError);
@@ -196,7 +196,7 @@ TEST(Size, RefusesInputsOutsideTheModulesLimits_6_2) {
   EXPECT_THROW(size(request(90.0, 2000.0, MotionSetting{1000, 100, 100.5})), SizingInputError);
   SizingRequest heavy;
   heavy.angle_deg = 90;
-  heavy.load = DiskLoad{1.0, 0.2}; // 200000 g cm^2 as MuJoCo computes it
+  heavy.world.load = DiskLoad{1.0, 0.2}; // 200000 g cm^2 as MuJoCo computes it
   EXPECT_THROW(size(heavy), SizingInputError);
   EXPECT_THROW(validate(heavy), std::invalid_argument); // InputError-like: a std::invalid_argument
 }
@@ -204,7 +204,7 @@ TEST(Size, RefusesInputsOutsideTheModulesLimits_6_2) {
 // The set written is the raw wire encoding (manual 6.2, index 64+n).
 TEST(ParameterSet, RawWritesForIndex65) {
   SizingRequest rq = request(90.0, 0.0, std::nullopt);
-  rq.voltage_V = 31.0;
+  rq.world.supply.voltage_V = 31.0;
   const ParameterSetValues v = make_parameter_set(rq, MotionSetting{3000.0, 50.0, 25.5}, 2000.4);
   ASSERT_EQ(v.writes.size(), 9u);
   EXPECT_EQ(v.writes[0].index, 65);
@@ -226,7 +226,7 @@ TEST(ParameterSet, RawWritesForIndex65) {
 // parses as an isdu_write step with the same index, subindex and raw value.
 TEST(ParameterSet, IsduWriteLinesAreScenarioSteps) {
   SizingRequest rq;
-  rq.voltage_V = 17.0; // adds the 85.1 window write
+  rq.world.supply.voltage_V = 17.0; // adds the 85.1 window write
   const ParameterSetValues v = make_parameter_set(rq, MotionSetting{1234.5, 40.0, 12.5}, 3000.0);
   std::string yaml = "name: pasted from size\nsteps:\n";
   for (const IsduWrite& w : v.writes) yaml += "  " + isdu_write_line(w) + "\n";

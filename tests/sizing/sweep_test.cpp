@@ -32,12 +32,12 @@ TEST(Sweep, GridOrderLoadsOutermost) {
   rq.speeds_dps = {1000.0};
   const std::vector<SizingRequest> g = sweep_requests(rq);
   ASSERT_EQ(g.size(), 8u);
-  EXPECT_EQ(std::get<InertiaLoad>(g[0].load).inertia_gcm2, 0.0);
+  EXPECT_EQ(std::get<InertiaLoad>(g[0].world.load).inertia_gcm2, 0.0);
   EXPECT_EQ(g[0].angle_deg, 20.0);
-  EXPECT_EQ(g[0].voltage_V, 20.0);
-  EXPECT_EQ(g[1].voltage_V, 24.0);
+  EXPECT_EQ(g[0].world.supply.voltage_V, 20.0);
+  EXPECT_EQ(g[1].world.supply.voltage_V, 24.0);
   EXPECT_EQ(g[2].angle_deg, 60.0);
-  EXPECT_EQ(std::get<InertiaLoad>(g[4].load).inertia_gcm2, 6000.0);
+  EXPECT_EQ(std::get<InertiaLoad>(g[4].world.load).inertia_gcm2, 6000.0);
   ASSERT_TRUE(g[0].setting.has_value());
   EXPECT_EQ(g[0].setting->speed_dps, 1000.0);
 }

@@ -17,8 +17,8 @@ namespace {
 SizingRequest request(double angle_deg, double load_gcm2, double voltage_V) {
   SizingRequest rq;
   rq.angle_deg = angle_deg;
-  rq.load = InertiaLoad{load_gcm2};
-  rq.voltage_V = voltage_V;
+  rq.world.load = InertiaLoad{load_gcm2};
+  rq.world.supply.voltage_V = voltage_V;
   rq.cycles = 1;
   return rq;
 }

@@ -14,16 +14,16 @@ namespace {
 SizingRequest request() {
   SizingRequest rq;
   rq.angle_deg = 90;
-  rq.load = InertiaLoad{5000};
+  rq.world.load = InertiaLoad{5000};
   rq.setting = MotionSetting{2000, 100, 100};
-  rq.tolerance_deg = 0.0103; // tight, no waiting time: the settling shows the drive train
-  rq.wait_ms = 0;
+  rq.settling.tolerance_deg = 0.0103; // tight, no waiting time: the settling shows the drive train
+  rq.settling.wait_ms = 0;
   return rq;
 }
 
 UncertaintyResult bands(const ModelCard& card, uint64_t seed, int threads) {
   SizingRequest rq = request();
-  rq.module = card.module_model();
+  rq.world.module = card.module_model();
   const SizingResult nominal = size(rq);
   return size_uncertainty(rq, card, nominal.evaluation, 8, seed, threads);
 }
