@@ -167,7 +167,7 @@ struct Scenario {
   std::string file;
   std::string name;
   // `model`, `load`, `mounting`, `world`, and `device:`'s supply and ambient
-  // (A-SCN-22); `sim:`'s physics_dt_s and thermal_time_scale; `run
+  // (A-SCN-32); `sim:`'s physics_dt_s and thermal_time_scale; `run
   // --model` is applied to `world.module`.
   WorldSetup world;
   DeviceSetup device;

@@ -23,12 +23,12 @@ struct WorldSetup : WorldSpec {
 // The ranges a world's numbers must lie in. One set for every file
 // (A-SCN-1); a caller that asks a narrower question narrows the supply and
 // the ambient (sizing: the index 85 voltage window and the module's
-// operating ambient, A-SCN-22).
+// operating ambient, A-SCN-32).
 struct WorldRanges {
   double min_supply_V = 0.0, max_supply_V = 40.0;
   double min_ambient_C = -40.0, max_ambient_C = 100.0;
 };
-// A-SCN-1, A-SCN-22: the source model's ranges, alike for every caller.
+// A-SCN-1, A-SCN-32: the source model's ranges, alike for every caller.
 inline constexpr double kMaxSourceResistance_ohm = 1000.0;
 inline constexpr double kMaxBusCapacitance_F = 10.0;
 

@@ -55,7 +55,7 @@ WorldSetup WorldReader::read(const YAML::Node& root, const WorldRanges& ranges,
   return w;
 }
 
-// A-SCN-22: `device.supply_V` (canonical) or `supply.voltage_V` (alias),
+// A-SCN-32: `device.supply_V` (canonical) or `supply.voltage_V` (alias),
 // and so on; the key as written names the value in messages.
 void WorldReader::supply_and_ambient(const YAML::Node& root, const WorldRanges& ranges, WorldSetup& w) const {
   struct Field {

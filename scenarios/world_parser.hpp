@@ -1,7 +1,7 @@
 // The world block of an input file (issue 30), read by one reader for
 // scenario and cycle files alike: the same keys, aliases and ranges, the
 // same "FILE:LINE:COL: what" errors (scenarios/README.md "The world",
-// A-SCN-22). Internal to the readers of scenarios/ and sizing/.
+// A-SCN-32). Internal to the readers of scenarios/ and sizing/.
 #pragma once
 #include <string>
 #include <string_view>
@@ -16,7 +16,7 @@ namespace sreh::detail {
 
 // The top-level keys the world takes (`device:` shares its mapping with a
 // scenario's own `nvm_image` and `isdu`; `supply:` and `ambient_C` are the
-// aliases of its world keys, A-SCN-22).
+// aliases of its world keys, A-SCN-32).
 inline const std::vector<std::string_view> kWorldTopKeys = {"model", "device", "load", "mounting", "world", "supply",
                                                             "ambient_C"};
 // The world's keys inside `device:`.

@@ -45,7 +45,7 @@ struct CycleRequest {
   std::string file;               // for messages
   // The world: `model`, `device` (or `supply` and `ambient_C`), `load` (at
   // the start of every repetition, A-SIZE-19), `mounting`, `world`, read
-  // as in a scenario (A-SCN-22); `--model FILE` sets `world.model_file` too.
+  // as in a scenario (A-SCN-32); `--model FILE` sets `world.model_file` too.
   WorldSetup world;
   SettlingSpec settling;          // of every set
   double process_torque_Nm = 0;   // on every move without its own

@@ -40,7 +40,7 @@ class CycleParser {
     c.file = r_.file();
     if (root["name"]) (void)r_.text(root["name"], "name");
     if (root["description"]) (void)r_.text(root["description"], "description");
-    // The world as in a scenario (A-SCN-22), narrowed to what a sizing takes.
+    // The world as in a scenario (A-SCN-32), narrowed to what a sizing takes.
     c.world = world_.read(root, sizing_world_ranges(), {});
     if (root["process_torque_Nm"]) c.process_torque_Nm = torque(root["process_torque_Nm"], "process_torque_Nm", 0.0);
     const param::MotionSet set(0); // the rows every set shares (manual 6.2)

@@ -158,7 +158,7 @@ SizeOutcome run_cycle(const SizeOptions& a) {
   refuse_with_cycle(a);
   SizeOutcome out;
   CycleRequest rq = parse_cycle_file(a.cycle);
-  if (!a.model.empty()) { // the file's own `model:` or --model, not both (A-SCN-22)
+  if (!a.model.empty()) { // the file's own `model:` or --model, not both (A-SCN-32)
     if (!rq.world.model_file.empty()) {
       throw SizingInputError(fmt::format("--model {}: the cycle file names its own model ({}); give one of them",
                                          a.model, rq.world.model_loc.str()));

@@ -184,7 +184,7 @@ inline constexpr double kMaxDwell_s = 60.0;
 // configured to (A-SIZE-2).
 double min_voltage_V();
 double max_voltage_V();
-// The world a sizing accepts (A-SCN-22): the supply within the index 85
+// The world a sizing accepts (A-SCN-32): the supply within the index 85
 // window (A-SIZE-2), the ambient 0 .. 50 degC (A-SIZE-1); the rest as any world.
 WorldRanges sizing_world_ranges();
 // Index 64+n.1: the highest speed a set can ask for, deg/s.

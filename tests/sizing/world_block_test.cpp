@@ -1,4 +1,4 @@
-// The world declared once (issue 30, A-SCN-22): a scenario and a cycle file
+// The world declared once (issue 30, A-SCN-32): a scenario and a cycle file
 // read the world block with one reader, so the same block gives the same
 // WorldSetup and the same bad value the same FILE:LINE:COL error.
 #include <gtest/gtest.h>
@@ -85,7 +85,7 @@ std::string error_of(Parse parse, const std::string& world) {
   return "";
 }
 
-// One range per key, one message: 2000 ohm is beyond every world (A-SCN-22).
+// One range per key, one message: 2000 ohm is beyond every world (A-SCN-32).
 TEST(WorldBlock, AnOutOfRangeValueGivesTheSameErrorInBoth) {
   for (const std::string& world : {std::string("device: {source_resistance_ohm: 2000}\n"),
                                    std::string("supply: {bus_capacitance_F: 11}\n"),
