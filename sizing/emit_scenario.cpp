@@ -118,7 +118,11 @@ std::string scenario_yaml(const CycleRequest& rq, const std::vector<ParameterSet
   y += fmt::format("# Written by sreh-twin size --emit-scenario: the sized cycle replayed in the twin.\n"
                    "# Run it with: sreh-twin run THIS_FILE\n");
   y += fmt::format("name: {}\n", nlohmann::json(name).dump());
-  if (!rq.world.model_file.empty()) y += fmt::format("model: {}  # the sizing's --model\n", nlohmann::json(rq.world.model_file).dump());
+  if (!rq.world.model_file.empty()) { // absolute: the scenario may be written anywhere
+    const std::string model = std::filesystem::absolute(rq.world.model_file).lexically_normal().string();
+    const char* whose = rq.world.model_loc.line > 0 ? "the cycle file's model:" : "the sizing's --model";
+    y += fmt::format("model: {}  # {}\n", nlohmann::json(model).dump(), whose);
+  }
   y += "device:\n";
   y += fmt::format("  supply_V: {}\n  ambient_C: {}\n", num(rq.world.supply.voltage_V), num(rq.world.thermal.ambient_C));
   if (rq.world.supply.source_resistance_ohm > 0) y += fmt::format("  source_resistance_ohm: {}\n", num(rq.world.supply.source_resistance_ohm));

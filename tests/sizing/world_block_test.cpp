@@ -7,6 +7,8 @@
 
 #include "scenarios/scenario_parser.hpp"
 #include "sizing/cycle.hpp"
+#include "sizing/cycle_output.hpp"
+#include "twin/model_card.hpp"
 
 namespace sreh::sizing {
 namespace {
@@ -119,6 +121,26 @@ TEST(WorldBlock, ASizingNarrowsSupplyAndAmbient_6_2) {
   EXPECT_EQ(error_of(cycle, "ambient_C: 60\n"), "w.yaml:2:12: ambient_C: 60 is out of range [0, 50]");
   // A scenario's own keys of `device:` are not a cycle's.
   EXPECT_NE(error_of(cycle, "device: {isdu: []}\n").find("w.yaml:2:"), std::string::npos);
+}
+
+// The cycle's whole world reaches the search of every recommended set
+// (A-SIZE-20): a cycle of one move back and forth recommends what `size`
+// recommends for that move, also with another model card (a weaker motor).
+TEST(WorldBlock, ACyclesSetIsSearchedInTheCyclesWorld) {
+  SizingRequest single;
+  single.angle_deg = 90;
+  single.dwell_s = 0.1;
+  single.world.load = DiskLoad{0.5, 0.05};
+  single.world.module = load_module_model(std::string(SREH_SOURCE_DIR) + "/tests/sizing/data/weak_motor_model.yaml");
+  ASSERT_FALSE(single.world.module == default_module_model());
+  const SizingResult alone = size(single);
+  ASSERT_TRUE(alone.feasible) << alone.evaluation.reason;
+  const CycleResult in_cycle = size_cycle(cycle_of_single(single));
+  ASSERT_EQ(in_cycle.settings.size(), 1u);
+  EXPECT_EQ(in_cycle.backoffs, 0);
+  EXPECT_EQ(in_cycle.settings[0].speed_dps, alone.evaluation.set.setting.speed_dps);
+  EXPECT_EQ(in_cycle.settings[0].accel_pct, alone.evaluation.set.setting.accel_pct);
+  EXPECT_EQ(in_cycle.settings[0].jerk_pct, alone.evaluation.set.setting.jerk_pct);
 }
 
 } // namespace
