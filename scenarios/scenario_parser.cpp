@@ -2,27 +2,20 @@
 // scenarios/README.md; every limit that the manual does not give is in
 // docs/assumptions/scenarios.md (A-SCN-*).
 #include "scenarios/scenario_parser.hpp"
-#include "twin/models_dir.hpp"
 
-#include <cctype>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <set>
-#include <sstream>
 
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
 #include "device_logic/units.hpp"
 #include "scenarios/comparison_parser.hpp"
-#include "scenarios/load_file.hpp"
-#include "scenarios/load_parser.hpp"
 #include "scenarios/conformance_steps.hpp"
 #include "scenarios/isdu_value.hpp"
 #include "scenarios/snapshot.hpp"
-#include "twin/load_builder.hpp"
 #include "twin/model_card.hpp"
 #include "scenarios/yaml_reader.hpp"
 #include "scenarios/yaml_safety.hpp"

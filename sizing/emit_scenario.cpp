@@ -75,6 +75,22 @@ std::string load_yaml(const LoadSpec& load) {
   return std::visit(V{}, load);
 }
 
+// `model: FILE`, absolute (the scenario may be written anywhere); "" without one.
+std::string model_yaml(const WorldSetup& world) {
+  if (world.model_file.empty()) return "";
+  const std::string model = std::filesystem::absolute(world.model_file).lexically_normal().string();
+  const char* whose = world.model_loc.line > 0 ? "the cycle file's model:" : "the sizing's --model";
+  return fmt::format("model: {}  # {}\n", nlohmann::json(model).dump(), whose);
+}
+
+// `world: {hard_stops: [...]}`; "" without any.
+std::string hard_stops_yaml(const std::vector<HardStop>& stops) {
+  if (stops.empty()) return "";
+  std::string list;
+  for (const HardStop& h : stops) list += fmt::format("{}{{angle_deg: {}}}", list.empty() ? "" : ", ", num(h.angle_deg));
+  return "world: {hard_stops: [" + list + "]}\n";
+}
+
 bool has_load_change(const CycleRequest& rq) {
   for (const CycleSegment& s : rq.segments) {
     if (std::holds_alternative<CycleLoadChange>(s.what)) return true;
@@ -118,11 +134,7 @@ std::string scenario_yaml(const CycleRequest& rq, const std::vector<ParameterSet
   y += fmt::format("# Written by sreh-twin size --emit-scenario: the sized cycle replayed in the twin.\n"
                    "# Run it with: sreh-twin run THIS_FILE\n");
   y += fmt::format("name: {}\n", nlohmann::json(name).dump());
-  if (!rq.world.model_file.empty()) { // absolute: the scenario may be written anywhere
-    const std::string model = std::filesystem::absolute(rq.world.model_file).lexically_normal().string();
-    const char* whose = rq.world.model_loc.line > 0 ? "the cycle file's model:" : "the sizing's --model";
-    y += fmt::format("model: {}  # {}\n", nlohmann::json(model).dump(), whose);
-  }
+  y += model_yaml(rq.world);
   y += "device:\n";
   y += fmt::format("  supply_V: {}\n  ambient_C: {}\n", num(rq.world.supply.voltage_V), num(rq.world.thermal.ambient_C));
   if (rq.world.supply.source_resistance_ohm > 0) y += fmt::format("  source_resistance_ohm: {}\n", num(rq.world.supply.source_resistance_ohm));
@@ -138,11 +150,7 @@ std::string scenario_yaml(const CycleRequest& rq, const std::vector<ParameterSet
   }
   y += fmt::format("load: {}\n", load_yaml(rq.world.load));
   y += fmt::format("mounting: {{tilt_deg: {}}}\n", num(rq.world.mounting_tilt_deg));
-  if (!rq.world.hard_stops.empty()) {
-    std::string stops;
-    for (const HardStop& h : rq.world.hard_stops) stops += fmt::format("{}{{angle_deg: {}}}", stops.empty() ? "" : ", ", num(h.angle_deg));
-    y += "world: {hard_stops: [" + stops + "]}\n";
-  }
+  y += hard_stops_yaml(rq.world.hard_stops);
   y += "steps:\n";
   y += "  - pd: {motor_on: 1}\n";
   y += "  - wait_until: {state: Ready, within_s: 0.1}\n";
