@@ -139,8 +139,8 @@ class ScenarioRun {
   // 7.2). The real module cannot know the attached inertia; the twin does,
   // so the run says so when a set starts that is configured far from it.
   void load_hint(uint8_t set) {
-    if (set > 7) return; // refused by the device (114.7.2)
-    const ParamId id{static_cast<uint16_t>(64 + set), 4};
+    if (set >= param::kMotionSets) return; // refused by the device (114.7.2)
+    const ParamId id = param::MotionSet(set).load;
     const IsduResult res = twin_->isdu_read(id.index, id.subindex);
     if (!res.ok() || res.data.size() != wire_size(parameter_row(id).type)) return;
     const double configured = raw_to_display(id, decode_number(parameter_row(id).type, res.data));
