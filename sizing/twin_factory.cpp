@@ -16,13 +16,11 @@ namespace {
 constexpr std::size_t kKeptPerThread = 3;
 
 // Everything of a TwinConfig that make_twin's twin depends on.
+// Every field of the world (WorldSpec's ==, so a field added there is
+// compared too) and the cycle and trace settings the twin is built with.
 bool same_world(const TwinConfig& a, const TwinConfig& b) {
-  return a.load == b.load && a.hard_stops == b.hard_stops && a.supply.voltage_V == b.supply.voltage_V &&
-         a.supply.source_resistance_ohm == b.supply.source_resistance_ohm &&
-         a.supply.bus_capacitance_F == b.supply.bus_capacitance_F && a.thermal.ambient_C == b.thermal.ambient_C &&
-         a.thermal.time_scale == b.thermal.time_scale && a.mounting_tilt_deg == b.mounting_tilt_deg &&
-         a.physics_dt_s == b.physics_dt_s && a.module == b.module && a.cycle_s == b.cycle_s &&
-         a.record_trace == b.record_trace;
+  return static_cast<const WorldSpec&>(a) == static_cast<const WorldSpec&>(b) && a.cycle_s == b.cycle_s &&
+         a.record_trace == b.record_trace && a.visual_detail == b.visual_detail && a.nvm_image == b.nvm_image;
 }
 
 struct Kept {

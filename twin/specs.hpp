@@ -61,11 +61,13 @@ struct SupplySpec {
   double voltage_V = 24.0;            // source voltage
   double source_resistance_ohm = 0.0; // 0: ideal source
   double bus_capacitance_F = 0.0;     // with resistance > 0: bus voltage dynamics
+  bool operator==(const SupplySpec&) const = default;
 };
 
 struct ThermalSpec {
   double ambient_C = 25.0;
   double time_scale = 1.0; // > 1 accelerates thermal dynamics (documented, for long duty tests)
+  bool operator==(const ThermalSpec&) const = default;
 };
 
 // The world and the physics step: written once here, the base of both
@@ -88,6 +90,7 @@ struct WorldSpec {
   // The module's constants: the model card (twin/model_card.hpp), with any
   // --model overrides applied.
   ModuleModel module = default_module_model();
+  bool operator==(const WorldSpec&) const = default;
 };
 
 } // namespace sreh
