@@ -62,9 +62,9 @@ std::array<uint8_t, Bytes> encode_rows(const Pd& pd) {
   return f;
 }
 
-template <const auto& Rows, class Pd, std::size_t Bytes>
-Pd decode_rows(const std::array<uint8_t, Bytes>& f) {
-  const uint64_t bits = be::read(f); // bits no row names (out: bit 7) are ignored
+// `bits`: the frame as one integer; bits no row names (out: bit 7) are ignored.
+template <const auto& Rows, class Pd>
+Pd decode_rows(uint64_t bits) {
   Pd pd;
   [&]<std::size_t... I>(std::index_sequence<I...>) { (set_row<Rows, I>(pd, bits), ...); }
   (std::make_index_sequence<Rows.size()>{});
@@ -82,21 +82,16 @@ void check_length(std::size_t got, std::size_t want, const char* what) {
 
 PdOutFrame encode(const ProcessDataOut& pd) { return encode_rows<kPdOutFields, ProcessDataOut, kPdOutBytes>(pd); }
 PdInFrame encode(const ProcessDataIn& pd) { return encode_rows<kPdInFields, ProcessDataIn, kPdInBytes>(pd); }
-ProcessDataOut decode_out(const PdOutFrame& f) { return decode_rows<kPdOutFields, ProcessDataOut>(f); }
-ProcessDataIn decode_in(const PdInFrame& f) { return decode_rows<kPdInFields, ProcessDataIn>(f); }
+ProcessDataOut decode_out(const PdOutFrame& f) { return decode_rows<kPdOutFields, ProcessDataOut>(be::read(f)); }
+ProcessDataIn decode_in(const PdInFrame& f) { return decode_rows<kPdInFields, ProcessDataIn>(be::read(f)); }
 
 ProcessDataOut decode_out(std::span<const uint8_t> bytes) {
   check_length(bytes.size(), kPdOutBytes, "process data out");
-  PdOutFrame f{};
-  std::copy(bytes.begin(), bytes.end(), f.begin());
-  return decode_out(f);
+  return decode_rows<kPdOutFields, ProcessDataOut>(be::read(bytes));
 }
-
 ProcessDataIn decode_in(std::span<const uint8_t> bytes) {
   check_length(bytes.size(), kPdInBytes, "process data in");
-  PdInFrame f{};
-  std::copy(bytes.begin(), bytes.end(), f.begin());
-  return decode_in(f);
+  return decode_rows<kPdInFields, ProcessDataIn>(be::read(bytes));
 }
 
 int64_t pd_field_value(std::span<const uint8_t> frame, const PdField& field) {
