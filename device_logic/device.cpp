@@ -195,9 +195,11 @@ void Device::Impl::enter(State to, Event via) {
   }
 }
 
-ProcessDataIn Device::Impl::pd_in() const {
+// Manual 2.3: what the module reports, from its state and its position in
+// the process-data frame (user_counts: Impl::user_now()).
+ProcessDataIn pd_in(const DeviceState& st, int64_t user_counts) {
   ProcessDataIn in;
-  in.position_raw = wrap_wire_position(user_to_wire(user_now()));
+  in.position_raw = wrap_wire_position(user_to_wire(user_counts));
   if (st.boot_mode) {
     in.motor_off = true;
     return in;
@@ -206,7 +208,7 @@ ProcessDataIn Device::Impl::pd_in() const {
   in.warning_code = st.faults.warning_byte();
   in.error = in.error_code != 0;
   in.warning = in.warning_code != 0;
-  in.motor_off = !motor_on();
+  in.motor_off = !motor_is_on(st.state);
   in.ready = st.state == State::Ready;
   in.busy = st.state == State::Busy;
   in.done = st.state == State::Done;

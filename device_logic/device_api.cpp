@@ -48,7 +48,7 @@ std::optional<PdInFrame> Device::exchange(const PdOutFrame& out, bool outputs_va
       if (d.motor_on()) d.raise_error(ErrorBit::InvalidCommand, cause::kOutputsInvalid);
     }
   }
-  d.st.last_in_frame = encode(d.pd_in());
+  d.st.last_in_frame = encode(pd_in(d.st, d.user_now()));
   return d.st.last_in_frame;
 }
 
@@ -83,7 +83,7 @@ std::optional<MoveRecord> Device::pending_move() const { return impl_->st.move_r
 void Device::power_on(const SensorReadings& sensors) { impl_->power_on(sensors); }
 bool Device::powered() const { return impl_->st.powered; }
 bool Device::in_boot_mode() const { return impl_->st.boot_mode; }
-LedColor Device::led() const { return impl_->led(); }
+LedColor Device::led() const { return led_color(impl_->st, impl_->mon.locator, impl_->config.store); }
 std::vector<uint8_t> Device::save_nvm() const { return save_nvm_image(impl_->config); }
 
 // Manual 1: Startup after every power-on until the master moves on;
@@ -127,7 +127,7 @@ Telemetry Device::telemetry() const {
   t.temperature_C = d.st.temperature_C;
   t.error_code = d.st.faults.error_byte();
   t.warning_code = d.st.faults.warning_byte();
-  t.led = d.led();
+  t.led = led_color(d.st, d.mon.locator, d.config.store);
   t.moving = d.st.state == State::Busy && d.st.phase == MotionPhase::Travel;
   t.settling = d.st.phase == MotionPhase::Settle;
   t.moves_started = d.st.moves_started;

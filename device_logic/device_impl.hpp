@@ -47,7 +47,6 @@ struct Device::Impl {
   int64_t user_now() const;
   void init_origin();
   std::optional<ErrorBit> prepare_move(const ProcessDataOut& cmd, uint8_t& code);
-  ProcessDataIn pd_in() const;
   MotorCommand tick(int64_t dt_ns, const SensorReadings& sensors);
 
   // device_motion.cpp: the control step and the move records
@@ -60,7 +59,6 @@ struct Device::Impl {
   // device_monitors.cpp
   void run_monitors(int64_t dt_ns);
   void link_lost();
-  LedColor led() const;
 
   // device_isdu.cpp
   IsduResult read(uint16_t index, uint8_t subindex) const;
@@ -68,6 +66,10 @@ struct Device::Impl {
   uint16_t system_command(uint8_t cmd);
   uint16_t firmware_write(uint8_t sub, std::span<const uint8_t> data); // device_firmware.cpp
 };
+
+// device.cpp. Manual 2.3: the process data in of `st` at `user_counts`
+// (the position in the process-data frame, Impl::user_now()).
+ProcessDataIn pd_in(const DeviceState& st, int64_t user_counts);
 
 // device_motion.cpp. A-SM-6: tunes the loop for motion set `set_number` of
 // `store` (limits, inertia, hold_set); an invalid number changes nothing.
@@ -80,6 +82,8 @@ void start_stop_profile(DeviceState& st);
 void run_diagnostics(DiagnosticsClock& clock, ParameterStore& store, const DeviceState& st, int64_t dt_ns);
 // Manual 6.2 index 87.1 in degrees (A-PARAM-1).
 double tracking_limit_deg(const ParameterStore& store);
+// The LED band now (manual 3.1, 6.2 index 83, 6.6 locator, 9 boot mode).
+LedColor led_color(const DeviceState& st, const Locator& locator, const ParameterStore& store);
 
 // device_nvm.cpp: the memory image is the ParameterStore's image plus the
 // firmware-update state (manual 9), framed and versioned.

@@ -64,11 +64,11 @@ double tracking_limit_deg(const ParameterStore& store) {
 }
 
 // Manual 3.1 (LED band), 6.2 index 83, 6.6 locator, 9 boot mode (A-LED-1 for blink timing).
-LedColor Device::Impl::led() const {
+LedColor led_color(const DeviceState& st, const Locator& locator, const ParameterStore& store) {
   if (!st.powered) return LedColor::Off;
   if (st.boot_mode) return LedColor::Violet;
-  if (mon.locator.active) return (st.time_ns % kNsPerS) < kNsPerS / 2 ? LedColor::White : LedColor::Off;
-  const int64_t mode = config.store.raw(param::kLedBandMode);
+  if (locator.active) return (st.time_ns % kNsPerS) < kNsPerS / 2 ? LedColor::White : LedColor::Off;
+  const int64_t mode = store.raw(param::kLedBandMode);
   const bool err = st.faults.any_error();
   const bool warn = st.faults.any_warning();
   if (mode == 0) return LedColor::Off;
