@@ -18,6 +18,22 @@ constexpr uint64_t field_mask(unsigned bit_length) {
   return bit_length >= 64 ? ~uint64_t{0} : (uint64_t{1} << bit_length) - 1;
 }
 
+// A malformed table does not compile: every row inside its frame, no two
+// rows on the same bit.
+template <const auto& Rows, std::size_t Bytes>
+constexpr bool rows_fit_apart() {
+  uint64_t used = 0;
+  for (const auto& row : Rows) {
+    if (row.bit_offset + row.bit_length > Bytes * 8) return false;
+    const uint64_t bits = field_mask(row.bit_length) << row.bit_offset;
+    if ((used & bits) != 0) return false;
+    used |= bits;
+  }
+  return true;
+}
+static_assert(rows_fit_apart<kPdOutFields, kPdOutBytes>(), "kPdOutFields: a row outside the frame or on another's bits");
+static_assert(rows_fit_apart<kPdInFields, kPdInBytes>(), "kPdInFields: a row outside the frame or on another's bits");
+
 // The wire bits of a member's value: int32 as two's complement, bool 0 / 1.
 template <class T>
 using WireBits = std::make_unsigned_t<std::conditional_t<std::is_same_v<T, bool>, uint8_t, T>>;
