@@ -10,47 +10,49 @@
 
 namespace sreh {
 
-int64_t Device::Impl::user_now() const { return user_position(encoder, dir(), origin); }
+int64_t Device::Impl::user_now() const { return user_position(st.encoder, config.dir(), st.origin); }
 
 // Manual 4.3.3: on power-up, on writing index 86, on command 170.
-void Device::Impl::init_origin() { origin = initial_origin(encoder, dir(), store.raw(param::kPositionZero)); }
+void Device::Impl::init_origin() {
+  st.origin = initial_origin(st.encoder, config.dir(), config.store.raw(param::kPositionZero));
+}
 
 // Everything volatile starts afresh; the configuration is kept.
 void Device::Impl::power_on(const SensorReadings& s) {
-  MoveRecorder records = std::move(move_recorder); // records not yet handed out survive
-  static_cast<DeviceState&>(*this) = DeviceState();
-  static_cast<DeviceMonitors&>(*this) = DeviceMonitors();
-  controller = PositionController(drive.gains);
-  move_recorder = std::move(records);
-  move_recorder.restart_numbering();
-  powered = true;
-  encoder = s.encoder_counts;
-  prev_encoder = encoder;
-  supply_V = s.supply_V;
-  temperature_C = s.temperature_C;
+  MoveRecorder records = std::move(st.move_recorder); // records not yet handed out survive
+  st = DeviceState();
+  mon = DeviceMonitors();
+  st.controller = PositionController(config.drive.gains);
+  st.move_recorder = std::move(records);
+  st.move_recorder.restart_numbering();
+  st.powered = true;
+  st.encoder = s.encoder_counts;
+  st.prev_encoder = st.encoder;
+  st.supply_V = s.supply_V;
+  st.temperature_C = s.temperature_C;
   init_origin();
-  hold_phys = encoder;
-  boot_mode = firmware_failed; // manual 9: only boot mode until a good image
-  link.link_up = true; // Startup until the master moves on, or off once the watchdog expires (A-LINK-3)
+  st.hold_phys = st.encoder;
+  st.boot_mode = config.firmware_failed; // manual 9: only boot mode until a good image
+  mon.link.link_up = true; // Startup until the master moves on, or off once the watchdog expires (A-LINK-3)
 }
 
 // ---------------------------------------------------------------------------
 // Process data out: derive the events of this cycle from the edges (manual 3.2)
 
 void Device::Impl::process_outputs(const ProcessDataOut& next) {
-  const ProcessDataOut prev = pd;
-  pd = next;
+  const ProcessDataOut prev = st.pd;
+  st.pd = next;
   auto rose = [](bool before, bool now) { return !before && now; };
 
   if (!next.motor_on && motor_on()) apply(Event::SwitchOff); // T2, T9, or 114.6/1 in Busy/Done
   // A-SM-6: while holding, a new selection retunes the loop for that set's load.
-  if (motor_on() && phase == MotionPhase::Hold && next.parameter_set != prev.parameter_set) {
-    tune_for_set(next.parameter_set);
+  if (motor_on() && st.phase == MotionPhase::Hold && next.parameter_set != prev.parameter_set) {
+    tune_for_set(st, config.store, next.parameter_set);
   }
 
   // T10.1 / T10.2; with the motor off only if Motor On = 0 (manual 3.3).
   if (rose(prev.reset_error, next.reset_error)) {
-    if (state == State::ErrorOn || (state == State::ErrorOff && !next.motor_on)) apply(Event::ResetError);
+    if (st.state == State::ErrorOn || (st.state == State::ErrorOff && !next.motor_on)) apply(Event::ResetError);
   }
 
   const bool move_rose = rose(prev.move, next.move);
@@ -58,7 +60,7 @@ void Device::Impl::process_outputs(const ProcessDataOut& next) {
   if ((move_rose || origin_rose) && next.move && next.set_origin) {
     raise_error(ErrorBit::InvalidCommand, cause::kMoveAndSetOrigin); // 114.6/6
   } else if (move_rose) {
-    if (state == State::Ready) {
+    if (st.state == State::Ready) {
       uint8_t code = 0;
       if (auto bad = prepare_move(next, code)) {
         raise_error(*bad, code); // 114.7: refused before any motion
@@ -74,10 +76,12 @@ void Device::Impl::process_outputs(const ProcessDataOut& next) {
 
   if (!move_rose && prev.move && !next.move) apply(Event::MoveReleased);
   if (!origin_rose && prev.set_origin && !next.set_origin) apply(Event::SetOriginReleased);
-  if (rose(prev.stop, next.stop) && state == State::Busy && phase == MotionPhase::Travel) apply(Event::StopMove);
+  if (rose(prev.stop, next.stop) && st.state == State::Busy && st.phase == MotionPhase::Travel) {
+    apply(Event::StopMove);
+  }
 
   // T1: Motor On is a level; the other command bits must be 0 (A-SM-1).
-  if (next.motor_on && state == State::MotorOff && !next.move && !next.reset_error && !next.set_origin) {
+  if (next.motor_on && st.state == State::MotorOff && !next.move && !next.reset_error && !next.set_origin) {
     apply(Event::SwitchOn);
   }
 }
@@ -99,27 +103,27 @@ std::optional<ErrorBit> Device::Impl::prepare_move(const ProcessDataOut& cmd, ui
   } else if (cmd.relative) {
     // From the last target, except on the first move after switching on or
     // after a positioning error: then from the actual position.
-    const int64_t from = last_target_phys ? user_position(*last_target_phys, dir(), origin) : actual;
+    const int64_t from = st.last_target_phys ? user_position(*st.last_target_phys, config.dir(), st.origin) : actual;
     target_user = from + int64_t{cmd.target_raw} * kInternalPerWireCount;
   } else {
     target_user = int64_t{cmd.target_raw} * kInternalPerWireCount;
   }
   // Manual 6.2 index 81: refused whatever the mode, before any motion.
-  if (store.raw(param::kPositionLimitActive) == 1) {
-    const int64_t lo = store.raw(param::kPositionLimitMin) * kInternalPerWireCount;
-    const int64_t hi = store.raw(param::kPositionLimitMax) * kInternalPerWireCount;
+  if (config.store.raw(param::kPositionLimitActive) == 1) {
+    const int64_t lo = config.store.raw(param::kPositionLimitMin) * kInternalPerWireCount;
+    const int64_t hi = config.store.raw(param::kPositionLimitMax) * kInternalPerWireCount;
     if (target_user < lo || target_user > hi) {
       code = cause::kInvalidTarget;
       return ErrorBit::InvalidParameter;
     }
   }
-  latched = cmd;
-  pending_target_phys = physical_position(target_user, dir(), origin);
+  st.latched = cmd;
+  st.pending_target_phys = physical_position(target_user, config.dir(), st.origin);
   return std::nullopt;
 }
 
 void Device::Impl::apply(Event e) {
-  const Transition* t = find_transition(state, e);
+  const Transition* t = find_transition(st.state, e);
   if (t == nullptr) return; // no effect in this state
   if (t->raises) {
     raise_error(*t->raises, t->cause);
@@ -131,33 +135,33 @@ void Device::Impl::apply(Event e) {
 // Manual 3.3, 2.4: sticky cause per bit; T8.1 keeps the motor on where the
 // error allows it, T8.2 switches it off.
 void Device::Impl::raise_error(ErrorBit bit, uint8_t code) {
-  auto& slot = faults.error_cause[static_cast<int>(bit)];
-  if (slot == 0) ++error_counter;
+  auto& slot = st.faults.error_cause[static_cast<int>(bit)];
+  if (slot == 0) ++st.error_counter;
   slot = code;
-  if (bit == ErrorBit::Positioning) last_target_phys.reset(); // manual 3.4: next relative move from actual
+  if (bit == ErrorBit::Positioning) st.last_target_phys.reset(); // manual 3.4: next relative move from actual
   apply(error_switches_motor_off(bit, code) ? Event::ErrorMotorOff : Event::ErrorKeepsMotor);
 }
 
 void Device::Impl::enter(State to, Event via) {
   const bool was_on = motor_on();
-  const State from = state;
-  state = to;
+  const State from = st.state;
+  st.state = to;
   const bool now_on = motor_on();
 
   if (!was_on && now_on) { // T1: hold where the flange is
-    hold_phys = encoder;
-    setpoint = KinematicState{internal_counts_to_rad(encoder), 0, 0, 0};
-    controller.reset(internal_counts_to_rad(encoder));
+    st.hold_phys = st.encoder;
+    st.setpoint = KinematicState{internal_counts_to_rad(st.encoder), 0, 0, 0};
+    st.controller.reset(internal_counts_to_rad(st.encoder));
     // A-SM-6: the set the PLC has selected now (set 0 for an invalid number).
-    tune_for_set(pd.parameter_set < param::kMotionSets ? pd.parameter_set : uint8_t{0});
-    last_target_phys.reset(); // manual 3.4: first relative move from the actual position
-    phase = MotionPhase::Hold;
+    tune_for_set(st, config.store, st.pd.parameter_set < param::kMotionSets ? st.pd.parameter_set : uint8_t{0});
+    st.last_target_phys.reset(); // manual 3.4: first relative move from the actual position
+    st.phase = MotionPhase::Hold;
   }
   if (was_on && !now_on) { // T2, T9, T8.2
-    phase = MotionPhase::Hold;
-    positioned = false;
-    faults.warning_cause[static_cast<int>(WarningBit::Positioning)] = 0; // manual 3.5.7
-    torque_Nm = 0;
+    st.phase = MotionPhase::Hold;
+    st.positioned = false;
+    st.faults.set_warning(WarningBit::Positioning, 0); // manual 3.5.7
+    st.torque_Nm = 0;
   }
 
   switch (via) {
@@ -165,68 +169,70 @@ void Device::Impl::enter(State to, Event via) {
       start_move();
       break;
     case Event::MoveStartStopped: // T3 with Stop: Done without moving
-      positioned = false;
-      faults.warning_cause[static_cast<int>(WarningBit::Positioning)] = 0;
+      st.positioned = false;
+      st.faults.set_warning(WarningBit::Positioning, 0);
       break;
     case Event::StopMove: // T4
-      start_stop_profile();
-      move_recorder.mark_stopped();
+      start_stop_profile(st);
+      st.move_recorder.mark_stopped();
       break;
     case Event::MotionComplete: // T5
-      last_target_phys = target_phys;
-      positioned = true;
+      st.last_target_phys = st.target_phys;
+      st.positioned = true;
       break;
     case Event::SetOrigin: // T6, manual 4.3.2: position jumps to 0, flange does not turn
-      origin += user_now();
+      st.origin += user_now();
       break;
     case Event::ErrorKeepsMotor: // T8.1: an aborted move brakes and holds
-      if (from == State::Busy && phase == MotionPhase::Travel) start_stop_profile();
-      else if (phase == MotionPhase::Settle) phase = MotionPhase::Hold;
+      if (from == State::Busy && st.phase == MotionPhase::Travel) start_stop_profile(st);
+      else if (st.phase == MotionPhase::Settle) st.phase = MotionPhase::Hold;
       break;
     case Event::ResetError:
-      faults.error_cause = {};
+      st.faults.error_cause = {};
       break;
     default:
       break;
   }
 }
 
-ProcessDataIn Device::Impl::pd_in() const {
+// Manual 2.3: what the module reports, from its state and its position in
+// the process-data frame (user_counts: Impl::user_now()).
+ProcessDataIn pd_in(const DeviceState& st, int64_t user_counts) {
   ProcessDataIn in;
-  in.position_raw = wrap_wire_position(user_to_wire(user_now()));
-  if (boot_mode) {
+  in.position_raw = wrap_wire_position(user_to_wire(user_counts));
+  if (st.boot_mode) {
     in.motor_off = true;
     return in;
   }
-  in.error_code = faults.error_byte();
-  in.warning_code = faults.warning_byte();
+  in.error_code = st.faults.error_byte();
+  in.warning_code = st.faults.warning_byte();
   in.error = in.error_code != 0;
   in.warning = in.warning_code != 0;
-  in.motor_off = !motor_on();
-  in.ready = state == State::Ready;
-  in.busy = state == State::Busy;
-  in.done = state == State::Done;
+  in.motor_off = !motor_is_on(st.state);
+  in.ready = st.state == State::Ready;
+  in.busy = st.state == State::Busy;
+  in.done = st.state == State::Done;
   return in;
 }
 
 // One control step of dt_ns: the device's clocks are integer nanoseconds
 // (docs/style.md 8); a step length in seconds is derived, never summed.
 MotorCommand Device::Impl::tick(int64_t dt_ns, const SensorReadings& sensors) {
-  if (!powered) return {};
-  time_ns += dt_ns;
-  encoder = sensors.encoder_counts;
-  supply_V = sensors.supply_V;
-  temperature_C = sensors.temperature_C;
+  if (!st.powered) return {};
+  st.time_ns += dt_ns;
+  st.encoder = sensors.encoder_counts;
+  st.supply_V = sensors.supply_V;
+  st.temperature_C = sensors.temperature_C;
   const double dt_s = ns_to_seconds(dt_ns);
   if (dt_ns > 0) { // encoder speed, first-order filtered (A-MON-3)
-    const double raw = internal_counts_to_rad(encoder - prev_encoder) / dt_s;
-    velocity_rad_s += (raw - velocity_rad_s) * std::min(1.0, dt_s / drive.speed_filter_s);
+    const double raw = internal_counts_to_rad(st.encoder - st.prev_encoder) / dt_s;
+    st.velocity_rad_s += (raw - st.velocity_rad_s) * std::min(1.0, dt_s / config.drive.speed_filter_s);
   }
-  prev_encoder = encoder;
+  st.prev_encoder = st.encoder;
 
-  if (link.step(dt_ns)) link_lost(); // communication watchdog (manual 5, A-LINK-1)
-  run_diagnostics(dt_ns);
-  if (boot_mode) return {};
+  if (mon.link.step(dt_ns)) link_lost(); // communication watchdog (manual 5, A-LINK-1)
+  run_diagnostics(mon.diagnostics, config.store, st, dt_ns);
+  if (st.boot_mode) return {};
   run_monitors(dt_ns);
   const MotorCommand cmd = control(dt_ns, dt_s);
   record_move_step();

@@ -11,7 +11,7 @@ namespace sreh {
 Device::Device(const DriveModel& drive) : impl_(std::make_unique<Impl>(drive)) { impl_->power_on(SensorReadings{}); }
 
 Device::Device(const DriveModel& drive, const std::vector<uint8_t>& nvm_image) : impl_(std::make_unique<Impl>(drive)) {
-  if (!restore_nvm(*impl_, nvm_image)) {
+  if (!restore_nvm(impl_->config, nvm_image)) {
     // A corrupt memory image: factory configuration and error 114.1 code 1 (A-NVM-1).
     impl_->power_on(SensorReadings{});
     impl_->raise_error(ErrorBit::DeviceError, cause::kInternalConfiguration);
@@ -34,22 +34,22 @@ void Device::restore(const DeviceSnapshot& snapshot) { *impl_ = Impl(snapshot); 
 
 std::optional<PdInFrame> Device::exchange(const PdOutFrame& out, bool outputs_valid) {
   Impl& d = *impl_;
-  if (!d.powered || d.comm_blocked) return std::nullopt;
-  d.link.feed();
-  d.com_phase = ComPhase::Operate;
-  if (!d.boot_mode) {
+  if (!d.st.powered || d.st.comm_blocked) return std::nullopt;
+  d.mon.link.feed();
+  d.st.com_phase = ComPhase::Operate;
+  if (!d.st.boot_mode) {
     if (outputs_valid) {
-      d.last_out_frame = out;
-      d.outputs_valid = true;
+      d.st.last_out_frame = out;
+      d.st.outputs_valid = true;
       d.process_outputs(decode_out(out));
-    } else if (d.outputs_valid) {
+    } else if (d.st.outputs_valid) {
       // Manual 5: valid -> invalid behaves like a connection interruption.
-      d.outputs_valid = false;
+      d.st.outputs_valid = false;
       if (d.motor_on()) d.raise_error(ErrorBit::InvalidCommand, cause::kOutputsInvalid);
     }
   }
-  d.last_in_frame = encode(d.pd_in());
-  return d.last_in_frame;
+  d.st.last_in_frame = encode(pd_in(d.st, d.user_now()));
+  return d.st.last_in_frame;
 }
 
 // dt_s becomes integer nanoseconds once, rounded to the nearest ns
@@ -68,31 +68,31 @@ IsduResult Device::isdu_write(uint16_t index, uint8_t subindex, std::span<const 
 
 void Device::power_off() {
   Impl& d = *impl_;
-  d.store.abort_block();
-  if (d.powered) { // a move in progress ends with the supply; a held one is handed out
-    d.move_recorder.finish(d.time_ns, MoveOutcome::MotorOff, internal_counts_to_deg(d.user_now()));
-    d.move_recorder.release();
+  d.config.store.abort_block();
+  if (d.st.powered) { // a move in progress ends with the supply; a held one is handed out
+    d.st.move_recorder.finish(d.st.time_ns, MoveOutcome::MotorOff, internal_counts_to_deg(d.user_now()));
+    d.st.move_recorder.release();
   }
-  d.powered = false;
+  d.st.powered = false;
 }
 
-double Device::take_peak_tracking_error_deg() { return impl_->tracking.take_peak(); }
+double Device::take_peak_tracking_error_deg() { return impl_->mon.tracking.take_peak(); }
 
-std::vector<MoveRecord> Device::take_finished_moves() { return impl_->move_recorder.take_finished(); }
-std::optional<MoveRecord> Device::pending_move() const { return impl_->move_recorder.pending(); }
+std::vector<MoveRecord> Device::take_finished_moves() { return impl_->st.move_recorder.take_finished(); }
+std::optional<MoveRecord> Device::pending_move() const { return impl_->st.move_recorder.pending(); }
 void Device::power_on(const SensorReadings& sensors) { impl_->power_on(sensors); }
-bool Device::powered() const { return impl_->powered; }
-bool Device::in_boot_mode() const { return impl_->boot_mode; }
-LedColor Device::led() const { return impl_->led(); }
-std::vector<uint8_t> Device::save_nvm() const { return save_nvm_image(*impl_); }
+bool Device::powered() const { return impl_->st.powered; }
+bool Device::in_boot_mode() const { return impl_->st.boot_mode; }
+LedColor Device::led() const { return led_color(impl_->st, impl_->mon.locator, impl_->config.store); }
+std::vector<uint8_t> Device::save_nvm() const { return save_nvm_image(impl_->config); }
 
 // Manual 1: Startup after every power-on until the master moves on;
 // Operate also with the outputs marked invalid (DeviceOperate, manual 5:
 // the device is in OPERATE then); off when the link is lost (A-LINK-3).
 IoLinkLedMode Device::io_link_led() const {
   const Impl& d = *impl_;
-  if (!d.powered || d.comm_blocked || !d.link.link_up) return IoLinkLedMode::NotConnected;
-  switch (d.com_phase) {
+  if (!d.st.powered || d.st.comm_blocked || !d.mon.link.link_up) return IoLinkLedMode::NotConnected;
+  switch (d.st.com_phase) {
     case ComPhase::Startup: return IoLinkLedMode::Startup;
     case ComPhase::Preoperate: return IoLinkLedMode::Preoperate;
     case ComPhase::Operate: return IoLinkLedMode::Operate;
@@ -102,36 +102,36 @@ IoLinkLedMode Device::io_link_led() const {
 
 bool Device::startup_cycle(ComPhase phase) {
   Impl& d = *impl_;
-  if (!d.powered || d.comm_blocked) return false;
-  d.link.feed();
-  d.com_phase = phase == ComPhase::Operate ? ComPhase::Preoperate : phase; // OPERATE is exchange()
+  if (!d.st.powered || d.st.comm_blocked) return false;
+  d.mon.link.feed();
+  d.st.com_phase = phase == ComPhase::Operate ? ComPhase::Preoperate : phase; // OPERATE is exchange()
   return true;
 }
 
-ComPhase Device::com_phase() const { return impl_->com_phase; }
+ComPhase Device::com_phase() const { return impl_->st.com_phase; }
 
-void Device::set_master_cycle_time(double cycle_s) { impl_->link.master_cycle_ns = seconds_to_ns(cycle_s); }
+void Device::set_master_cycle_time(double cycle_s) { impl_->mon.link.master_cycle_ns = seconds_to_ns(cycle_s); }
 
 Telemetry Device::telemetry() const {
   const Impl& d = *impl_;
   Telemetry t;
-  const int dir = d.dir();
-  t.state = d.state;
+  const int dir = d.config.dir();
+  t.state = d.st.state;
   t.position_deg = internal_counts_to_deg(d.user_now());
   t.setpoint_deg = d.setpoint_user_deg();
   t.tracking_error_deg = t.setpoint_deg - t.position_deg;
-  t.velocity_dps = rad_to_deg(dir * d.velocity_rad_s);
-  t.torque_Nm = d.motor_on() ? d.torque_Nm : 0.0;
-  t.torque_limit_Nm = d.torque_limit_Nm;
-  t.supply_V = d.supply_V;
-  t.temperature_C = d.temperature_C;
-  t.error_code = d.faults.error_byte();
-  t.warning_code = d.faults.warning_byte();
-  t.led = d.led();
-  t.moving = d.state == State::Busy && d.phase == MotionPhase::Travel;
-  t.settling = d.phase == MotionPhase::Settle;
-  t.moves_started = d.moves_started;
-  t.tolerance_deg = rad_to_deg(d.settle.tolerance_rad);
+  t.velocity_dps = rad_to_deg(dir * d.st.velocity_rad_s);
+  t.torque_Nm = d.motor_on() ? d.st.torque_Nm : 0.0;
+  t.torque_limit_Nm = d.st.torque_limit_Nm;
+  t.supply_V = d.st.supply_V;
+  t.temperature_C = d.st.temperature_C;
+  t.error_code = d.st.faults.error_byte();
+  t.warning_code = d.st.faults.warning_byte();
+  t.led = led_color(d.st, d.mon.locator, d.config.store);
+  t.moving = d.st.state == State::Busy && d.st.phase == MotionPhase::Travel;
+  t.settling = d.st.phase == MotionPhase::Settle;
+  t.moves_started = d.st.moves_started;
+  t.tolerance_deg = rad_to_deg(d.st.settle.tolerance_rad);
   return t;
 }
 

@@ -42,35 +42,35 @@ std::vector<uint8_t> Device::firmware_image(std::string_view version, std::size_
 // a new transfer, 1 ends it (the image is checked, then the device restarts).
 uint16_t Device::Impl::firmware_write(uint8_t sub, std::span<const uint8_t> data) {
   if (sub != kFirmwareChunkSub && sub != kFirmwareCommandSub) return kIsduSubindexNotAvailable;
-  if (!boot_mode) return kIsduServiceTempUnavailable; // manual 9: only in boot mode
+  if (!st.boot_mode) return kIsduServiceTempUnavailable; // manual 9: only in boot mode
   if (data.empty()) return kIsduLengthUnderrun;
   if (sub == kFirmwareChunkSub) {
     if (data.size() > Device::kFirmwareChunk_B) return kIsduLengthOverrun;
-    if (fw_image.size() + data.size() > kFirmwareMaxImage) return kIsduValueOutOfRange;
+    if (st.fw_image.size() + data.size() > kFirmwareMaxImage) return kIsduValueOutOfRange;
     // The first chunk overwrites the application: from now on the module
     // only starts in boot mode until a good image is complete (manual 9).
-    firmware_failed = true;
-    fw_image.insert(fw_image.end(), data.begin(), data.end());
+    config.firmware_failed = true;
+    st.fw_image.insert(st.fw_image.end(), data.begin(), data.end());
     return 0;
   }
   if (data.size() > 1) return kIsduLengthOverrun;
   switch (data[0]) {
     case kFirmwareCommandStart:
-      fw_image.clear();
+      st.fw_image.clear();
       return 0;
     case kFirmwareCommandEnd: {
-      const bool good = image_valid(fw_image);
-      fw_image.clear();
+      const bool good = image_valid(st.fw_image);
+      st.fw_image.clear();
       // A bad image is refused and changes nothing more: if a chunk came,
       // the first one already marked the application erased (boot mode from
       // now on, manual 9); without any chunk the application is untouched.
       if (!good) return kIsduInconsistentParameterSet;
-      firmware_failed = false;
+      config.firmware_failed = false;
       // Restart in normal mode; the configuration is kept (manual 9).
       SensorReadings s;
-      s.encoder_counts = encoder;
-      s.supply_V = supply_V;
-      s.temperature_C = temperature_C;
+      s.encoder_counts = st.encoder;
+      s.supply_V = st.supply_V;
+      s.temperature_C = st.temperature_C;
       power_on(s);
       return 0;
     }
@@ -81,7 +81,7 @@ uint16_t Device::Impl::firmware_write(uint8_t sub, std::span<const uint8_t> data
 
 uint16_t Device::firmware_update(std::span<const uint8_t> image) {
   Impl& d = *impl_;
-  if (!d.powered || !d.boot_mode) return kIsduServiceTempUnavailable;
+  if (!d.st.powered || !d.st.boot_mode) return kIsduServiceTempUnavailable;
   const uint8_t start = kFirmwareCommandStart;
   const uint8_t end = kFirmwareCommandEnd;
   if (const uint16_t e = d.firmware_write(kFirmwareCommandSub, {&start, 1})) return e;

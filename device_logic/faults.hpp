@@ -86,6 +86,7 @@ struct FaultSet {
   bool any_warning() const { return warning_byte() != 0; }
   uint8_t error(ErrorBit b) const { return error_cause[static_cast<int>(b)]; }
   uint8_t warning(WarningBit b) const { return warning_cause[static_cast<int>(b)]; }
+  void set_warning(WarningBit b, uint8_t code) { warning_cause[static_cast<int>(b)] = code; } // 0 clears
   bool operator==(const FaultSet&) const = default;
 };
 

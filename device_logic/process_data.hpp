@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <span>
 #include <string_view>
+#include <variant>
 
 namespace sreh {
 
@@ -13,31 +14,32 @@ inline constexpr std::size_t kPdInBytes = 7;  // manual 2.3
 using PdOutFrame = std::array<uint8_t, kPdOutBytes>;
 using PdInFrame = std::array<uint8_t, kPdInBytes>;
 
-// Outgoing process data: PLC -> module (manual 2.2).
+// Outgoing process data: PLC -> module (manual 2.2). Where each field sits in
+// the frame: kPdOutFields below, the one statement of the layout.
 struct ProcessDataOut {
-  int32_t target_raw = 0;      // bits 47..16, 2^16 counts per revolution
-  uint8_t parameter_set = 0;   // bits 15..8, valid 0..7
-  bool shortest_path = false;  // bit 6
-  bool relative = false;       // bit 5
-  bool set_origin = false;     // bit 4
-  bool reset_error = false;    // bit 3
-  bool stop = false;           // bit 2
-  bool move = false;           // bit 1
-  bool motor_on = false;       // bit 0
+  int32_t target_raw = 0;      // 2^16 counts per revolution (manual 2.5)
+  uint8_t parameter_set = 0;   // valid 0..7
+  bool shortest_path = false;
+  bool relative = false;
+  bool set_origin = false;
+  bool reset_error = false;
+  bool stop = false;
+  bool move = false;
+  bool motor_on = false;
   bool operator==(const ProcessDataOut&) const = default;
 };
 
-// Incoming process data: module -> PLC (manual 2.3).
+// Incoming process data: module -> PLC (manual 2.3); the layout: kPdInFields.
 struct ProcessDataIn {
-  int32_t position_raw = 0;    // bits 55..24
-  uint8_t error_code = 0;      // bits 23..16, bit field (manual 2.4)
-  uint8_t warning_code = 0;    // bits 15..8, bit field (manual 2.4)
-  bool error = false;          // bit 5
-  bool warning = false;        // bit 4
-  bool done = false;           // bit 3
-  bool busy = false;           // bit 2
-  bool ready = false;          // bit 1
-  bool motor_off = false;      // bit 0
+  int32_t position_raw = 0;    // 2^16 counts per revolution (manual 2.5)
+  uint8_t error_code = 0;      // bit field (manual 2.4)
+  uint8_t warning_code = 0;    // bit field (manual 2.4)
+  bool error = false;
+  bool warning = false;
+  bool done = false;
+  bool busy = false;
+  bool ready = false;
+  bool motor_off = false;
   bool operator==(const ProcessDataIn&) const = default;
 };
 
@@ -51,10 +53,11 @@ ProcessDataIn decode_in(const PdInFrame& frame);
 ProcessDataOut decode_out(std::span<const uint8_t> bytes);
 ProcessDataIn decode_in(std::span<const uint8_t> bytes);
 
-// The layout as data (manual 2.2, 2.3), for descriptions of the device (the
-// IODD-like export, serve's decoded views). Bit offsets count from the least
-// significant bit of the frame, as IO-Link and the manual's tables do; a test
-// checks each field against encode().
+// The layout as data (manual 2.2, 2.3): the one place it is stated. Each row
+// names a field, its bits and the struct member it maps to; the codec loops
+// over the rows, the IODD-like export, serve's decoded views, Python's dicts
+// and the scenario keys read the same rows. Bit offsets count from the least
+// significant bit of the frame, as IO-Link and the manual's tables do.
 enum class PdFieldType { Int32, UInt8, Bool };
 struct PdField {
   std::string_view name;     // the scenario / process-data field name
@@ -68,27 +71,53 @@ struct PdField {
   // the others. One vocabulary: `<what>_raw` the wire counts, `<what>_deg`.
   std::string_view deg_name = {};
 };
-inline constexpr std::array<PdField, 9> kPdOutFields{{
-    {"target_raw", "Target position", PdFieldType::Int32, 16, 32, "2.2, 2.5", "target_deg"},
-    {"parameter_set", "Motion parameter set", PdFieldType::UInt8, 8, 8, "2.2"},
-    {"shortest_path", "Shortest path", PdFieldType::Bool, 6, 1, "2.2, 4.3"},
-    {"relative", "Relative", PdFieldType::Bool, 5, 1, "2.2, 4.2"},
-    {"set_origin", "Set origin", PdFieldType::Bool, 4, 1, "2.2, 4.1"},
-    {"reset_error", "Error reset", PdFieldType::Bool, 3, 1, "2.2"},
-    {"stop", "Stop", PdFieldType::Bool, 2, 1, "2.2"},
-    {"move", "Move", PdFieldType::Bool, 1, 1, "2.2"},
-    {"motor_on", "Motor on", PdFieldType::Bool, 0, 1, "2.2"},
+
+// A row of ProcessDataOut's or ProcessDataIn's table: a PdField plus the
+// member it maps to. Type and bit length follow from the member's type
+// (int32 32 bits, uint8 8 bits, bool 1 bit), so a row cannot declare a width
+// its member does not have; the variant's alternatives are in PdFieldType's
+// order.
+template <class Pd>
+struct PdFieldOf : PdField {
+  using Member = std::variant<int32_t Pd::*, uint8_t Pd::*, bool Pd::*>;
+  Member member;
+
+  // Arguments: name, manual name, member, bit offset, manual section
+  // [, degrees view name].
+  constexpr PdFieldOf(std::string_view id, std::string_view manual, int32_t Pd::*m, unsigned offset,
+                      std::string_view where, std::string_view deg = {})
+      : PdField{id, manual, PdFieldType::Int32, offset, 32, where, deg}, member(m) {}
+  constexpr PdFieldOf(std::string_view id, std::string_view manual, uint8_t Pd::*m, unsigned offset,
+                      std::string_view where)
+      : PdField{id, manual, PdFieldType::UInt8, offset, 8, where}, member(m) {}
+  constexpr PdFieldOf(std::string_view id, std::string_view manual, bool Pd::*m, unsigned offset,
+                      std::string_view where)
+      : PdField{id, manual, PdFieldType::Bool, offset, 1, where}, member(m) {}
+};
+using PdOutField = PdFieldOf<ProcessDataOut>;
+using PdInField = PdFieldOf<ProcessDataIn>;
+
+inline constexpr std::array<PdOutField, 9> kPdOutFields{{
+    {"target_raw", "Target position", &ProcessDataOut::target_raw, 16, "2.2, 2.5", "target_deg"},
+    {"parameter_set", "Motion parameter set", &ProcessDataOut::parameter_set, 8, "2.2"},
+    {"shortest_path", "Shortest path", &ProcessDataOut::shortest_path, 6, "2.2, 4.3"},
+    {"relative", "Relative", &ProcessDataOut::relative, 5, "2.2, 4.2"},
+    {"set_origin", "Set origin", &ProcessDataOut::set_origin, 4, "2.2, 4.1"},
+    {"reset_error", "Error reset", &ProcessDataOut::reset_error, 3, "2.2"},
+    {"stop", "Stop", &ProcessDataOut::stop, 2, "2.2"},
+    {"move", "Move", &ProcessDataOut::move, 1, "2.2"},
+    {"motor_on", "Motor on", &ProcessDataOut::motor_on, 0, "2.2"},
 }};
-inline constexpr std::array<PdField, 9> kPdInFields{{
-    {"position_raw", "Actual position", PdFieldType::Int32, 24, 32, "2.3, 2.5", "position_deg"},
-    {"error_code", "Error code", PdFieldType::UInt8, 16, 8, "2.3, 2.4"},
-    {"warning_code", "Warning code", PdFieldType::UInt8, 8, 8, "2.3, 2.4"},
-    {"error", "Error", PdFieldType::Bool, 5, 1, "2.3"},
-    {"warning", "Warning", PdFieldType::Bool, 4, 1, "2.3"},
-    {"done", "Done", PdFieldType::Bool, 3, 1, "2.3"},
-    {"busy", "Busy", PdFieldType::Bool, 2, 1, "2.3"},
-    {"ready", "Ready", PdFieldType::Bool, 1, 1, "2.3"},
-    {"motor_off", "Motor off", PdFieldType::Bool, 0, 1, "2.3"},
+inline constexpr std::array<PdInField, 9> kPdInFields{{
+    {"position_raw", "Actual position", &ProcessDataIn::position_raw, 24, "2.3, 2.5", "position_deg"},
+    {"error_code", "Error code", &ProcessDataIn::error_code, 16, "2.3, 2.4"},
+    {"warning_code", "Warning code", &ProcessDataIn::warning_code, 8, "2.3, 2.4"},
+    {"error", "Error", &ProcessDataIn::error, 5, "2.3"},
+    {"warning", "Warning", &ProcessDataIn::warning, 4, "2.3"},
+    {"done", "Done", &ProcessDataIn::done, 3, "2.3"},
+    {"busy", "Busy", &ProcessDataIn::busy, 2, "2.3"},
+    {"ready", "Ready", &ProcessDataIn::ready, 1, "2.3"},
+    {"motor_off", "Motor off", &ProcessDataIn::motor_off, 0, "2.3"},
 }};
 
 // One field of a frame read through its row: the bits from bit_offset (from

@@ -34,6 +34,7 @@ constexpr uint8_t state_bit(State s) { return static_cast<uint8_t>(1u << static_
 inline constexpr uint8_t kAnyState = 0x3F;
 inline constexpr uint8_t kMotorOnStates =
     state_bit(State::Ready) | state_bit(State::Busy) | state_bit(State::Done) | state_bit(State::ErrorOn);
+constexpr bool motor_is_on(State s) { return (kMotorOnStates & state_bit(s)) != 0; }
 
 struct Transition {
   uint8_t from;              // state mask

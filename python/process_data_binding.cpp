@@ -53,8 +53,8 @@ pyb::bytes pd_out_bytes(double target_deg, std::optional<int64_t> target_raw, st
 
 // A frame's fields by name, read through the layout table (kPdInFields /
 // kPdOutFields): the same names as scenarios and serve (issue 30).
-template <std::size_t N, std::size_t F>
-pyb::dict fields_dict(const std::array<uint8_t, N>& frame, const std::array<PdField, F>& fields) {
+template <std::size_t N, class Row, std::size_t F>
+pyb::dict fields_dict(const std::array<uint8_t, N>& frame, const std::array<Row, F>& fields) {
   pyb::dict d;
   for (const PdField& f : fields) {
     const int64_t v = pd_field_value(frame, f);

@@ -136,8 +136,8 @@ namespace {
 
 // A frame's fields by name, read through the layout table (kPdInFields /
 // kPdOutFields): the one vocabulary of scenarios, serve and Python.
-template <std::size_t N, std::size_t F>
-void add_fields(Json& j, const std::array<uint8_t, N>& frame, const std::array<PdField, F>& fields) {
+template <std::size_t N, class Row, std::size_t F>
+void add_fields(Json& j, const std::array<uint8_t, N>& frame, const std::array<Row, F>& fields) {
   for (const PdField& f : fields) {
     const int64_t v = pd_field_value(frame, f);
     if (!f.deg_name.empty()) j[std::string(f.deg_name)] = wire_counts_to_deg(static_cast<int32_t>(v));

@@ -158,9 +158,9 @@ std::string pd_datatype(PdFieldType type) {
   return {};
 }
 
-template <std::size_t N>
+template <class Row, std::size_t N>
 void write_pd(std::ostream& os, Texts& texts, std::string_view element, std::string_view id, std::size_t bytes,
-              const std::array<PdField, N>& fields) {
+              const std::array<Row, N>& fields) {
   os << fmt::format("          <{} id=\"{}\" bitLength=\"{}\">\n", element, id, bytes * 8);
   os << fmt::format("            <Datatype xsi:type=\"RecordT\" bitLength=\"{}\" subindexAccessSupported=\"false\">\n",
                     bytes * 8);

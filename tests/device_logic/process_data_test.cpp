@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <stdexcept>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 #include "device_logic/process_data.hpp"
@@ -94,43 +96,85 @@ uint64_t frame_bits(const std::array<uint8_t, Bytes>& f) {
 }
 uint64_t field_mask(const PdField& f) { return ((uint64_t{1} << f.bit_length) - 1) << f.bit_offset; }
 
+// A struct with the field of this name all ones, the others 0: the mapping
+// written out by hand, independent of the table.
+ProcessDataOut out_with_all_ones(std::string_view name) {
+  ProcessDataOut p;
+  if (name == "target_raw") p.target_raw = -1;
+  if (name == "parameter_set") p.parameter_set = 0xFF;
+  p.shortest_path = name == "shortest_path";
+  p.relative = name == "relative";
+  p.set_origin = name == "set_origin";
+  p.reset_error = name == "reset_error";
+  p.stop = name == "stop";
+  p.move = name == "move";
+  p.motor_on = name == "motor_on";
+  return p;
+}
+ProcessDataIn in_with_all_ones(std::string_view name) {
+  ProcessDataIn p;
+  if (name == "position_raw") p.position_raw = -1;
+  if (name == "error_code") p.error_code = 0xFF;
+  if (name == "warning_code") p.warning_code = 0xFF;
+  p.error = name == "error";
+  p.warning = name == "warning";
+  p.done = name == "done";
+  p.busy = name == "busy";
+  p.ready = name == "ready";
+  p.motor_off = name == "motor_off";
+  return p;
+}
+
 TEST(ProcessDataLayout, OutFieldsMatchTheCodec_2_2) {
-  auto set_all = [](std::string_view name) {
-    ProcessDataOut p;
-    if (name == "target_raw") p.target_raw = -1;
-    if (name == "parameter_set") p.parameter_set = 0xFF;
-    p.shortest_path = name == "shortest_path";
-    p.relative = name == "relative";
-    p.set_origin = name == "set_origin";
-    p.reset_error = name == "reset_error";
-    p.stop = name == "stop";
-    p.move = name == "move";
-    p.motor_on = name == "motor_on";
-    return p;
-  };
   uint64_t covered = 0;
   for (const PdField& f : kPdOutFields) {
-    EXPECT_EQ(frame_bits(encode(set_all(f.name))), field_mask(f)) << f.name;
+    EXPECT_EQ(frame_bits(encode(out_with_all_ones(f.name))), field_mask(f)) << f.name;
     covered |= field_mask(f);
   }
   EXPECT_EQ(covered, 0xFFFFFFFFFFFFull & ~0x80ull); // every bit but the reserved bit 7 (manual 2.2)
 }
 
 TEST(ProcessDataLayout, InFieldsMatchTheCodec_2_3) {
-  auto set_all = [](std::string_view name) {
-    ProcessDataIn p;
-    if (name == "position_raw") p.position_raw = -1;
-    if (name == "error_code") p.error_code = 0xFF;
-    if (name == "warning_code") p.warning_code = 0xFF;
-    p.error = name == "error";
-    p.warning = name == "warning";
-    p.done = name == "done";
-    p.busy = name == "busy";
-    p.ready = name == "ready";
-    p.motor_off = name == "motor_off";
-    return p;
-  };
-  for (const PdField& f : kPdInFields) EXPECT_EQ(frame_bits(encode(set_all(f.name))), field_mask(f)) << f.name;
+  for (const PdField& f : kPdInFields) EXPECT_EQ(frame_bits(encode(in_with_all_ones(f.name))), field_mask(f)) << f.name;
+}
+
+// A struct with the member of `row` set to all ones through the row's own
+// member pointer, the others 0.
+template <class Pd>
+Pd all_ones_through(const PdFieldOf<Pd>& row) {
+  Pd p;
+  std::visit([&p](auto member) {
+    using T = std::remove_cvref_t<decltype(p.*member)>;
+    if constexpr (std::is_same_v<T, bool>) p.*member = true;
+    else p.*member = static_cast<T>(~T{0});
+  }, row.member);
+  return p;
+}
+
+// The codec reads the rows (issue 30): each row's member pointer is the
+// member its name says, it lands exactly on the row's bits and those bits
+// decode back into it alone; no two rows share a member or a bit.
+template <class Pd, std::size_t N, std::size_t Bytes>
+void expect_rows_agree(const std::array<PdFieldOf<Pd>, N>& rows, Pd (*by_name)(std::string_view),
+                       Pd (*decode)(const std::array<uint8_t, Bytes>&)) {
+  uint64_t covered = 0;
+  for (std::size_t i = 0; i < N; ++i) {
+    const PdFieldOf<Pd>& row = rows[i];
+    const Pd through_row = all_ones_through(row);
+    EXPECT_EQ(through_row, by_name(row.name)) << row.name << ": the row's member is another field";
+    EXPECT_EQ(static_cast<std::size_t>(row.type), row.member.index()) << row.name;
+    const std::array<uint8_t, Bytes> frame = encode(through_row);
+    EXPECT_EQ(frame_bits(frame), field_mask(row)) << row.name;
+    EXPECT_EQ(decode(frame), through_row) << row.name;
+    EXPECT_EQ(covered & field_mask(row), 0u) << row.name << " overlaps another row";
+    covered |= field_mask(row);
+    for (std::size_t j = 0; j < i; ++j) EXPECT_NE(rows[j].member, row.member) << row.name << ", " << rows[j].name;
+  }
+}
+
+TEST(ProcessDataLayout, EachRowsMemberAndBitsAgree_2_2_2_3) {
+  expect_rows_agree<ProcessDataOut, kPdOutFields.size(), kPdOutBytes>(kPdOutFields, out_with_all_ones, decode_out);
+  expect_rows_agree<ProcessDataIn, kPdInFields.size(), kPdInBytes>(kPdInFields, in_with_all_ones, decode_in);
 }
 
 // The decoded views read each field through its row: the value the codec
