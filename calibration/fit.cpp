@@ -16,10 +16,6 @@ constexpr double kRestartGain = 0.01;          // a restart must lower the cost 
 constexpr double kZ95 = 1.959963984540054;     // two-sided 95 % of the normal distribution
 constexpr double kWideHalfWidth = 0.25;        // an interval wider than +-25 % of the value: not identified
 constexpr double kStrongCorrelation = 0.95;    // |r| above this: the data cannot separate the two
-// A solve stops when the step the linear model still predicts is below this
-// many standard errors of every constant: further steps only chase the
-// replay's count-sized roughness (A-CAL-8).
-constexpr double kStopSigmas = 1.0;
 // Logs longer than twice this are first fitted on their first kCoarse_s
 // (shared out in proportion to their lengths; the plan is ~9 s), then on
 // the whole from there (A-CAL-8).
@@ -40,15 +36,19 @@ class IterationProgress final : public ceres::IterationCallback {
   const int& done_before_; // iterations of the earlier solves
 };
 
-// Ends a solve where the Gauss-Newton step from the current point, kept
-// inside the bounds, is below kStopSigmas standard errors (A-CAL-4's
-// covariance) of every constant (A-CAL-8). Ceres has just taken the
-// Jacobian there (at the start and after every accepted step), so the test
-// costs no replay.
+// Ends a solve where the step still ahead is within the noise (A-CAL-8):
+// the Gauss-Newton step d from the best point so far, kept inside the
+// bounds, measured in the constants' covariance C (A-CAL-4), d^T C^-1 d,
+// is at most the number of constants n, what fitting n constants to pure
+// noise gains on average. Further steps only chase the replay's
+// count-sized roughness. Ceres writes its best point into the parameter
+// block every iteration and has just taken the Jacobian there when that
+// point is new, so the test costs no replay.
 class WithinNoise final : public ceres::IterationCallback {
  public:
   WithinNoise(const std::vector<FitCase>& cases, const ReplayCost& cost, const Unknowns& u, const double* x)
       : cases_(cases), cost_(cost), u_(u), x_(x) {}
+  double distance2() const { return distance2_; }
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
     if (!s.step_is_successful) return ceres::SOLVER_CONTINUE;
     const std::vector<double>* jacobian = cost_.jacobian_at(x_);
@@ -56,12 +56,13 @@ class WithinNoise final : public ceres::IterationCallback {
     const std::size_t n = u_.card_index.size();
     const Covariance c = covariance_at(cases_, cost_.jacobian_residuals(), *jacobian, n);
     if (c.singular) return ceres::SOLVER_CONTINUE;
+    Eigen::VectorXd step(static_cast<Eigen::Index>(n));
     for (std::size_t i = 0; i < n; ++i) {
       const auto k = static_cast<Eigen::Index>(i);
-      const double step = std::clamp(x_[i] + c.gauss_newton(k), u_.lo[i], u_.hi[i]) - x_[i];
-      if (std::abs(step) > kStopSigmas * std::sqrt(std::max(0.0, c.cov(k, k)))) return ceres::SOLVER_CONTINUE;
+      step(k) = std::clamp(x_[i] + c.gauss_newton(k), u_.lo[i], u_.hi[i]) - x_[i];
     }
-    return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+    distance2_ = step.dot(c.cov.completeOrthogonalDecomposition().solve(step));
+    return distance2_ <= static_cast<double>(n) ? ceres::SOLVER_TERMINATE_SUCCESSFULLY : ceres::SOLVER_CONTINUE;
   }
 
  private:
@@ -69,6 +70,7 @@ class WithinNoise final : public ceres::IterationCallback {
   const ReplayCost& cost_;
   const Unknowns& u_;
   const double* x_; // the parameter block, updated every iteration
+  double distance2_ = 0;
 };
 
 struct Stage {
@@ -126,7 +128,8 @@ Stage solve(const std::vector<FitCase>& cases, const ModelCard& start, const Unk
   stage.converged = stage.summary.termination_type == ceres::CONVERGENCE ||
                     stage.summary.termination_type == ceres::USER_SUCCESS;
   if (stage.summary.termination_type == ceres::USER_SUCCESS) {
-    stage.summary.message = fmt::format("the step still ahead is below {} standard errors of every constant", kStopSigmas);
+    stage.summary.message = fmt::format("the step still ahead is within the noise (d^2 = {:.2f} <= {} constants, A-CAL-8)",
+                                        within_noise.distance2(), n);
   }
   return stage;
 }
