@@ -155,8 +155,8 @@ std::vector<std::string> default_fit_names() {
 }
 
 std::vector<double> position_residuals_deg(const std::vector<FitCase>& cases, const ModelCard& card) {
-  std::vector<double> r(residual_count(cases));
-  residuals_into(cases, card, r.data());
+  std::vector<double> r(position_count(cases));
+  residuals_into(cases, card, r.data(), false);
   return r;
 }
 
@@ -168,7 +168,8 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
   for (std::size_t i = 0; i < n; ++i) x[i] = std::clamp(start.constants[u.card_index[i]].value / u.scale[i], u.lo[i], u.hi[i]);
 
   FitResult result;
-  result.residuals = residual_count(cases);
+  result.residuals = position_count(cases);
+  result.temperature_residuals = u.temperature ? temperature_count(cases) : 0;
   result.start_rms_residual_deg = rms(position_residuals_deg(cases, start));
   result.replays = 1;
 
@@ -181,14 +182,17 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
 
   // The Jacobian and residuals at the solution, for the intervals (taken
   // already where the solve ended on the noise test).
-  const std::size_t m = result.residuals;
+  const std::size_t positions = result.residuals;
+  const std::size_t m = positions + result.temperature_residuals;
   std::vector<double> r(m), jac(m * n);
   const double* params[] = {x.data()};
   double* jacs[] = {jac.data()};
   stage.cost->Evaluate(params, r.data(), jacs);
   result.replays += stage.cost->replays();
   const Covariance cv = covariance_at(cases, r, jac, n);
-  result.rms_residual_deg = cv.rms;
+  const auto split = r.begin() + static_cast<std::ptrdiff_t>(positions);
+  result.rms_residual_deg = rms(std::vector<double>(r.begin(), split));
+  result.rms_temperature_residual_C = rms(std::vector<double>(split, r.end())) / kTemperatureWeight_deg_per_C;
   result.autocorrelation_rows = cv.autocorrelation_rows;
   result.iterations = iterations;
   result.solver_message = stage.summary.message;

@@ -53,6 +53,10 @@ struct FitResult {
   std::string solver_message;
   std::vector<std::vector<double>> correlation; // between the fitted constants
   std::size_t residuals = 0;      // logged rows used
+  // Polled temperatures used (a thermal constant fitted, A-CAL-9) and their
+  // rms residual, degC; 0 without.
+  std::size_t temperature_residuals = 0;
+  double rms_temperature_residual_C = 0;
   double autocorrelation_rows = 1; // integrated autocorrelation time of the residuals, rows (A-CAL-4)
   std::size_t replays = 0;         // replays the fit cost, of the coarse stage's first seconds and of the whole logs (A-CAL-8)
 };

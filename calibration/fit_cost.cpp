@@ -9,9 +9,26 @@
 
 namespace sreh {
 
+namespace {
+
+// The thermal model's constants (twin/thermal.hpp, A-TWIN-THERMAL-1, -2):
+// they move the polled temperature, not the position.
+bool is_thermal(const std::string& name) {
+  return name == "winding_heat_capacity" || name == "housing_heat_capacity" || name == "winding_to_housing_resistance" ||
+         name == "housing_to_ambient_resistance" || name == "speed_loss";
+}
+
+std::size_t polled_count(const MasterLog& log) {
+  return static_cast<std::size_t>(
+      std::count_if(log.rows.begin(), log.rows.end(), [](const MasterLogRow& r) { return r.temperature_C.has_value(); }));
+}
+
+} // namespace
+
 Unknowns unknowns_of(const ModelCard& start, const std::vector<std::string>& names) {
   Unknowns u;
   for (const std::string& name : names) {
+    if (is_thermal(name)) u.temperature = true;
     const ModelConstant* c = start.find(name);
     if (!c) throw CalibrationInputError(fmt::format("--fit {}: not a constant of the model card", name));
     if (!(c->range_hi > c->range_lo)) {
@@ -39,27 +56,40 @@ ModelCard card_at(const ModelCard& start, const Unknowns& u, const double* x) {
   return card;
 }
 
-// Replays every case with `card`, residuals appended in case order.
-void residuals_into(const std::vector<FitCase>& cases, const ModelCard& card, double* out) {
+void residuals_into(const std::vector<FitCase>& cases, const ModelCard& card, double* out, bool temperature) {
   const ModuleModel module = card.module_model();
+  double* position = out;
+  double* polled = out + position_count(cases);
   for (const FitCase& c : cases) {
     const ReplayTrack track = replay(c.setup, module, c.log);
     for (std::size_t k = 0; k < c.log.rows.size(); ++k) {
-      *out++ = track.position_deg[k] - logged_position_deg(c.log.rows[k].pd_in);
+      const MasterLogRow& row = c.log.rows[k];
+      *position++ = track.position_deg[k] - logged_position_deg(row.pd_in);
+      if (temperature && row.temperature_C) *polled++ = kTemperatureWeight_deg_per_C * (track.temperature_C[k] - *row.temperature_C);
     }
   }
 }
 
-std::size_t residual_count(const std::vector<FitCase>& cases) {
+std::size_t position_count(const std::vector<FitCase>& cases) {
   std::size_t m = 0;
   for (const FitCase& c : cases) m += c.log.rows.size();
   return m;
 }
 
+std::size_t temperature_count(const std::vector<FitCase>& cases) {
+  std::size_t m = 0;
+  for (const FitCase& c : cases) m += polled_count(c.log);
+  return m;
+}
+
+std::size_t residual_count(const std::vector<FitCase>& cases, const Unknowns& u) {
+  return position_count(cases) + (u.temperature ? temperature_count(cases) : 0);
+}
+
 ReplayCost::ReplayCost(const std::vector<FitCase>& cases, const ModelCard& start, const Unknowns& u, int threads,
                        double step)
     : cases_(cases), start_(start), u_(u), threads_(threads), step_(step) {
-  set_num_residuals(static_cast<int>(residual_count(cases)));
+  set_num_residuals(static_cast<int>(residual_count(cases, u)));
   mutable_parameter_block_sizes()->push_back(static_cast<int>(u.card_index.size()));
 }
 
@@ -72,7 +102,7 @@ bool ReplayCost::Evaluate(double const* const* parameters, double* residuals, do
       std::copy(known->begin(), known->end(), residuals);
       return true;
     }
-    residuals_into(cases_, card_at(start_, u_, x.data()), residuals);
+    residuals_into(cases_, card_at(start_, u_, x.data()), residuals, u_.temperature);
     ++replays_;
     remember(x, std::vector<double>(residuals, residuals + m));
     return true;
@@ -97,7 +127,7 @@ bool ReplayCost::Evaluate(double const* const* parameters, double* residuals, do
     const std::size_t j = k + first;
     std::vector<double> xj = x;
     if (j > 0) xj[(j - 1) / 2] = (j % 2 == 1) ? up[(j - 1) / 2] : down[(j - 1) / 2];
-    residuals_into(cases_, card_at(start_, u_, xj.data()), columns[j].data());
+    residuals_into(cases_, card_at(start_, u_, xj.data()), columns[j].data(), u_.temperature);
   });
   replays_ += 2 * n + 1 - first;
   if (!known) remember(x, columns[0]);
@@ -172,7 +202,10 @@ Covariance covariance_at(const std::vector<FitCase>& cases, const std::vector<do
   const Eigen::Map<const Eigen::VectorXd> r(residuals.data(), static_cast<Eigen::Index>(m));
   Covariance c;
   c.rms = rms(residuals);
-  c.autocorrelation_rows = autocorrelation_time(cases, residuals);
+  // The position rows come first (residuals_into); the few polled
+  // temperatures, seconds apart, are taken as independent.
+  c.autocorrelation_rows = autocorrelation_time(
+      cases, std::vector<double>(residuals.begin(), residuals.begin() + static_cast<std::ptrdiff_t>(position_count(cases))));
   const double dof = std::max<double>(1.0, static_cast<double>(m) - static_cast<double>(n));
   const double sigma2 = static_cast<double>(m) * c.rms * c.rms / dof * c.autocorrelation_rows;
   const Eigen::MatrixXd JtJ = J.transpose() * J;

@@ -18,15 +18,25 @@ struct Unknowns {
   std::vector<std::size_t> card_index; // into ModelCard::constants
   std::vector<double> scale;           // value = u * scale (the start value)
   std::vector<double> lo, hi;          // bounds on u
+  bool temperature = false;            // a thermal constant is fitted: the polled temperatures are residuals too
 };
+
+// A polled temperature's residual in position degrees: each measurement
+// weighed by its resolution, one wire count (360/2^16 deg, manual 2.5)
+// against one step of index 112 (0.5 degC, manual 6.4) (A-CAL-9).
+inline constexpr double kTemperatureWeight_deg_per_C = (360.0 / 65536.0) / 0.5;
 
 // Throws CalibrationInputError for a name not on the card, named twice, or
 // whose range is a single value.
 Unknowns unknowns_of(const ModelCard& start, const std::vector<std::string>& names);
 ModelCard card_at(const ModelCard& start, const Unknowns& u, const double* x);
-std::size_t residual_count(const std::vector<FitCase>& cases);
-// Replays every case with `card`, simulated - logged position (deg) appended in case order.
-void residuals_into(const std::vector<FitCase>& cases, const ModelCard& card, double* out);
+std::size_t position_count(const std::vector<FitCase>& cases);    // logged rows
+std::size_t temperature_count(const std::vector<FitCase>& cases); // rows with a polled temperature
+std::size_t residual_count(const std::vector<FitCase>& cases, const Unknowns& u);
+// Replays every case with `card`: simulated - logged position (deg) for
+// every row in case order, then, with `temperature`, simulated - polled
+// temperature times kTemperatureWeight_deg_per_C for every polled row.
+void residuals_into(const std::vector<FitCase>& cases, const ModelCard& card, double* out, bool temperature);
 
 // One residual block: every logged position. The Jacobian is taken by
 // central differences, two replays per constant, in parallel (A-CAL-3).

@@ -123,6 +123,38 @@ TEST(Calibration, HiddenConstantsComeBackAndPredictAHeldOutMove) {
   }
 }
 
+// Issue 26: thermal constants from the polled temperatures (A-CAL-9). The
+// plan's 9 s move the winding by one 0.5 degC step, so the twin's thermal
+// clock runs 20 times fast here: 3 minutes of heating, what a real module
+// shows in a log of that length.
+TEST(Calibration, ThermalConstantsFromThePolledTemperature) {
+  Scenario plan = test::plan_scenario(kPlanLoad_gcm2);
+  plan.sim.thermal_time_scale = 20;
+  const ModelCard hidden = test::card_with({{"winding_heat_capacity", 2.8},              // +12 %
+                                            {"winding_to_housing_resistance", 56}});  // +12 %
+  const auto cases = cases_for(test::record_log(plan, hidden), plan);
+  std::size_t polled = 0;
+  for (const MasterLogRow& row : cases[0].log.rows) polled += row.temperature_C ? 1 : 0;
+  ASSERT_EQ(polled, 18u); // one read after every move of the plan
+  FitOptions options;
+  options.names = {"winding_heat_capacity", "winding_to_housing_resistance"};
+  const FitResult fit = fit_model(cases, default_model_card(), options);
+  std::printf("rms %.5f deg, %.3f degC over %zu polls, %d iterations, %zu replays, %s\n", fit.rms_residual_deg,
+              fit.rms_temperature_residual_C, fit.temperature_residuals, fit.iterations, fit.replays,
+              fit.solver_message.c_str());
+  EXPECT_TRUE(fit.converged);
+  EXPECT_EQ(fit.temperature_residuals, 18u);
+  EXPECT_LT(fit.rms_temperature_residual_C, 0.25); // within the sensor's half step
+  for (const FittedConstant& f : fit.constants) {
+    const double truth = hidden.find(f.name)->value;
+    std::printf("%-30s truth %-6g start %-6g fit %-8g ci95 [%g, %g]\n", f.name.c_str(), truth, f.start, f.value,
+                f.ci95_lo, f.ci95_hi);
+    EXPECT_NEAR(f.value, truth, 0.05 * truth) << f.name;
+    EXPECT_LE(f.ci95_lo, truth) << f.name;
+    EXPECT_GE(f.ci95_hi, truth) << f.name;
+  }
+}
+
 // Issue 26: with one more wire count of random noise on every logged
 // position (seeded), the same within 15 %. About 30 s of CPU in Release
 // (docs/calibration.md "Measured"); skipped under the sanitizers like the fit above.
