@@ -22,7 +22,7 @@ struct FitOptions {
   std::vector<std::string> names; // constants to fit (empty: default_fit_names())
   int threads = 2;                // replays run in parallel (finite differences)
   int max_iterations = 25;
-  // Forward-difference step, in units of the start value: wide enough to
+  // Central-difference step, in units of the start value: wide enough to
   // step over the count-sized jitter of a closed-loop replay on a quantised
   // encoder, small against the card's ranges (A-CAL-3).
   double relative_step = 0.1;
@@ -53,7 +53,12 @@ struct FitResult {
   std::string solver_message;
   std::vector<std::vector<double>> correlation; // between the fitted constants
   std::size_t residuals = 0;      // logged rows used
+  // Polled temperatures used (a thermal constant fitted, A-CAL-9) and their
+  // rms residual, degC; 0 without.
+  std::size_t temperature_residuals = 0;
+  double rms_temperature_residual_C = 0;
   double autocorrelation_rows = 1; // integrated autocorrelation time of the residuals, rows (A-CAL-4)
+  std::size_t replays = 0;         // replays the fit cost, of the coarse stage's first seconds and of the whole logs (A-CAL-8)
 };
 
 // What the data of a calibration plan identify by default: friction on the

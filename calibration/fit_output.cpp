@@ -86,6 +86,10 @@ nlohmann::json fit_json(const FitResult& fit) {
           {"residuals", fit.residuals},
           {"autocorrelation_rows", fit.autocorrelation_rows},
           {"correlation", correlation}};
+  if (fit.temperature_residuals > 0) { // a thermal constant fitted on polled temperatures (A-CAL-9)
+    j["temperature_residuals"] = fit.temperature_residuals;
+    j["rms_temperature_residual_C"] = fit.rms_temperature_residual_C;
+  }
   io::round_figures(j); // issue 29: 9 significant digits for values, rms at 1e-6 deg
   return j;
 }
