@@ -129,7 +129,7 @@ TEST(Calibration, HiddenConstantsComeBackAndPredictAHeldOutMove) {
 // shows in a log of that length.
 TEST(Calibration, ThermalConstantsFromThePolledTemperature) {
   Scenario plan = test::plan_scenario(kPlanLoad_gcm2);
-  plan.sim.thermal_time_scale = 20;
+  plan.world.thermal.time_scale = 20;
   const ModelCard hidden = test::card_with({{"winding_heat_capacity", 2.8},              // +12 %
                                             {"winding_to_housing_resistance", 56}});  // +12 %
   const auto cases = cases_for(test::record_log(plan, hidden), plan);
