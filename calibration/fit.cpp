@@ -154,6 +154,42 @@ std::vector<std::string> default_fit_names() {
   return {"coulomb_friction", "viscous_friction", "stribeck_excess", "torsional_stiffness", "torsional_damping"};
 }
 
+DefaultFit default_fit(const std::vector<FitCase>& cases, const ModelCard& start) {
+  DefaultFit d{default_fit_names(), ""};
+  const double time_constant_s =
+      start.find("winding_heat_capacity")->value * start.find("winding_to_housing_resistance")->value;
+  double best_span_C = 0; // of the logs long enough
+  double longest_s = 0;
+  bool polled = false;
+  for (const FitCase& c : cases) { // per log: two logs at different ambients are no heating
+    double lo = INFINITY;
+    double hi = -INFINITY;
+    for (const MasterLogRow& row : c.log.rows) {
+      if (!row.temperature_C) continue;
+      polled = true;
+      lo = std::min(lo, *row.temperature_C);
+      hi = std::max(hi, *row.temperature_C);
+    }
+    if (hi < lo || c.log.rows.size() < 2) continue;
+    const double thermal_s = (c.log.rows.back().t_s - c.log.rows.front().t_s) * c.setup.config.thermal.time_scale;
+    longest_s = std::max(longest_s, thermal_s);
+    if (thermal_s >= time_constant_s) best_span_C = std::max(best_span_C, hi - lo);
+  }
+  if (!polled) return d;
+  if (best_span_C >= kThermalFitSpan_C) {
+    d.names.insert(d.names.end(), {"winding_heat_capacity", "winding_to_housing_resistance"});
+  } else if (longest_s < time_constant_s) {
+    d.note = fmt::format("thermal constants not fitted: the longest log lasts {:.0f} s of the winding's {:.0f} s "
+                         "time constant (a longer log; --fit names them anyway)",
+                         longest_s, time_constant_s);
+  } else {
+    d.note = fmt::format("thermal constants not fitted: the polled temperature spans {:.1f} degC, a fit needs "
+                         "{:.0f} degC of heating (a busier log; --fit names them anyway)",
+                         best_span_C, kThermalFitSpan_C);
+  }
+  return d;
+}
+
 std::vector<double> position_residuals_deg(const std::vector<FitCase>& cases, const ModelCard& card) {
   std::vector<double> r(position_count(cases));
   residuals_into(cases, card, r.data(), false);
@@ -161,7 +197,8 @@ std::vector<double> position_residuals_deg(const std::vector<FitCase>& cases, co
 }
 
 FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, const FitOptions& options) {
-  const std::vector<std::string> names = options.names.empty() ? default_fit_names() : options.names;
+  const DefaultFit by_default = options.names.empty() ? default_fit(cases, start) : DefaultFit{};
+  const std::vector<std::string> names = options.names.empty() ? by_default.names : options.names;
   const Unknowns u = unknowns_of(start, names);
   const std::size_t n = names.size();
   std::vector<double> x(n, 1.0);
@@ -172,6 +209,7 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
   result.temperature_residuals = u.temperature ? temperature_count(cases) : 0;
   result.start_rms_residual_deg = rms(position_residuals_deg(cases, start));
   result.replays = 1;
+  if (!by_default.note.empty()) result.notes.push_back(by_default.note);
 
   int iterations = 0;
   if (const std::vector<FitCase> coarse = coarse_cases(cases); !coarse.empty()) {

@@ -19,7 +19,7 @@ struct FitCase {
 };
 
 struct FitOptions {
-  std::vector<std::string> names; // constants to fit (empty: default_fit_names())
+  std::vector<std::string> names; // constants to fit (empty: default_fit(cases, start))
   int threads = 2;                // replays run in parallel (finite differences)
   int max_iterations = 25;
   // Central-difference step, in units of the start value: wide enough to
@@ -59,6 +59,7 @@ struct FitResult {
   double rms_temperature_residual_C = 0;
   double autocorrelation_rows = 1; // integrated autocorrelation time of the residuals, rows (A-CAL-4)
   std::size_t replays = 0;         // replays the fit cost, of the coarse stage's first seconds and of the whole logs (A-CAL-8)
+  std::vector<std::string> notes;  // what the user should know: e.g. why no thermal constant was fitted
 };
 
 // What the data of a calibration plan identify by default: friction on the
@@ -67,6 +68,21 @@ struct FitResult {
 // gives J_intern (3.5.4) and its card range is +-5 %, inside what it
 // trades off against stiffness (A-CAL-7).
 std::vector<std::string> default_fit_names();
+
+// Issue 26: "thermal ones when a temperature column is present". The
+// winding's heat capacity and its resistance to the housing join the
+// default when one log lets them be told apart: its polled temperatures
+// span at least kThermalFitSpan_C (four steps of index 112, manual 6.4)
+// and it lasts at least the winding's time constant (C R of `start`, on
+// the log's thermal clock); a shorter heating is a straight line whose
+// slope gives only their product. Otherwise `note` says why they are left
+// out (A-CAL-9). The housing's constants need hours: named only.
+inline constexpr double kThermalFitSpan_C = 2.0;
+struct DefaultFit {
+  std::vector<std::string> names;
+  std::string note; // why the thermal constants are left out ("" when fitted or no temperatures polled)
+};
+DefaultFit default_fit(const std::vector<FitCase>& cases, const ModelCard& start);
 
 // Throws CalibrationInputError for a name not on the card or one whose range
 // is a single value (nothing to fit).

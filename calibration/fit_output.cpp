@@ -90,6 +90,7 @@ nlohmann::json fit_json(const FitResult& fit) {
     j["temperature_residuals"] = fit.temperature_residuals;
     j["rms_temperature_residual_C"] = fit.rms_temperature_residual_C;
   }
+  if (!fit.notes.empty()) j["notes"] = fit.notes;
   io::round_figures(j); // issue 29: 9 significant digits for values, rms at 1e-6 deg
   return j;
 }

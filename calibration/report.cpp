@@ -148,6 +148,7 @@ std::filesystem::path write_calibration_report(const std::filesystem::path& dir,
                       "(start card {:.5f} deg) over {} logged rows. {}</p>\n",
                       fit.converged ? "ok" : "bad", fit.converged ? "CONVERGED" : "NOT CONVERGED", fit.iterations,
                       fit.rms_residual_deg, fit.start_rms_residual_deg, fit.residuals, esc(fit.solver_message));
+  for (const std::string& note : fit.notes) body += fmt::format("<p class=\"note\">{}</p>\n", esc(note));
   body += constants_table(start, fit) + correlation_table(fit);
   for (std::size_t i = 0; i < cases.size(); ++i) {
     body += log_section(i, cases[i], replay_both(cases[i], start_module, fitted_module));

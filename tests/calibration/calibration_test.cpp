@@ -155,6 +155,40 @@ TEST(Calibration, ThermalConstantsFromThePolledTemperature) {
   }
 }
 
+// Issue 26: "thermal ones when a temperature column is present": the
+// winding's two constants join the default fit when a log heats by
+// kThermalFitSpan_C over at least the winding's time constant (125 s on
+// the card); the 9 s plan at the real thermal clock is far shorter, so they
+// stay out with a note saying why (A-CAL-9).
+TEST(Calibration, DefaultFitAddsTheWindingWhenTheLogHeatsUp) {
+  Scenario plan = test::plan_scenario(kPlanLoad_gcm2);
+  const DefaultFit flat = default_fit(cases_for(test::record_log(plan, default_model_card()), plan), default_model_card());
+  EXPECT_EQ(flat.names, default_fit_names());
+  EXPECT_NE(flat.note.find("thermal constants not fitted: the longest log lasts 9 s of the winding's 125 s"),
+            std::string::npos)
+      << flat.note;
+
+  // Long enough for a start card with a 5 s winding, but a half-degree rise.
+  const ModelCard quick = test::card_with({{"winding_heat_capacity", 0.1}});
+  const DefaultFit lukewarm = default_fit(cases_for(test::record_log(plan, default_model_card()), plan), quick);
+  EXPECT_EQ(lukewarm.names, default_fit_names());
+  EXPECT_NE(lukewarm.note.find("the polled temperature spans 0.5 degC, a fit needs 2 degC"), std::string::npos)
+      << lukewarm.note;
+
+  plan.world.thermal.time_scale = 20; // 3 minutes of heating in the plan's 9 s: 7 degC
+  const DefaultFit heated = default_fit(cases_for(test::record_log(plan, default_model_card()), plan), default_model_card());
+  std::vector<std::string> want = default_fit_names();
+  want.insert(want.end(), {"winding_heat_capacity", "winding_to_housing_resistance"});
+  EXPECT_EQ(heated.names, want);
+  EXPECT_EQ(heated.note, "");
+
+  MasterLog unpolled = test::record_log(test::plan_scenario(kPlanLoad_gcm2), default_model_card());
+  for (MasterLogRow& row : unpolled.rows) row.temperature_C.reset();
+  const DefaultFit none = default_fit(cases_for(unpolled, plan), default_model_card());
+  EXPECT_EQ(none.names, default_fit_names());
+  EXPECT_EQ(none.note, ""); // no temperatures: nothing to say
+}
+
 // Issue 26: with one more wire count of random noise on every logged
 // position (seeded), the same within 15 %. About 13 s of CPU in Release
 // (docs/calibration.md "Measured"); skipped under the sanitizers like the fit above.
