@@ -7,6 +7,7 @@
 
 #include "scenarios/comparison_parser.hpp"
 #include "scenarios/snapshot.hpp"
+#include "scenarios/world.hpp"
 
 namespace sreh::detail {
 namespace {
@@ -47,7 +48,8 @@ std::vector<std::optional<uint8_t>> parse_hex_pattern(const YamlReader& r, const
 SetStep parse_set(const YamlReader& r, const YAML::Node& n, const std::string& what, double physics_dt_s) {
   r.check_map(n, what, {"ambient_C", "master_cycle_s"});
   SetStep s;
-  if (n["ambient_C"]) s.ambient_C = r.number(n["ambient_C"], what + ".ambient_C", -40.0, 100.0);
+  constexpr WorldRanges world{}; // the world block's ambient range (A-SCN-32)
+  if (n["ambient_C"]) s.ambient_C = r.number(n["ambient_C"], what + ".ambient_C", world.min_ambient_C, world.max_ambient_C);
   if (const YAML::Node c = n["master_cycle_s"]) {
     s.master_cycle_s = r.number(c, what + ".master_cycle_s", kMinCycleS, kMaxCycleS);
     if (!integer_multiple(*s.master_cycle_s, physics_dt_s)) {

@@ -9,6 +9,7 @@
 #include "device_logic/units.hpp"
 #include "scenarios/isdu_value.hpp"
 #include "scenarios/pd_out_fields.hpp"
+#include "scenarios/world.hpp"
 
 namespace sreh::serve {
 namespace {
@@ -299,12 +300,13 @@ Json apply_faults(Hub::Port& port, const Json& body) {
                     "replace_device"},
              what);
   FaultState f = port.faults;
+  constexpr WorldRanges world{}; // a fault sets what a scenario's world could: the same ranges (A-SCN-32)
   if (body.contains("link_up")) f.link_up = get_bool(body["link_up"], what + ".link_up");
-  if (body.contains("supply_V")) f.supply_V = get_number(body["supply_V"], what + ".supply_V", 0.0, 60.0);
+  if (body.contains("supply_V")) f.supply_V = get_number(body["supply_V"], what + ".supply_V", world.min_supply_V, world.max_supply_V);
   if (body.contains("external_torque_Nm"))
     f.external_torque_Nm = get_number(body["external_torque_Nm"], what + ".external_torque_Nm", -10.0, 10.0);
   if (body.contains("flange_blocked")) f.flange_blocked = get_bool(body["flange_blocked"], what + ".flange_blocked");
-  if (body.contains("ambient_C")) f.ambient_C = get_number(body["ambient_C"], what + ".ambient_C", -40.0, 150.0);
+  if (body.contains("ambient_C")) f.ambient_C = get_number(body["ambient_C"], what + ".ambient_C", world.min_ambient_C, world.max_ambient_C);
   const bool cycle = body.contains("power_cycle") && get_bool(body["power_cycle"], what + ".power_cycle");
   const bool replace = body.contains("replace_device") && get_bool(body["replace_device"], what + ".replace_device");
   // All checked: apply.
