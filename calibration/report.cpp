@@ -145,7 +145,7 @@ std::filesystem::path write_calibration_report(const std::filesystem::path& dir,
   const std::string title = fmt::format("Calibration: {} log{}", cases.size(), cases.size() == 1 ? "" : "s");
   std::string body = fmt::format("<h1>{}</h1>\n", esc(title));
   body += fmt::format("<p><span class=\"result {}\">{}</span> after {} iterations: rms error {:.5f} deg "
-                      "(start card {:.5f} deg) over {} logged rows. {}</p>\n",
+                      "(start card {:.5f} deg) over {} logged rows. Solver: {}</p>\n",
                       fit.converged ? "ok" : "bad", fit.converged ? "CONVERGED" : "NOT CONVERGED", fit.iterations,
                       fit.rms_residual_deg, fit.start_rms_residual_deg, fit.residuals, esc(fit.solver_message));
   for (const std::string& note : fit.notes) body += fmt::format("<p class=\"note\">{}</p>\n", esc(note));
