@@ -4,7 +4,8 @@
 # docs/sizing.md (examples/slurm/sweep.sbatch): arrays 1-3 and 5-9:2, a
 # rerun of one task of 1-3, the merge as a dependent job; every union is
 # byte for byte the unsharded output. Exit 77 (CTest: skipped) only when
-# Debian's slurm packages are not installed (./setup.sh installs them).
+# Debian's slurm packages are not installed (./setup.sh installs them) or
+# the machine has no cgroup filesystem for slurmd (a chroot without /sys).
 #   slurm_check.sh SREH_TWIN SWEEP_SBATCH SCENARIO_FOLDER
 set -euo pipefail
 bin=$(realpath "$1")
@@ -15,6 +16,14 @@ here=$(dirname "$(realpath "$0")")
 missing=$(slurm_packages_missing)
 if [ -n "$missing" ]; then
   echo "skipped: no $missing(Debian's slurmctld slurmd slurm-client munge; ./setup.sh installs them)"
+  exit 77
+fi
+# Debian 12's slurmd (Slurm 22.05) starts its cgroup plugin even with
+# proctrack/linuxproc and task/none, and refuses to run without a cgroup
+# filesystem: a chroot without /sys (a bare debootstrap root entered with
+# only /proc mounted) cannot host it, whatever this project does.
+if [ -z "$(ls -A /sys/fs/cgroup 2> /dev/null)" ]; then
+  echo "skipped: no cgroup filesystem in /sys/fs/cgroup, which slurmd needs (for a chroot, bind the host's first: mount --rbind /sys ROOT/sys)"
   exit 77
 fi
 dir=$(mktemp -d)
