@@ -49,6 +49,19 @@ class VideoTest : public ::testing::Test {
   test::TempDir dir_;
 };
 
+// Frame k of a --frames folder as 8-bit gray pixels; empty if unreadable.
+std::vector<uint8_t> gray_frame(const fs::path& dir, uint64_t k) {
+  png_image png{};
+  png.version = PNG_IMAGE_VERSION;
+  const std::string file = (dir / fmt::format("frame_{:06d}.png", k)).string();
+  std::vector<uint8_t> raw;
+  if (!png_image_begin_read_from_file(&png, file.c_str())) return raw;
+  png.format = PNG_FORMAT_GRAY;
+  raw.resize(PNG_IMAGE_SIZE(png));
+  if (!png_image_finish_read(&png, nullptr, raw.data(), 0, nullptr)) raw.clear();
+  return raw;
+}
+
 int probe_frames(const fs::path& mp4) {
   const std::string out = test::run_capture("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
                                             "stream=nb_read_frames,codec_name,pix_fmt,width -of csv=p=0 '" +
@@ -193,17 +206,7 @@ TEST_F(VideoTest, TitleCardPrecedesTheRunsFirstFrame) {
   EXPECT_GT(run_frames, 0u);
   // The card (frames 0..4) is one image, the dimmed scene with text: many
   // pixels differ from the run's first frame.
-  auto pixels = [&](uint64_t k) {
-    png_image png{};
-    png.version = PNG_IMAGE_VERSION;
-    const std::string file = (dir_ / "titled" / fmt::format("frame_{:06d}.png", k)).string();
-    std::vector<uint8_t> raw;
-    if (!png_image_begin_read_from_file(&png, file.c_str())) return raw;
-    png.format = PNG_FORMAT_GRAY;
-    raw.resize(PNG_IMAGE_SIZE(png));
-    if (!png_image_finish_read(&png, nullptr, raw.data(), 0, nullptr)) raw.clear();
-    return raw;
-  };
+  auto pixels = [&](uint64_t k) { return gray_frame(dir_ / "titled", k); };
   const std::vector<uint8_t> card = pixels(0), run = pixels(5);
   ASSERT_EQ(card.size(), 160u * 120u);
   ASSERT_EQ(run.size(), card.size());
@@ -254,17 +257,7 @@ TEST_F(VideoTest, RedrawingOnlyTheChangingPartGivesTheFullFrames) {
   const uint64_t n = record(false, "full");
   ASSERT_EQ(record(true, "partial"), n);
   ASSERT_GT(n, 10u);
-  auto gray = [&](const char* name, uint64_t k) {
-    png_image png{};
-    png.version = PNG_IMAGE_VERSION;
-    const std::string file = (dir_ / name / fmt::format("frame_{:06d}.png", k)).string();
-    std::vector<uint8_t> raw;
-    if (!png_image_begin_read_from_file(&png, file.c_str())) return raw;
-    png.format = PNG_FORMAT_GRAY;
-    raw.resize(PNG_IMAGE_SIZE(png));
-    if (!png_image_finish_read(&png, nullptr, raw.data(), 0, nullptr)) raw.clear();
-    return raw;
-  };
+  auto gray = [&](const char* name, uint64_t k) { return gray_frame(dir_ / name, k); };
   for (uint64_t k = 0; k < n; ++k) {
     const std::vector<uint8_t> a = gray("full", k), b = gray("partial", k);
     ASSERT_EQ(a.size(), 640u * 360u) << k;
