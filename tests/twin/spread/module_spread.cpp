@@ -40,6 +40,7 @@ HoldFigures hold(Twin& twin, double settle_s, double measure_s) {
     t_lo = std::min(t_lo, t.torque_Nm), t_hi = std::max(t_hi, t.torque_Nm);
     p_lo = std::min(p_lo, t.position_deg), p_hi = std::max(p_hi, t.position_deg);
   }
+  if (t_hi < t_lo) return {}; // an error came first: no samples (the run's error code tells)
   return {t_hi - t_lo, p_hi - p_lo};
 }
 
