@@ -34,7 +34,7 @@ struct SpreadRun {
 };
 
 // One module in one mounting: Motor On with set 1 selected and configured
-// for the load, hold, 90 deg and back at 3000 deg/s with the mounting's
+// for the load, hold, to 90, -90 and 0 deg at 3000 deg/s with the mounting's
 // rated acceleration (100 % vertical, 50 % for the horizontal arm,
 // A-TWIN-24) and the factory window, waiting time and settling timeout.
 SpreadRun run_module(const ModuleModel& module, Mounting mounting);
