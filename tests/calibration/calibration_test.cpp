@@ -59,6 +59,18 @@ void expect_recovered(const FitResult& fit, const ModelCard& hidden, double tole
   EXPECT_GE(recovered, 3);
 }
 
+// Issue 36: what the fit says holds: a constant flagged identified is
+// within 10 % of the truth, and every 95 % interval, identified or not,
+// contains the truth.
+void expect_honest(const FitResult& fit, const ModelCard& hidden) {
+  for (const FittedConstant& f : fit.constants) {
+    const double truth = hidden.find(f.name)->value;
+    if (f.identified) EXPECT_NEAR(f.value, truth, 0.10 * truth) << f.name << " flagged identified";
+    EXPECT_LE(f.ci95_lo, truth) << f.name;
+    EXPECT_GE(f.ci95_hi, truth) << f.name;
+  }
+}
+
 void expect_predicts_held_out(const ModelCard& fitted, const ModelCard& hidden, double tolerance) {
   const MoveRecord truth = test::held_out_move(hidden);
   const MoveRecord predicted = test::held_out_move(fitted);
@@ -105,11 +117,13 @@ TEST(Calibration, HiddenConstantsComeBackAndPredictAHeldOutMove) {
   std::printf("rms %.5f deg (start %.5f), %d iterations, %zu replays, %s\n", fit.rms_residual_deg,
               fit.start_rms_residual_deg, fit.iterations, fit.replays, fit.solver_message.c_str());
   EXPECT_TRUE(fit.converged);
+  EXPECT_TRUE(fit.adequate) << fit.inadequacy;
   expect_recovered(fit, hidden, 0.10);
+  expect_honest(fit, hidden);
   expect_predicts_held_out(fit.card, hidden, 0.05);
 
-  // FIT.yaml is a model file --model reads: the fitted values come back,
-  // each with its interval (inside the card's range) as its range.
+  // FIT.yaml is a model file --model reads: the fitted values come back
+  // with the card's range, an identified one with its interval (issue 36).
   const std::string path = testing::TempDir() + "/fit.yaml";
   std::ofstream(path) << fit_model_yaml(fit, default_model_card(), {"recorded.csv"}, "2026-11-26");
   const ModelCard read = apply_model_file(default_model_card(), path);
@@ -117,9 +131,9 @@ TEST(Calibration, HiddenConstantsComeBackAndPredictAHeldOutMove) {
     const ModelConstant* c = read.find(f.name);
     EXPECT_EQ(c->value, f.value) << f.name;
     EXPECT_NE(c->source.find("calibrated from recorded.csv on 2026-11-26"), std::string::npos);
-    if (f.identified) {
-      EXPECT_EQ(c->range_lo, std::max(f.ci95_lo, default_model_card().find(f.name)->range_lo));
-    }
+    EXPECT_EQ(c->range_lo, default_model_card().find(f.name)->range_lo);
+    EXPECT_EQ(c->has_interval, f.identified) << f.name;
+    if (f.identified) EXPECT_EQ(c->interval_lo, std::max(f.ci95_lo, default_model_card().find(f.name)->range_lo));
   }
 }
 
@@ -201,7 +215,9 @@ TEST(Calibration, WithOneCountOfNoise) {
   std::printf("rms %.5f deg (start %.5f), %d iterations, %zu replays, %s\n", fit.rms_residual_deg,
               fit.start_rms_residual_deg, fit.iterations, fit.replays, fit.solver_message.c_str());
   EXPECT_TRUE(fit.converged);
+  EXPECT_TRUE(fit.adequate) << fit.inadequacy;
   expect_recovered(fit, hidden, 0.15);
+  expect_honest(fit, hidden);
   expect_predicts_held_out(fit.card, hidden, 0.15);
 }
 
