@@ -39,20 +39,25 @@ std::vector<LogSegment> log_segments(const std::vector<FitCase>& cases, const st
 }
 
 double estimated_noise_counts(const std::vector<FitCase>& cases) {
-  std::vector<double> second;
+  double sum = 0;
+  std::size_t quiet = 0;
   for (const FitCase& c : cases) {
     const std::vector<MasterLogRow>& rows = c.log.rows;
     for (std::size_t k = 1; k + 1 < rows.size(); ++k) {
+      const ProcessDataIn here = decode_in(rows[k].pd_in);
+      if (!here.ready || here.busy) continue; // standing, no move running (manual 2.3): what remains is noise
       const double a = static_cast<double>(decode_in(rows[k - 1].pd_in).position_raw);
       const double b = static_cast<double>(decode_in(rows[k].pd_in).position_raw);
       const double d = static_cast<double>(decode_in(rows[k + 1].pd_in).position_raw);
-      second.push_back(std::abs(a - 2 * b + d));
+      const double second = a - 2 * b + d;
+      if (std::abs(second) > kQuietSecondDifference_counts) continue; // the settling's last swing, not noise
+      sum += second * second;
+      ++quiet;
     }
   }
-  if (second.empty()) return 0;
-  const auto mid = second.begin() + static_cast<std::ptrdiff_t>(second.size() / 2);
-  std::nth_element(second.begin(), mid, second.end());
-  return 1.4826 * *mid / std::sqrt(6.0);
+  if (quiet == 0) return 0;
+  // At rest the quantisation error is constant: the second differences hold the noise alone.
+  return std::sqrt(sum / static_cast<double>(quiet) / 6.0);
 }
 
 double residual_floor_deg(double noise_counts) {

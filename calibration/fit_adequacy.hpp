@@ -31,10 +31,12 @@ struct LogSegment {
 std::vector<LogSegment> log_segments(const std::vector<FitCase>& cases, const std::vector<double>& residuals);
 
 // The noise of the logged position, wire counts (one sigma), estimated
-// robustly from second differences of the logged counts: 1.4826 MAD / sqrt(6)
-// (white noise e gives e[k-1] - 2 e[k] + e[k+1] a variance of 6 sigma^2;
-// the motion's own second differences are zero at rest and at constant
-// speed, most of a plan's rows). 0 for a noise-free quantised log.
+// from second differences of the logged counts on the rows where the
+// module stands (status Ready, not Busy: manual 2.3) and the second
+// difference is at most kQuietSecondDifference_counts: white noise e gives
+// e[k-1] - 2 e[k] + e[k+1] a variance of 6 sigma^2, and at rest the
+// quantisation error is constant. About 0.1 count for a noise-free log.
+inline constexpr double kQuietSecondDifference_counts = 6;
 double estimated_noise_counts(const std::vector<FitCase>& cases);
 
 // One wire count, degrees.

@@ -65,7 +65,9 @@ void expect_recovered(const FitResult& fit, const ModelCard& hidden, double tole
 void expect_honest(const FitResult& fit, const ModelCard& hidden) {
   for (const FittedConstant& f : fit.constants) {
     const double truth = hidden.find(f.name)->value;
-    if (f.identified) EXPECT_NEAR(f.value, truth, 0.10 * truth) << f.name << " flagged identified";
+    if (f.identified) {
+      EXPECT_NEAR(f.value, truth, 0.10 * truth) << f.name << " flagged identified";
+    }
     EXPECT_LE(f.ci95_lo, truth) << f.name;
     EXPECT_GE(f.ci95_hi, truth) << f.name;
   }
@@ -133,7 +135,9 @@ TEST(Calibration, HiddenConstantsComeBackAndPredictAHeldOutMove) {
     EXPECT_NE(c->source.find("calibrated from recorded.csv on 2026-11-26"), std::string::npos);
     EXPECT_EQ(c->range_lo, default_model_card().find(f.name)->range_lo);
     EXPECT_EQ(c->has_interval, f.identified) << f.name;
-    if (f.identified) EXPECT_EQ(c->interval_lo, std::max(f.ci95_lo, default_model_card().find(f.name)->range_lo));
+    if (f.identified) {
+      EXPECT_EQ(c->interval_lo, std::max(f.ci95_lo, default_model_card().find(f.name)->range_lo));
+    }
   }
 }
 
