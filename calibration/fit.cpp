@@ -316,15 +316,22 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
     const double half_u = kZ95 * std::sqrt(std::max(0.0, cov(ii, ii)));
     double lo_u = std::max(u.lo[i], x[i] - half_u), hi_u = std::min(u.hi[i], x[i] + half_u);
     // The curvature's interval assumes a smooth cost; on the replay's rough
-    // one, step out along the constant while the sum of squares stays
-    // within the single-constant threshold (a conditional likelihood
-    // interval, one replay per probe).
+    // one, step out from the solution along the linearised profile path
+    // (constant i moved, the others as the covariance says they follow:
+    // x + t C[:, i] / C[i, i]) while the sum of squares stays within the
+    // single-constant threshold: a profile likelihood interval at one
+    // replay per probe, without a sub-fit per point.
+    Eigen::VectorXd path = cov.col(ii);
+    if (cov(ii, ii) > 0) path /= cov(ii, ii);
+    else path = Eigen::VectorXd::Unit(static_cast<Eigen::Index>(n), ii);
     for (const int side : {-1, +1}) {
       double step = std::max(half_u, 0.01 * (u.hi[i] - u.lo[i]));
       double reached = side < 0 ? lo_u : hi_u;
       for (int probe = 0; probe < kLikelihoodProbes; ++probe) {
         std::vector<double> xp = x;
-        xp[i] = std::clamp(x[i] + side * step, u.lo[i], u.hi[i]);
+        for (std::size_t j = 0; j < n; ++j) {
+          xp[j] = std::clamp(x[j] + side * step * path(static_cast<Eigen::Index>(j)), u.lo[j], u.hi[j]);
+        }
         if (xp[i] == x[i]) break;
         std::vector<double> rp(positions);
         residuals_into(cases, card_at(start, u, xp.data()), rp.data(), false);
