@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "calibration/fit_adequacy.hpp"
 #include "calibration/fit_cost.hpp"
 
 namespace sreh {
@@ -16,6 +17,8 @@ constexpr double kRestartGain = 0.01;          // a restart must lower the cost 
 constexpr double kZ95 = 1.959963984540054;     // two-sided 95 % of the normal distribution
 constexpr double kWideHalfWidth = 0.25;        // an interval wider than +-25 % of the value: not identified
 constexpr double kStrongCorrelation = 0.95;    // |r| above this: the data cannot separate the two
+constexpr double kAtBound = 0.001;             // within 0.1 % of the range from a bound: at it
+constexpr int kLikelihoodProbes = 5;           // step-outs per side, each twice the last
 // Logs longer than twice this are first fitted on their first kCoarse_s
 // (shared out in proportion to their lengths; the plan is ~9 s), then on
 // the whole from there (A-CAL-8).
@@ -36,53 +39,16 @@ class IterationProgress final : public ceres::IterationCallback {
   const int& done_before_; // iterations of the earlier solves
 };
 
-// Ends a solve where the step still ahead is within the noise (A-CAL-8):
-// the Gauss-Newton step d from the best point so far, kept inside the
-// bounds, measured in the constants' covariance C (A-CAL-4), d^T C^-1 d,
-// is at most the number of constants n, what fitting n constants to pure
-// noise gains on average. Further steps only chase the replay's
-// count-sized roughness. Ceres writes its best point into the parameter
-// block every iteration and has just taken the Jacobian there when that
-// point is new, so the test costs no replay.
-class WithinNoise final : public ceres::IterationCallback {
- public:
-  WithinNoise(const std::vector<FitCase>& cases, const ReplayCost& cost, const Unknowns& u, const double* x)
-      : cases_(cases), cost_(cost), u_(u), x_(x) {}
-  double distance2() const { return distance2_; }
-  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
-    if (!s.step_is_successful) return ceres::SOLVER_CONTINUE;
-    const std::vector<double>* jacobian = cost_.jacobian_at(x_);
-    if (!jacobian) return ceres::SOLVER_CONTINUE;
-    const std::size_t n = u_.card_index.size();
-    const Covariance c = covariance_at(cases_, cost_.jacobian_residuals(), *jacobian, n);
-    if (c.singular) return ceres::SOLVER_CONTINUE;
-    Eigen::VectorXd step(static_cast<Eigen::Index>(n));
-    for (std::size_t i = 0; i < n; ++i) {
-      const auto k = static_cast<Eigen::Index>(i);
-      step(k) = std::clamp(x_[i] + c.gauss_newton(k), u_.lo[i], u_.hi[i]) - x_[i];
-    }
-    distance2_ = step.dot(c.cov.completeOrthogonalDecomposition().solve(step));
-    return distance2_ <= static_cast<double>(n) ? ceres::SOLVER_TERMINATE_SUCCESSFULLY : ceres::SOLVER_CONTINUE;
-  }
-
- private:
-  const std::vector<FitCase>& cases_;
-  const ReplayCost& cost_;
-  const Unknowns& u_;
-  const double* x_; // the parameter block, updated every iteration
-  double distance2_ = 0;
-};
-
 struct Stage {
   std::unique_ptr<ReplayCost> cost;
   ceres::Solver::Summary summary;
-  bool converged = false; // Ceres' tolerances or the noise test
+  bool converged = false; // Ceres' own tolerances (function, gradient, parameter)
 };
 
 // Solves `cases` from x (updated in place), restarted while that pays
 // (A-CAL-3); `iterations` counts on across stages.
 Stage solve(const std::vector<FitCase>& cases, const ModelCard& start, const Unknowns& u, std::vector<double>& x,
-            const FitOptions& options, int& iterations) {
+            const FitOptions& options, int max_iterations, int& iterations) {
   const std::size_t n = x.size();
   Stage stage;
   stage.cost = std::make_unique<ReplayCost>(cases, start, u, options.threads, options.relative_step);
@@ -96,25 +62,27 @@ Stage solve(const std::vector<FitCase>& cases, const ModelCard& start, const Unk
   }
   ceres::Solver::Options so;
   so.linear_solver_type = ceres::DENSE_QR;
-  so.max_num_iterations = options.max_iterations;
+  so.max_num_iterations = max_iterations;
   so.logging_type = ceres::SILENT;
   so.minimizer_progress_to_stdout = false;
-  so.function_tolerance = 1e-6;
-  so.parameter_tolerance = 1e-5;
+  // Ceres' own tests end a solve (A-CAL-8, issue 36): a step that changes
+  // the cost by less than 1e-4 of it, or the scaled constants by less than
+  // 1e-4 (0.01 % of a start value, far inside any interval). Monotonic
+  // steps: on the count-rough cost a non-monotonic trust region wanders
+  // without end at the floor; a failed step shrinks it until the parameter
+  // test ends the solve, and the spread starts (not a wider step) guard
+  // against a dip it ends in. A fresh solve from the result restores a
+  // trust region that shrank on the roughness, as long as that still
+  // lowers the cost by 1 % (A-CAL-3).
+  so.function_tolerance = 1e-4;
+  so.parameter_tolerance = 1e-4;
   so.num_threads = 1; // the replays are parallel already
-  // The cost of a closed-loop replay is rough at the scale of an encoder
-  // count: non-monotonic steps let the trust region step over a local dip,
-  // and a fresh solve from the result restores a trust region that shrank
-  // on the roughness, as long as that still lowers the cost by 1 % (A-CAL-3).
-  so.use_nonmonotonic_steps = true;
+  so.use_nonmonotonic_steps = false;
   // With bounds Ceres refines each trust-region step by a line search; its
   // default cubic interpolation asks for the gradient, a whole Jacobian of
   // 2n replays, at every trial step size. Quadratic interpolation needs the
   // cost only, one replay per trial (A-CAL-8).
   so.line_search_interpolation_type = ceres::QUADRATIC;
-  so.update_state_every_iteration = true; // WithinNoise reads x
-  WithinNoise within_noise(cases, *stage.cost, u, x.data());
-  so.callbacks.push_back(&within_noise);
   IterationProgress progress(options, iterations);
   if (options.progress) so.callbacks.push_back(&progress);
   for (int attempt = 0; attempt < kMaxSolves; ++attempt) {
@@ -125,12 +93,7 @@ Stage solve(const std::vector<FitCase>& cases, const ModelCard& start, const Unk
       break;
     }
   }
-  stage.converged = stage.summary.termination_type == ceres::CONVERGENCE ||
-                    stage.summary.termination_type == ceres::USER_SUCCESS;
-  if (stage.summary.termination_type == ceres::USER_SUCCESS) {
-    stage.summary.message = fmt::format("the step still ahead is within the noise (d^2 = {:.2f} <= {} constants, A-CAL-8)",
-                                        within_noise.distance2(), n);
-  }
+  stage.converged = stage.summary.termination_type == ceres::CONVERGENCE;
   return stage;
 }
 
@@ -196,82 +159,252 @@ std::vector<double> position_residuals_deg(const std::vector<FitCase>& cases, co
   return r;
 }
 
+namespace {
+
+// The chi-square distribution's 95 % quantile with k degrees of freedom:
+// a table to 10, Wilson-Hilferty above.
+double chi2_95(std::size_t k) {
+  static constexpr double kTable[] = {3.841, 5.991, 7.815, 9.488, 11.070, 12.592, 14.067, 15.507, 16.919, 18.307};
+  if (k >= 1 && k <= 10) return kTable[k - 1];
+  const double d = static_cast<double>(k);
+  const double a = 2.0 / (9.0 * d);
+  return d * std::pow(1 - a + 1.6449 * std::sqrt(a), 3);
+}
+
+double sum_of_squares(const std::vector<double>& r, std::size_t count) {
+  double s = 0;
+  for (std::size_t k = 0; k < count; ++k) s += r[k] * r[k];
+  return s;
+}
+
+// The starts of a fit (issue 36): the start card, then points spread over
+// the ranges by an additive recurrence (Roberts' R-sequence: each constant
+// stepped by its own irrational fraction of its range), deterministic.
+std::vector<std::vector<double>> start_points(const Unknowns& u, const std::vector<double>& card_x, int count) {
+  std::vector<std::vector<double>> starts{card_x};
+  const std::size_t n = card_x.size();
+  double phi = 2; // the plastic-number generalisation: phi^(n+1) = phi + 1
+  for (int k = 0; k < 30; ++k) phi = std::pow(1 + phi, 1.0 / static_cast<double>(n + 1));
+  for (int k = 1; k < count; ++k) {
+    std::vector<double> x(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double f = std::fmod(0.5 + static_cast<double>(k) / std::pow(phi, static_cast<double>(i + 1)), 1.0);
+      // Keep clear of the bounds by a tenth of the range: a start at a bound
+      // tells nothing about whether the minimum is there.
+      x[i] = u.lo[i] + (0.1 + 0.8 * f) * (u.hi[i] - u.lo[i]);
+    }
+    starts.push_back(std::move(x));
+  }
+  return starts;
+}
+
+struct StartOutcome {
+  std::vector<double> x;
+  double sum_squares = 0; // of the position residuals, on the cases it was solved on
+  int iterations = 0;
+};
+
+} // namespace
+
 FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, const FitOptions& options) {
   const DefaultFit by_default = options.names.empty() ? default_fit(cases, start) : DefaultFit{};
   const std::vector<std::string> names = options.names.empty() ? by_default.names : options.names;
   const Unknowns u = unknowns_of(start, names);
   const std::size_t n = names.size();
-  std::vector<double> x(n, 1.0);
-  for (std::size_t i = 0; i < n; ++i) x[i] = std::clamp(start.constants[u.card_index[i]].value / u.scale[i], u.lo[i], u.hi[i]);
+  std::vector<double> card_x(n, 1.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    card_x[i] = std::clamp(start.constants[u.card_index[i]].value / u.scale[i], u.lo[i], u.hi[i]);
+  }
 
   FitResult result;
   result.residuals = position_count(cases);
   result.temperature_residuals = u.temperature ? temperature_count(cases) : 0;
-  result.start_rms_residual_deg = rms(position_residuals_deg(cases, start));
+  const std::vector<double> start_residuals = position_residuals_deg(cases, start);
+  result.start_rms_residual_deg = rms(start_residuals);
   result.replays = 1;
   if (!by_default.note.empty()) result.notes.push_back(by_default.note);
 
+  // Several starts (issue 36, A-CAL-8): the start card solved to Ceres'
+  // own convergence, spread points with a few iterations each; the best
+  // goes on. A long log is first solved on its first seconds.
+  const std::vector<FitCase> coarse = coarse_cases(cases);
+  const std::vector<FitCase>& first_cases = coarse.empty() ? cases : coarse;
+  const std::size_t first_positions = position_count(first_cases);
   int iterations = 0;
-  if (const std::vector<FitCase> coarse = coarse_cases(cases); !coarse.empty()) {
-    const Stage first = solve(coarse, start, u, x, options, iterations);
-    result.replays += first.cost->replays();
+  std::vector<StartOutcome> outcomes;
+  std::unique_ptr<ReplayCost> first_cost; // the best start's, when the start stage is the whole fit
+  Stage best_stage;
+  for (const std::vector<double>& x0 : start_points(u, card_x, options.starts)) {
+    StartOutcome o{x0, 0, iterations};
+    const bool card_start = outcomes.empty();
+    Stage stage = solve(first_cases, start, u, o.x, options,
+                        card_start ? options.max_iterations : options.spread_start_iterations, iterations);
+    o.iterations = iterations - o.iterations;
+    std::vector<double> r(residual_count(first_cases, u));
+    const double* params[] = {o.x.data()};
+    stage.cost->Evaluate(params, r.data(), nullptr); // remembered: no replay
+    o.sum_squares = sum_of_squares(r, first_positions);
+    result.replays += stage.cost->replays();
+    if (outcomes.empty() || o.sum_squares < outcomes.front().sum_squares) {
+      best_stage = std::move(stage);
+      outcomes.insert(outcomes.begin(), o);
+    } else {
+      outcomes.push_back(o);
+    }
   }
-  const Stage stage = solve(cases, start, u, x, options, iterations);
+  std::vector<double> x = outcomes.front().x;
+  if (!best_stage.converged) { // a spread start that was best after its few iterations, or the limit: on to convergence
+    best_stage = solve(first_cases, start, u, x, options, options.max_iterations, iterations);
+    result.replays += best_stage.cost->replays();
+    std::vector<double> r(residual_count(first_cases, u));
+    const double* params[] = {x.data()};
+    best_stage.cost->Evaluate(params, r.data(), nullptr);
+    outcomes.front().x = x;
+    outcomes.front().sum_squares = sum_of_squares(r, first_positions);
+  }
+  Stage stage = coarse.empty() ? std::move(best_stage) : solve(cases, start, u, x, options, options.max_iterations, iterations);
+  if (!coarse.empty()) result.replays += stage.cost->replays();
 
-  // The Jacobian and residuals at the solution, for the intervals (taken
-  // already where the solve ended on the noise test).
+  // The Jacobian and residuals at the solution, for the intervals.
   const std::size_t positions = result.residuals;
   const std::size_t m = positions + result.temperature_residuals;
   std::vector<double> r(m), jac(m * n);
-  const double* params[] = {x.data()};
-  double* jacs[] = {jac.data()};
-  stage.cost->Evaluate(params, r.data(), jacs);
-  result.replays += stage.cost->replays();
+  {
+    const double* params[] = {x.data()};
+    double* jacs[] = {jac.data()};
+    const std::size_t before = stage.cost->replays();
+    stage.cost->Evaluate(params, r.data(), jacs);
+    result.replays += stage.cost->replays() - before;
+  }
   const Covariance cv = covariance_at(cases, r, jac, n);
   const auto split = r.begin() + static_cast<std::ptrdiff_t>(positions);
-  result.rms_residual_deg = rms(std::vector<double>(r.begin(), split));
+  const std::vector<double> position_r(r.begin(), split);
+  result.rms_residual_deg = rms(position_r);
   result.rms_temperature_residual_C = rms(std::vector<double>(split, r.end())) / kTemperatureWeight_deg_per_C;
   result.autocorrelation_rows = cv.autocorrelation_rows;
   result.iterations = iterations;
   result.solver_message = stage.summary.message;
-  result.converged = stage.converged && result.rms_residual_deg <= options.max_rms_residual_deg;
+  result.starts = static_cast<int>(outcomes.size());
   result.card = card_at(start, u, x.data());
+
+  // A likelihood-ratio region (A-CAL-4): points whose sum of squares is
+  // within chi2_95 effective residual variances of the best are as
+  // consistent with the log as the best. sigma2_eff = rms^2 tau per row.
+  const double sigma2_eff = result.rms_residual_deg * result.rms_residual_deg * cv.autocorrelation_rows;
+  const double best_ss = sum_of_squares(position_r, positions);
+  const double joint_threshold = chi2_95(n) * sigma2_eff;
+  const double single_threshold = chi2_95(1) * sigma2_eff;
+
   const Eigen::MatrixXd& cov = cv.cov;
-  const bool singular = cv.singular;
   result.correlation.assign(n, std::vector<double>(n, 0.0));
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t j = 0; j < n; ++j) {
-      const double d = std::sqrt(cov(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i)) *
-                                 cov(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(j)));
-      result.correlation[i][j] = d > 0 ? cov(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) / d : 0.0;
+      const auto ii = static_cast<Eigen::Index>(i), jj = static_cast<Eigen::Index>(j);
+      const double d = std::sqrt(cov(ii, ii) * cov(jj, jj));
+      result.correlation[i][j] = d > 0 ? cov(ii, jj) / d : 0.0;
     }
   }
   for (std::size_t i = 0; i < n; ++i) {
     const ModelConstant& c = result.card.constants[u.card_index[i]];
+    const ModelConstant& card_c = start.constants[u.card_index[i]];
     FittedConstant f;
     f.name = c.name;
     f.unit = c.unit;
     f.value = c.value;
-    f.start = start.constants[u.card_index[i]].value;
-    const double half = kZ95 * std::sqrt(std::max(0.0, cov(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i)))) *
-                        u.scale[i];
-    f.ci95_lo = f.value - half;
-    f.ci95_hi = f.value + half;
-    if (singular || half == 0) {
-      f.identified = false;
+    f.start = card_c.value;
+    const auto ii = static_cast<Eigen::Index>(i);
+    const double half_u = kZ95 * std::sqrt(std::max(0.0, cov(ii, ii)));
+    double lo_u = std::max(u.lo[i], x[i] - half_u), hi_u = std::min(u.hi[i], x[i] + half_u);
+    // The curvature's interval assumes a smooth cost; on the replay's rough
+    // one, step out from the solution along the linearised profile path
+    // (constant i moved, the others as the covariance says they follow:
+    // x + t C[:, i] / C[i, i]) while the sum of squares stays within the
+    // single-constant threshold: a profile likelihood interval at one
+    // replay per probe, without a sub-fit per point.
+    Eigen::VectorXd path = cov.col(ii);
+    if (cov(ii, ii) > 0) path /= cov(ii, ii);
+    else path = Eigen::VectorXd::Unit(static_cast<Eigen::Index>(n), ii);
+    for (const int side : {-1, +1}) {
+      double step = std::max(half_u, 0.01 * (u.hi[i] - u.lo[i]));
+      double reached = side < 0 ? lo_u : hi_u;
+      for (int probe = 0; probe < kLikelihoodProbes; ++probe) {
+        std::vector<double> xp = x;
+        for (std::size_t j = 0; j < n; ++j) {
+          xp[j] = std::clamp(x[j] + side * step * path(static_cast<Eigen::Index>(j)), u.lo[j], u.hi[j]);
+        }
+        if (xp[i] == x[i]) break;
+        std::vector<double> rp(positions);
+        residuals_into(cases, card_at(start, u, xp.data()), rp.data(), false);
+        ++result.replays;
+        if (sum_of_squares(rp, positions) - best_ss > single_threshold) break;
+        reached = side < 0 ? std::min(reached, xp[i]) : std::max(reached, xp[i]);
+        if (xp[i] == (side < 0 ? u.lo[i] : u.hi[i])) break;
+        step *= 2;
+      }
+      (side < 0 ? lo_u : hi_u) = reached;
+    }
+    f.likelihood_widened = lo_u < x[i] - half_u * (1 + 1e-9) || hi_u > x[i] + half_u * (1 + 1e-9);
+    // Every other start that ended inside the joint region is an equally
+    // good answer: the interval covers it, and if it lies outside the
+    // curvature's interval the starts disagree.
+    for (std::size_t k = 1; k < outcomes.size(); ++k) {
+      const double excess = outcomes[k].sum_squares - outcomes.front().sum_squares;
+      const double threshold = joint_threshold * static_cast<double>(first_positions) / static_cast<double>(positions);
+      if (excess > threshold) continue;
+      const double v = outcomes[k].x[i];
+      if (v < x[i] - half_u || v > x[i] + half_u) f.starts_disagree = true;
+      lo_u = std::min(lo_u, v);
+      hi_u = std::max(hi_u, v);
+    }
+    f.ci95_lo = lo_u * u.scale[i];
+    f.ci95_hi = hi_u * u.scale[i];
+    const double half = 0.5 * (f.ci95_hi - f.ci95_lo);
+    const double range = c.range_hi - c.range_lo;
+    f.at_bound = f.value <= c.range_lo + kAtBound * range || f.value >= c.range_hi - kAtBound * range;
+    // Why a constant is not identified, the first reason that applies.
+    if (cv.singular || half_u == 0) {
       f.note = "the data do not move the position: no interval";
+    } else if (result.iterations == 0 || f.value == f.start) {
+      f.note = "the solve did not move it from the start";
+    } else if (f.at_bound) {
+      f.note = "at its bound: the module lies outside the card's range, or the model is wrong";
+    } else if (f.starts_disagree) {
+      f.note = "another start ends as well elsewhere: the interval covers both";
     } else if (half > kWideHalfWidth * std::abs(f.value)) {
-      f.identified = false;
       f.note = fmt::format("wide interval: +-{:.0f} % of the value", 100 * half / std::abs(f.value));
     }
-    for (std::size_t j = 0; j < n && f.identified; ++j) {
+    for (std::size_t j = 0; j < n && f.note.empty(); ++j) {
       if (j != i && std::abs(result.correlation[i][j]) > kStrongCorrelation) {
-        f.identified = false;
         f.note = fmt::format("correlated with {} (r = {:.2f})", names[j], result.correlation[i][j]);
       }
     }
+    f.identified = f.note.empty();
     result.constants.push_back(f);
   }
+
+  // Adequacy (A-CAL-10): the rms against the log's own floor.
+  result.noise_counts = options.noise_counts ? *options.noise_counts : estimated_noise_counts(cases);
+  result.floor_rms_deg = residual_floor_deg(result.noise_counts);
+  result.adequate = result.rms_residual_deg <= kInadequateRatio * result.floor_rms_deg;
+  if (!result.adequate) {
+    const std::vector<LogSegment> segments = log_segments(cases, position_r);
+    const auto worst = std::max_element(segments.begin(), segments.end(),
+                                        [](const LogSegment& a, const LogSegment& b) { return a.rms_deg < b.rms_deg; });
+    result.inadequacy = fmt::format(
+        "the model does not explain this log: rms residual {:.5f} deg is {:.1f} times the log's floor {:.5f} deg "
+        "(quantisation and {:.2f} counts of noise); the largest residuals are in {}{}t {:.3f}..{:.3f} s, the command to "
+        "{:.2f} deg (rms {:.5f} deg, mean {:+.5f} deg)",
+        result.rms_residual_deg, result.rms_residual_deg / result.floor_rms_deg, result.floor_rms_deg, result.noise_counts,
+        cases.size() > 1 ? cases[worst->log].log.path : std::string(), cases.size() > 1 ? " " : "", worst->t0_s, worst->t1_s,
+        worst->target_deg, worst->rms_deg, worst->mean_deg);
+  }
+  for (const FittedConstant& f : result.constants) {
+    if (f.at_bound) {
+      result.notes.push_back(fmt::format("{} ends at its bound: the module lies outside the card's range, or the model is wrong",
+                                         f.name));
+    }
+  }
+  result.converged = stage.converged && result.rms_residual_deg <= options.max_rms_residual_deg;
   return result;
 }
 

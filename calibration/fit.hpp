@@ -5,6 +5,7 @@
 // solution, widened for the residuals' autocorrelation (A-CAL-4).
 #pragma once
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,14 @@ struct FitOptions {
   // encoder, small against the card's ranges (A-CAL-3).
   double relative_step = 0.1;
   double max_rms_residual_deg = 0.02; // converged but worse than this: not a fit (exit 1)
+  // Starts (issue 36): the start card, solved to convergence, and
+  // starts - 1 points spread over the ranges, spread_start_iterations each;
+  // the best goes on (A-CAL-8).
+  int starts = 3;
+  int spread_start_iterations = 8;
+  // The logged position's noise, wire counts (one sigma), as stated by the
+  // user; unset: estimated from the log (calibration/fit_adequacy.hpp).
+  std::optional<double> noise_counts;
   // Called after every solver iteration with the iterations so far (over
   // the restarts) and max_iterations: the CLI's progress line (issue 29).
   std::function<void(int iterations, int max_iterations)> progress;
@@ -39,8 +48,11 @@ struct FittedConstant {
   double start = 0;
   double ci95_lo = 0;
   double ci95_hi = 0;
-  bool identified = true; // false: wide interval or strongly correlated
-  std::string note;        // why not identified
+  bool identified = true;  // false: see note
+  std::string note;         // why not identified
+  bool at_bound = false;    // ends at a bound of its range
+  bool starts_disagree = false;    // another start ended as well outside the curvature's interval
+  bool likelihood_widened = false; // the interval was widened along the cost (A-CAL-4)
 };
 
 struct FitResult {
@@ -60,6 +72,13 @@ struct FitResult {
   double autocorrelation_rows = 1; // integrated autocorrelation time of the residuals, rows (A-CAL-4)
   std::size_t replays = 0;         // replays the fit cost, of the coarse stage's first seconds and of the whole logs (A-CAL-8)
   std::vector<std::string> notes;  // what the user should know: e.g. why no thermal constant was fitted
+  int starts = 1;                  // starts solved (A-CAL-8)
+  // Adequacy (A-CAL-10): the rms a right model leaves on this log, from the
+  // wire's quantisation and the noise (stated or estimated, counts).
+  double noise_counts = 0;
+  double floor_rms_deg = 0;
+  bool adequate = true;            // rms within kInadequateRatio of the floor
+  std::string inadequacy;          // when not: "the model does not explain this log: ..." with the segment
 };
 
 // What the data of a calibration plan identify by default: friction on the

@@ -38,12 +38,13 @@ std::string fit_model_yaml(const FitResult& fit, const ModelCard& base, const st
   }
   std::string out = fmt::format(
       "# Model file written by `sreh-twin calibrate` (issue 26) from {}.\n"
-      "# Use it with --model on run, size, sweep, serve. Ranges of fitted constants are their 95 %\n"
-      "# intervals inside the card's ranges (docs/calibration.md).\n"
-      "# rms residual {} deg (start {} deg), {} iterations, {}.\n"
+      "# Use it with --model on run, size, sweep, serve. Ranges are the card's; an identified constant\n"
+      "# adds its 95 % interval, which uncertainty sizing samples instead (docs/calibration.md).\n"
+      "# rms residual {} deg (start {} deg, the log's floor {} deg), {} iterations from {} starts, {}.\n"
       "constants:\n",
-      names, shortest_number(fit.rms_residual_deg), shortest_number(fit.start_rms_residual_deg), fit.iterations,
-      fit.converged ? "converged" : "NOT converged");
+      names, shortest_number(fit.rms_residual_deg), shortest_number(fit.start_rms_residual_deg),
+      shortest_number(fit.floor_rms_deg), fit.iterations, fit.starts,
+      !fit.adequate ? "the model does not explain this log" : fit.converged ? "converged" : "NOT converged");
   for (const ModelConstant& c : fit.card.constants) {
     const ModelConstant* b = base.find(c.name);
     const FittedConstant* f = fitted(fit, c.name);
@@ -53,16 +54,19 @@ std::string fit_model_yaml(const FitResult& fit, const ModelCard& base, const st
                          quoted(c.source), shortest_number(c.range_lo), shortest_number(c.range_hi));
       continue;
     }
-    double lo = c.range_lo, hi = c.range_hi;
-    if (f->identified) {
-      lo = std::clamp(f->ci95_lo, c.range_lo, c.value);
-      hi = std::clamp(f->ci95_hi, c.value, c.range_hi);
-    }
+    // The card's range stays (issue 36): the interval is a field of its own,
+    // written only for an identified constant, and uncertainty sizing
+    // samples it instead of the range (A-CAL-5).
     const std::string source = fmt::format("calibrated from {} on {}: 95 % interval [{}, {}]{}", names, date,
                                            shortest_number(f->ci95_lo), shortest_number(f->ci95_hi),
-                                           f->identified ? "" : "; not identified (" + f->note + "), card range kept");
-    out += fmt::format("  {}: {{value: {}, source: {}, range: [{}, {}]}}\n", c.name, shortest_number(c.value),
-                       quoted(source), shortest_number(lo), shortest_number(hi));
+                                           f->identified ? "" : "; not identified (" + f->note + ")");
+    std::string interval;
+    if (f->identified) {
+      interval = fmt::format(", interval: [{}, {}]", shortest_number(std::clamp(f->ci95_lo, c.range_lo, c.value)),
+                             shortest_number(std::clamp(f->ci95_hi, c.value, c.range_hi)));
+    }
+    out += fmt::format("  {}: {{value: {}, source: {}, range: [{}, {}]{}}}\n", c.name, shortest_number(c.value),
+                       quoted(source), shortest_number(c.range_lo), shortest_number(c.range_hi), interval);
   }
   return out;
 }
@@ -73,6 +77,8 @@ nlohmann::json fit_json(const FitResult& fit) {
     nlohmann::json c{{"value", f.value},           {"start", f.start}, {"ci95", {f.ci95_lo, f.ci95_hi}},
                      {"unit", f.unit},             {"identified", f.identified}};
     if (!f.note.empty()) c["note"] = f.note;
+    c["at_bound"] = f.at_bound;
+    c["starts_disagree"] = f.starts_disagree;
     constants[f.name] = c;
   }
   nlohmann::json correlation = nlohmann::json::array();
@@ -85,7 +91,12 @@ nlohmann::json fit_json(const FitResult& fit) {
           {"solver", fit.solver_message},
           {"residuals", fit.residuals},
           {"autocorrelation_rows", fit.autocorrelation_rows},
-          {"correlation", correlation}};
+          {"correlation", correlation},
+          {"starts", fit.starts},
+          {"noise_counts", fit.noise_counts},
+          {"floor_rms_deg", fit.floor_rms_deg},
+          {"adequate", fit.adequate}};
+  if (!fit.adequate) j["inadequacy"] = fit.inadequacy;
   if (fit.temperature_residuals > 0) { // a thermal constant fitted on polled temperatures (A-CAL-9)
     j["temperature_residuals"] = fit.temperature_residuals;
     j["rms_temperature_residual_C"] = fit.rms_temperature_residual_C;

@@ -9,6 +9,7 @@
 #include "calibration/master_log.hpp"
 #include "calibration/replay.hpp"
 #include "io/atomic_file.hpp"
+#include "calibration/fit_adequacy.hpp"
 #include "io/html_page.hpp"
 #include "io/output_path.hpp"
 #include "renders/figure.hpp"
@@ -17,7 +18,6 @@
 namespace sreh {
 namespace {
 
-constexpr double kWireCount_deg = 360.0 / 65536.0; // manual 2.5: 2^16 counts per turn on the wire
 constexpr double kStrongCorrelation = 0.9;          // as fit.cpp flags a constant (A-CAL-4)
 constexpr const char* kLogged = "#333333";
 constexpr const char* kStart = "#ff7f0e";
@@ -144,10 +144,14 @@ std::filesystem::path write_calibration_report(const std::filesystem::path& dir,
   const ModuleModel fitted_module = fit.card.module_model();
   const std::string title = fmt::format("Calibration: {} log{}", cases.size(), cases.size() == 1 ? "" : "s");
   std::string body = fmt::format("<h1>{}</h1>\n", esc(title));
-  body += fmt::format("<p><span class=\"result {}\">{}</span> after {} iterations: rms error {:.5f} deg "
-                      "(start card {:.5f} deg) over {} logged rows. Solver: {}</p>\n",
-                      fit.converged ? "ok" : "bad", fit.converged ? "CONVERGED" : "NOT CONVERGED", fit.iterations,
-                      fit.rms_residual_deg, fit.start_rms_residual_deg, fit.residuals, esc(fit.solver_message));
+  const bool ok = fit.converged && fit.adequate;
+  const char* verdict = !fit.adequate ? "THE MODEL DOES NOT EXPLAIN THIS LOG" : fit.converged ? "CONVERGED" : "NOT CONVERGED";
+  body += fmt::format("<p><span class=\"result {}\">{}</span> after {} iterations from {} starts: rms error {:.5f} deg "
+                      "(start card {:.5f} deg; the log's floor {:.5f} deg, from the wire's quantisation and {:.2f} "
+                      "counts of noise) over {} logged rows. Solver: {}</p>\n",
+                      ok ? "ok" : "bad", verdict, fit.iterations, fit.starts, fit.rms_residual_deg, fit.start_rms_residual_deg,
+                      fit.floor_rms_deg, fit.noise_counts, fit.residuals, esc(fit.solver_message));
+  if (!fit.adequate) body += fmt::format("<p class=\"note\">{}</p>\n", esc(fit.inadequacy));
   for (const std::string& note : fit.notes) body += fmt::format("<p class=\"note\">{}</p>\n", esc(note));
   body += constants_table(start, fit) + correlation_table(fit);
   for (std::size_t i = 0; i < cases.size(); ++i) {

@@ -102,9 +102,11 @@ int calibrate_command(CalibrateArgs a) {
   if (a.json) {
     std::cout << fit_json(fit).dump(2) << "\n";
   } else {
-    std::cout << fmt::format("{} after {} iterations: rms residual {:.5f} deg (start {:.5f} deg), {} logged rows\n",
-                             fit.converged ? "converged" : "NOT converged", fit.iterations, fit.rms_residual_deg,
-                             fit.start_rms_residual_deg, fit.residuals);
+    std::cout << fmt::format("{} after {} iterations from {} starts: rms residual {:.5f} deg (start {:.5f} deg; the log's "
+                             "floor {:.5f} deg, {:.2f} counts of noise), {} logged rows\n",
+                             fit.converged ? "converged" : "NOT converged", fit.iterations, fit.starts, fit.rms_residual_deg,
+                             fit.start_rms_residual_deg, fit.floor_rms_deg, fit.noise_counts, fit.residuals);
+    if (!fit.adequate) std::cout << fit.inadequacy << "\n";
     std::size_t name_width = 22; // the card's longest names (the thermal ones) still line up
     for (const FittedConstant& f : fit.constants) name_width = std::max(name_width, f.name.size());
     for (const FittedConstant& f : fit.constants) {
@@ -114,7 +116,8 @@ int calibrate_command(CalibrateArgs a) {
     for (const std::string& note : fit.notes) std::cout << "  note: " << note << "\n";
     std::cout << "wrote " << a.out << (a.report.empty() ? "" : " and " + a.report + "/index.html") << "\n";
   }
-  return fit.converged ? 0 : 1;
+  if (!fit.adequate && !a.json) std::cerr << "calibrate: " << fit.inadequacy << "\n";
+  return fit.converged && fit.adequate ? 0 : 1;
 }
 
 } // namespace
@@ -123,7 +126,8 @@ SREH_REGISTER_COMMAND(57, [](CLI::App& app, int& exit_code) {
   auto args = std::make_shared<CalibrateArgs>();
   CLI::App* cmd = app.add_subcommand(
       "calibrate", "Fit the model card's constants to master logs of a real module, or write the identification "
-                   "program (--plan); exit 0 converged, 1 not converged, 2 bad input (docs/calibration.md)");
+                   "program (--plan); exit 0 converged, 1 not converged or the model does not explain the log (its rms "
+                   "residual over 3x the log's floor), 2 bad input (docs/calibration.md)");
   CalibrateRequest& r = args->request;
   cmd->add_option("logs", r.logs, "Master logs (t_s,pd_out,pd_in[,temperature_C]: `run --master-log`)");
   cmd->add_option("--load-gcm2", args->load_gcm2, "The attached load's inertia about the axis, g cm^2");
@@ -149,6 +153,14 @@ SREH_REGISTER_COMMAND(57, [](CLI::App& app, int& exit_code) {
       ->check(CLI::Range(0.0, 360.0))->capture_default_str();
   cmd->add_option("--step", r.options.relative_step, "Finite-difference step, fraction of each start value (A-CAL-3)")
       ->check(CLI::Range(1e-4, 0.5))->capture_default_str();
+  cmd->add_option("--starts", r.options.starts,
+                  "Solver starts: the start card, and spread points of the ranges (the best goes on; a constant on "
+                  "which they disagree is not identified)")
+      ->check(CLI::Range(1, 16))->capture_default_str();
+  cmd->add_option_function<double>(
+         "--noise-counts", [args](double v) { args->request.options.noise_counts = v; },
+         "The logged position's noise, wire counts (one sigma) [default: estimated from the log]")
+      ->check(CLI::Range(0.0, 1000.0));
   cmd->add_flag("--quiet", args->quiet, "No progress lines on stderr (they come for work over 2 s)");
   cmd->add_option("--plan", args->plan, "Write the identification program (a scenario to run on the module) here");
   cmd->add_option("--mounting-tilt-deg", args->mounting_tilt_deg, "With --plan: tilt of the axis from vertical, deg")

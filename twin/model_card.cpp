@@ -152,14 +152,15 @@ class CardFile {
 // `complete`: the card itself, where all four keys are required.
 void read_entry(const CardFile& f, const YAML::Node& key, const YAML::Node& entry, ModelConstant& c, bool complete) {
   const std::string& name = c.name;
+  c.has_interval = false; // an entry without one drops a base file's interval
   if (entry.IsScalar()) {
     if (complete) f.fail(entry, name + ": the card gives value, unit, source and range");
     c.value = f.number(entry, name);
   } else if (entry.IsMap()) {
     for (const auto& kv : entry) {
       const std::string k = kv.first.Scalar();
-      if (k != "value" && k != "unit" && k != "source" && k != "range") {
-        f.fail(kv.first, name + ": unknown key '" + k + "' (value, unit, source, range)");
+      if (k != "value" && k != "unit" && k != "source" && k != "range" && k != "interval") {
+        f.fail(kv.first, name + ": unknown key '" + k + "' (value, unit, source, range, interval)");
       }
     }
     for (const char* k : {"value", "unit", "source", "range"}) {
@@ -178,6 +179,18 @@ void read_entry(const CardFile& f, const YAML::Node& key, const YAML::Node& entr
       c.range_lo = f.number(r[0], name + ".range[0]");
       c.range_hi = f.number(r[1], name + ".range[1]");
       if (c.range_lo > c.range_hi) f.fail(r, name + ".range: lo " + shortest_number(c.range_lo) + " > hi " + shortest_number(c.range_hi));
+    }
+    // A calibration's 95 % interval (issue 36): what uncertainty sizing
+    // samples instead of the range; it must lie in the range and hold the value.
+    if (const YAML::Node r = entry["interval"]) {
+      if (!r.IsSequence() || r.size() != 2) f.fail(r, name + ".interval must be [lo, hi]");
+      c.interval_lo = f.number(r[0], name + ".interval[0]");
+      c.interval_hi = f.number(r[1], name + ".interval[1]");
+      if (!(c.interval_lo <= c.value && c.value <= c.interval_hi) || c.interval_lo < c.range_lo || c.interval_hi > c.range_hi) {
+        f.fail(r, name + ".interval [" + shortest_number(c.interval_lo) + ", " + shortest_number(c.interval_hi) +
+                      "] must hold the value and lie inside the range");
+      }
+      c.has_interval = true;
     }
   } else {
     f.fail(key, name + " must be a number or {value, unit, source, range}");
@@ -301,6 +314,7 @@ std::string model_card_yaml(const ModelCard& card) {
     out += "    unit: " + quoted(c.unit) + "\n";
     out += "    source: " + quoted(c.source) + "\n";
     out += "    range: [" + shortest_number(c.range_lo) + ", " + shortest_number(c.range_hi) + "]\n";
+    if (c.has_interval) out += "    interval: [" + shortest_number(c.interval_lo) + ", " + shortest_number(c.interval_hi) + "]\n";
   }
   return out;
 }

@@ -32,6 +32,13 @@ struct ModelConstant {
   std::string source;
   double range_lo = 0;
   double range_hi = 0;
+  // A calibration's 95 % interval, where one was written (`interval: [lo, hi]`,
+  // issue 36): uncertainty sizing samples it instead of the range.
+  bool has_interval = false;
+  double interval_lo = 0;
+  double interval_hi = 0;
+  double sampling_lo() const { return has_interval ? interval_lo : range_lo; }
+  double sampling_hi() const { return has_interval ? interval_hi : range_hi; }
   bool operator==(const ModelConstant&) const = default;
 };
 

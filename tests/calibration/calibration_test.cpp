@@ -106,11 +106,15 @@ TEST(Calibration, HiddenConstantsComeBackAndPredictAHeldOutMove) {
   std::printf("rms %.5f deg (start %.5f), %d iterations, %zu replays, %s\n", fit.rms_residual_deg,
               fit.start_rms_residual_deg, fit.iterations, fit.replays, fit.solver_message.c_str());
   EXPECT_TRUE(fit.converged);
+  EXPECT_TRUE(fit.adequate) << fit.inadequacy;
   expect_recovered(fit, hidden, 0.10);
+  // Not asserted yet (issue 36 open): viscous friction (-25 %) and damping
+  // (+10 %) come back flagged identified with intervals that miss the
+  // truth: the cost's broad minimum is biased for them (docs/calibration.md).
   expect_predicts_held_out(fit.card, hidden, 0.05);
 
-  // FIT.yaml is a model file --model reads: the fitted values come back,
-  // each with its interval (inside the card's range) as its range.
+  // FIT.yaml is a model file --model reads: the fitted values come back
+  // with the card's range, an identified one with its interval (issue 36).
   const std::string path = testing::TempDir() + "/fit.yaml";
   std::ofstream(path) << fit_model_yaml(fit, default_model_card(), {"recorded.csv"}, "2026-11-26");
   const ModelCard read = apply_model_file(default_model_card(), path);
@@ -118,8 +122,10 @@ TEST(Calibration, HiddenConstantsComeBackAndPredictAHeldOutMove) {
     const ModelConstant* c = read.find(f.name);
     EXPECT_EQ(c->value, f.value) << f.name;
     EXPECT_NE(c->source.find("calibrated from recorded.csv on 2026-11-26"), std::string::npos);
+    EXPECT_EQ(c->range_lo, default_model_card().find(f.name)->range_lo);
+    EXPECT_EQ(c->has_interval, f.identified) << f.name;
     if (f.identified) {
-      EXPECT_EQ(c->range_lo, std::max(f.ci95_lo, default_model_card().find(f.name)->range_lo));
+      EXPECT_EQ(c->interval_lo, std::max(f.ci95_lo, default_model_card().find(f.name)->range_lo));
     }
   }
 }
@@ -202,6 +208,7 @@ TEST(Calibration, WithOneCountOfNoise) {
   std::printf("rms %.5f deg (start %.5f), %d iterations, %zu replays, %s\n", fit.rms_residual_deg,
               fit.start_rms_residual_deg, fit.iterations, fit.replays, fit.solver_message.c_str());
   EXPECT_TRUE(fit.converged);
+  EXPECT_TRUE(fit.adequate) << fit.inadequacy;
   expect_recovered(fit, hidden, 0.15);
   expect_predicts_held_out(fit.card, hidden, 0.15);
 }
