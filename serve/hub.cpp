@@ -157,6 +157,7 @@ void Hub::run_port_cycle(Port& port) {
     // A replacement module got through start-up: the master restores its backup.
     if (port.ds_download_pending && port.twin.iolink_led() == IoLinkLedMode::Operate) {
       port.ds_download_pending = false;
+      ++port.ds_generation; // no longer owed (written by the saver, after the memory)
       port.ds_last_error = port.ds_backup ? ds_download(port.twin, *port.ds_backup) : 0;
       push_event(port, "data_storage",
                  nlohmann::json{{"t_s", port.twin.time_s()},
@@ -189,13 +190,18 @@ void Hub::start() {
 void Hub::ds_startup() {
   for (auto& p : ports_) {
     std::lock_guard lock(p->mutex);
-    if (!p->ds_backup || ds_upload_requested(p->twin)) { // a new backup, or the device asks for one
+    const bool another_module = p->ds_download_pending || p->fresh_module;
+    if (!p->ds_backup || (!another_module && ds_upload_requested(p->twin))) { // a new backup, or the device asks
+      p->ds_download_pending = false;
       if (auto b = ds_upload(p->twin)) {
         p->ds_backup = std::move(b);
         ++p->ds_generation;
       }
-    } else if (p->ds_backup->checksum != ds_checksum(p->twin)) { // changed or replaced: the backup goes in
+    } else if (another_module && p->ds_backup->checksum != ds_checksum(p->twin)) { // the backup goes in
       p->ds_download_pending = true;
+    } else if (p->ds_download_pending) { // owed, but the module holds the backup already
+      p->ds_download_pending = false;
+      ++p->ds_generation;
     }
   }
 }
@@ -268,10 +274,17 @@ uint16_t Hub::commit(int p, Port& port, const std::optional<TwinSnapshot>& befor
       port.ds_backup = std::move(b);
       ++port.ds_generation;
     }
+  const bool uploaded = port.ds_generation != generation_before;
   const uint64_t seq = ++port.state_seq;
   try {
-    bool wrote = state_->save_nvm(p, seq, port.twin.save_nvm());
-    wrote = (port.ds_backup && state_->save_ds(p, *port.ds_backup, port.ds_generation)) || wrote;
+    const auto save_ds = [&] {
+      return port.ds_backup && state_->save_ds(p, *port.ds_backup, port.ds_download_pending, port.ds_generation);
+    };
+    // An upload: the memory first (see above); a download owed (a
+    // replacement): the backup file first, so the next start knows.
+    bool wrote = !uploaded && save_ds();
+    wrote = state_->save_nvm(p, seq, port.twin.save_nvm()) || wrote;
+    wrote = (uploaded && save_ds()) || wrote;
     if (wrote) note_state_result(p, port, "");
     return 0;
   } catch (const std::exception& e) {
@@ -289,20 +302,24 @@ bool Hub::persist(int p) {
   std::vector<uint8_t> nvm;
   double flange_deg = 0;
   uint64_t seq = 0, ds_generation = 0;
+  bool owed = false;
   std::optional<DsBackup> ds;
   with_port(p, [&](Port& port) {
     seq = ++port.state_seq;
     nvm = port.twin.save_nvm();
     flange_deg = rad_to_deg(port.twin.plant().angle_rad());
     ds_generation = port.ds_generation;
+    owed = port.ds_download_pending;
     if (port.ds_backup) ds = port.ds_backup;
   });
   const bool failing = with_port(p, [](Port& port) { return !port.state_write_error.empty(); });
   std::string error;
   bool wrote = false;
   try { // outside the port lock: the clock goes on while the files are written
-    if (ds) wrote = state_->save_ds(p, *ds, ds_generation); // first: a kill between the two never loses an upload
-    wrote = state_->save_nvm(p, seq, nvm) || wrote;
+    // The memory first: after a download, "no longer owed" must not be on
+    // disk before the module that got it (a kill between: downloaded again).
+    wrote = state_->save_nvm(p, seq, nvm);
+    if (ds) wrote = state_->save_ds(p, *ds, owed, ds_generation) || wrote;
     wrote = state_->save_flange(p, flange_deg, failing) || wrote; // after a failure: does the folder take writes again?
   } catch (const std::exception& e) {
     error = e.what();

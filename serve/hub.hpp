@@ -101,7 +101,8 @@ class Hub {
     // module (made in its first cycle in OPERATE).
     std::optional<DsBackup> ds_backup;
     uint64_t ds_generation = 0;
-    bool ds_download_pending = false;
+    bool ds_download_pending = false; // also in the backup file (download_owed)
+    bool fresh_module = false;        // started without a memory image in the state folder
     uint16_t ds_last_error = 0; // IO-Link code of the last refused download, 0 if none
     // --state-dir: captures are numbered so an older image never overwrites
     // a newer one; the last write's failure ("" once a write succeeds again).
@@ -181,11 +182,17 @@ class Hub {
   // could not write something; serve exits non-zero).
   bool state_saved() const { return state_saved_; }
   // The master's Data Storage start-up for every port (before start(),
-  // IO-Link Data Storage, docs/serve.md has the table): no backup, or the
-  // device asks for an upload (3.2 bit 7): upload; otherwise a device whose
-  // Parameter_Checksum differs from the backup gets the backup (download,
-  // in its first cycle in OPERATE). While running, an upload request of the
-  // device (e.g. after ParamDownloadStore) is served within kPersistEvery.
+  // IO-Link Data Storage, docs/serve.md has the table, A-SERVE-19):
+  //  - no backup: upload;
+  //  - a module that is not the one whose memory the master kept (a
+  //    replacement not restored yet, Port::ds_download_pending from the
+  //    backup file; no memory image in the state folder): download, in its
+  //    first cycle in OPERATE;
+  //  - the module asks for an upload (3.2 bit 7): upload;
+  //  - else the same module, changed only by the PLC's acknowledged writes:
+  //    kept as it is (its single writes are not in the backup).
+  // While running, an upload request is served before the answer to the
+  // write that raised it (commit()), else within kPersistEvery.
   void ds_startup();
   // Runs cycles (unpaced) until every port's module has started up and
   // exchanged process data (at most a few cycles): before the fronts open.

@@ -352,6 +352,7 @@ Json apply_faults(Hub::Port& port, const Json& body) {
     t.replace_device();
     ++f.device_replacements;
     port.ds_download_pending = true;
+    ++port.ds_generation; // on disk before the answer: owed also after a kill
   }
   port.faults = f;
   return faults_json(port);

@@ -146,7 +146,7 @@ PortState StateDir::load(int p) {
   }
   if (const auto text = read_if_exists(ds_path(p))) {
     try {
-      s.ds = ds_backup_from_json(*text);
+      s.ds = ds_backup_from_json(*text, &s.ds_download_owed);
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument(fmt::format("{}: corrupt: {}; left as it is", ds_path(p), e.what()));
     }
@@ -178,11 +178,11 @@ bool StateDir::save_flange(int p, double flange_angle_deg, bool force) {
   return true;
 }
 
-bool StateDir::save_ds(int p, const DsBackup& backup, uint64_t generation) {
+bool StateDir::save_ds(int p, const DsBackup& backup, bool download_owed, uint64_t generation) {
   Saved& saved = *saved_.at(static_cast<std::size_t>(p - 1));
   std::lock_guard lock(saved.mutex);
   if (generation <= saved.ds_generation) return false;
-  write_durably(ds_path(p), ds_backup_json(backup));
+  write_durably(ds_path(p), ds_backup_json(backup, download_owed));
   saved.ds_generation = generation;
   return true;
 }

@@ -30,6 +30,7 @@ struct PortState {
   std::optional<std::vector<uint8_t>> nvm;  // none: factory-new
   std::optional<double> flange_angle_deg;   // none: the flange at 0
   std::optional<DsBackup> ds;               // none: the master holds no backup yet
+  bool ds_download_owed = false;            // a replaced module still waits for the backup
 };
 
 class StateDir {
@@ -52,7 +53,7 @@ class StateDir {
   bool save_flange(int p, double flange_angle_deg, bool force = false);
 
   // The master's backup, written when `generation` is newer than the last one written.
-  bool save_ds(int p, const DsBackup& backup, uint64_t generation);
+  bool save_ds(int p, const DsBackup& backup, bool download_owed, uint64_t generation);
 
   std::string nvm_path(int p) const;
   std::string flange_path(int p) const;

@@ -1,11 +1,13 @@
-"""Issue 40, point 2: Data Storage at the master as IO-Link specifies it
-(iolink.md "Data Storage", manual 8), the same decision after SIGTERM and
-after SIGKILL at any moment (docs/serve.md has the table):
+"""Issue 40, point 2: Data Storage at the master (iolink.md "Data Storage",
+manual 8, A-SERVE-19), the same decision after SIGTERM and after SIGKILL
+at any moment (docs/serve.md has the table):
   - no backup (new port, or the backup file deleted): upload;
-  - the device asks for an upload (ParamDownloadStore): upload, also when
-    serve was killed before its saver got to it;
-  - the checksum differs without that request (a replaced module, a PLC's
-    single writes): the backup is downloaded into the device.
+  - the device asks for an upload (ParamDownloadStore): upload, before the
+    answer to the store, so also when serve is killed right after it;
+  - another module (replaced, also with the link down and serve stopped or
+    killed right after; no memory file): the backup is downloaded into it;
+  - the same module changed by the PLC's single writes: kept (acknowledged),
+    not in the backup (a replacement does not get them).
 Before: a replacement made while the link was down, then a restart, put the
 factory-new module into the backup (66.4 = 2500 became 0)."""
 import os
@@ -60,19 +62,27 @@ for how in ("SIGTERM", "SIGKILL"):
     check(in_step(s), "after %s: %s" % (how, ds(s)))
     print("replacement with the link down, then %s: backup downloaded (66.4 = 2500)" % how)
 
-# The PLC's single write is not in the backup (IO-Link: no upload request): the next
-# start-up downloads the backup over it, the same after SIGKILL.
+# The PLC's single write is acknowledged, so it stays through SIGKILL; it is not in the
+# backup (IO-Link: no upload request), so a module put in while serve is stopped
+# (its memory file gone) gets the backup, not the single write.
 code, j = http_call(s.ready["http"], "PUT", "/v1/ports/1/parameters/66/4", {"value": 2600})
 check(code == 200 and param(s, 66, 4) == 2600, "single write: %d %s" % (code, j))
+backup_checksum = ds(s)["checksum"]
 kill(s)
 s = Serve(exe, *args)
-check(param(s, 66, 4) == 2500 and in_step(s), "single write, restart: 66.4 = %s (backup 2500)" % param(s, 66, 4))
+check(param(s, 66, 4) == 2600, "an acknowledged single write was lost to a restart: 66.4 = %s" % param(s, 66, 4))
+check(ds(s)["checksum"] == backup_checksum and not in_step(s), "a single write went into the backup: %s" % ds(s))
+s.stop()
+os.remove(os.path.join(state, "port1.nvm"))
+s = Serve(exe, *args)
+check(param(s, 66, 4) == 2500 and in_step(s), "a new module while stopped: 66.4 = %s (backup 2500)" % param(s, 66, 4))
 
 # Cleared backup: the device's set becomes the backup.
+code, j = http_call(s.ready["http"], "PUT", "/v1/ports/1/parameters/66/4", {"value": 2700})
 s.stop()
 os.remove(os.path.join(state, "port1.ds.json"))
 s = Serve(exe, *args)
-check(param(s, 66, 4) == 2500 and ds(s)["backup"] and in_step(s), "cleared backup: %s" % ds(s))
+check(param(s, 66, 4) == 2700 and ds(s)["backup"] and in_step(s), "cleared backup: %s" % ds(s))
 rc, err = s.stop()
 check(rc == 0, "exit %d %s" % (rc, err))
 print("PASS")
