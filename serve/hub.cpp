@@ -274,17 +274,18 @@ uint16_t Hub::commit(int p, Port& port, const std::optional<TwinSnapshot>& befor
       port.ds_backup = std::move(b);
       ++port.ds_generation;
     }
-  const bool uploaded = port.ds_generation != generation_before;
   const uint64_t seq = ++port.state_seq;
   try {
     const auto save_ds = [&] {
       return port.ds_backup && state_->save_ds(p, *port.ds_backup, port.ds_download_pending, port.ds_generation);
     };
-    // An upload: the memory first (see above); a download owed (a
-    // replacement): the backup file first, so the next start knows.
-    bool wrote = !uploaded && save_ds();
+    // A download owed (a replacement): the backup file saying so goes
+    // first, so the next start knows the new module; otherwise (an upload,
+    // a download done) the memory goes first, see above.
+    const bool ds_first = port.ds_download_pending;
+    bool wrote = ds_first && save_ds();
     wrote = state_->save_nvm(p, seq, port.twin.save_nvm()) || wrote;
-    wrote = (uploaded && save_ds()) || wrote;
+    wrote = (!ds_first && save_ds()) || wrote;
     if (wrote) note_state_result(p, port, "");
     return 0;
   } catch (const std::exception& e) {
