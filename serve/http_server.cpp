@@ -12,7 +12,6 @@
 #include <cerrno>
 #include <cstring>
 #include <regex>
-#include <thread>
 
 #include <fmt/format.h>
 

@@ -21,6 +21,7 @@
 #include "serve/mqtt_auth.hpp"
 #include "serve/mqtt_bridge.hpp"
 #include "serve/port_api.hpp"
+#include "serve/state_dir.hpp"
 
 extern char** environ;
 
@@ -395,6 +396,41 @@ TEST(MqttBridge, OnlineIsPublishedAgainAfterAReconnect) {
   EXPECT_TRUE(l.wait_raw("r/port/1/availability", "online"));
   bridge.stop();
   hub.stop();
+}
+
+// Issue 40, point 1 over MQTT: a write the state folder cannot take (the
+// test hook of docs/serve.md: as a full disk) answers 0x8082 and changes nothing.
+TEST(MqttBridge, AWriteTheStateFolderCannotTakeIsRefusedWith0x8082) {
+  if (access(kBroker, X_OK) != 0) GTEST_SKIP() << "mosquitto not installed";
+  Broker broker;
+  ASSERT_TRUE(broker.start()) << "mosquitto did not start";
+  const fs::path dir = fs::temp_directory_path() / ("sreh-mqtt-state-" + std::to_string(getpid()));
+  fs::create_directories(dir / "state");
+  StateDir state((dir / "state").string(), 1);
+  Hub hub(std::vector<TwinConfig>(1), HubOptions{});
+  hub.set_state_dir(&state);
+  MqttOptions o;
+  o.port = broker.port;
+  o.prefix = "s";
+  MqttBridge bridge(hub, o);
+  hub.start();
+  bridge.start();
+  Listener l(broker.port, "s/#");
+  const fs::path flag = dir / "disk-full";
+  std::ofstream(flag) << "";
+  setenv("SREH_SERVE_TEST_FAIL_STATE_WRITES_WHILE", flag.c_str(), 1);
+  l.publish("s/port/1/isdu/request", R"({"id": 61, "op": "write", "index": 66, "subindex": 4, "value": 2222})");
+  const auto refused = l.wait_for("s/port/1/isdu/response", [](const Json& j) { return j["id"] == 61; });
+  unsetenv("SREH_SERVE_TEST_FAIL_STATE_WRITES_WHILE");
+  ASSERT_TRUE(refused);
+  EXPECT_FALSE((*refused)["ok"].get<bool>()) << refused->dump();
+  EXPECT_EQ((*refused)["iolink_error"], "0x8082") << refused->dump();
+  EXPECT_NE(hub.with_port(1, [](Hub::Port& p) { return read_parameter(p, 66, 4)["value"]; }), 2222) << "not rolled back";
+  EXPECT_FALSE(hub.with_port(1, [](Hub::Port& p) { return p.state_write_error; }).empty());
+  bridge.stop();
+  hub.stop();
+  std::error_code ec;
+  fs::remove_all(dir, ec);
 }
 
 TEST(MqttBridge, UnreachableBrokerIsAClearError) {
