@@ -127,12 +127,12 @@ def http_poller():
     c.close()
 
 
-threads = [threading.Thread(target=attackers)]
+threads = [threading.Thread(target=attackers, daemon=True)]
 threads[0].start()
 time.sleep(1.0)  # the attack is on
-threads += [threading.Thread(target=modbus_poller, args=(0.01, "plc")),
-            threading.Thread(target=modbus_poller, args=(1.0, "1 Hz poller")),
-            threading.Thread(target=http_poller)]
+threads += [threading.Thread(target=modbus_poller, args=(0.01, "plc"), daemon=True),
+            threading.Thread(target=modbus_poller, args=(1.0, "1 Hz poller"), daemon=True),
+            threading.Thread(target=http_poller, daemon=True)]
 for t in threads[1:]:
     t.start()
 new_modbus = new_http = 0
@@ -145,11 +145,24 @@ while time.monotonic() < end:
         m.close()
     except Exception as e:  # noqa: BLE001
         errors.append("new modbus client: %s" % e)
-    code, _ = http_call(http_addr, "GET", "/v1/ports/1", timeout=2)
-    new_http += code == 200
+    try:
+        code, _ = http_call(http_addr, "GET", "/v1/ports/1", timeout=2)
+        new_http += code == 200
+    except Exception as e:  # noqa: BLE001
+        errors.append("new HTTP client: %s" % e)
     time.sleep(0.5)
-page = http_call(http_addr, "GET", "/", timeout=2)
-app = http_call(http_addr, "GET", "/assets/app.js", timeout=2)
+
+
+def get_or_none(path):
+    try:
+        return http_call(http_addr, "GET", path, timeout=2)
+    except Exception as e:  # noqa: BLE001
+        errors.append("GET %s: %s" % (path, e))
+        return (0, "")
+
+
+page = get_or_none("/")
+app = get_or_none("/assets/app.js")
 stop.set()
 for t in threads:
     t.join(timeout=10)
@@ -165,6 +178,8 @@ print("under 256 slow HTTP + 40 half-frame Modbus connections (%d / %d reconnect
       (stats["http_slow_reconnects"], stats["modbus_half_reconnects"], pct(lat["modbus"], .5), pct(lat["modbus"], .99),
        len(lat["modbus"]), pct(lat["http"], .5), pct(lat["http"], .99), len(lat["http"]), new_modbus,
        int(ATTACK_S / 0.5), new_http, int(ATTACK_S / 0.5)))
+if errors:
+    s.kill()
 check(not errors, "refused or failed: %s" % errors[:5])
 check(len(lat["modbus"]) > 200 and len(lat["http"]) > 100, "too few polls: %s" % {k: len(v) for k, v in lat.items()})
 check(pct(lat["modbus"], .99) < 50 and pct(lat["http"], .99) < 50, "p99 over 50 ms")
