@@ -7,8 +7,10 @@
 
 namespace sreh::serve {
 
-std::string ds_backup_json(const DsBackup& backup);
+// `download_owed`: a replaced module has not got the backup yet (issue 40:
+// the next start downloads it, whenever serve was stopped or killed).
+std::string ds_backup_json(const DsBackup& backup, bool download_owed);
 // Throws std::invalid_argument (message without a file name) if malformed.
-DsBackup ds_backup_from_json(const std::string& text);
+DsBackup ds_backup_from_json(const std::string& text, bool* download_owed = nullptr);
 
 } // namespace sreh::serve

@@ -2,30 +2,32 @@
 
 #include <httplib.h>
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
 #include <sys/socket.h>
+#include <unistd.h>
 
 #include <atomic>
 #include <chrono>
 #include <cerrno>
 #include <cstring>
 #include <regex>
-#include <thread>
 
 #include <fmt/format.h>
 
 #include "io/html_page.hpp"
 #include "serve/front_impl.hpp"
 #include "serve/http_auth.hpp"
-#include "serve/http_workers.hpp"
+#include "serve/http_events.hpp"
+#include "serve/http_front.hpp"
+#include "serve/listen_socket.hpp"
 #include "serve/port_api.hpp"
 #include "serve/web_assets.hpp"
 
 namespace sreh::serve {
 namespace {
 
-constexpr int kMaxStreams = 16;       // concurrent event streams; more get 503 at once
-constexpr std::size_t kMaxThreads = 256; // connection threads (http_workers.hpp); plain requests keep > 200
-constexpr int kListenBacklog = 256;
+constexpr int kListenBacklog = 1024;
 constexpr const char* kJsonType = "application/json";
 
 struct Route {
@@ -39,14 +41,15 @@ constexpr Route kRoutes[] = {
     {"GET", "/", "/"},
     {"GET", "/assets/{name}", R"(/assets/([A-Za-z0-9._-]+))"},
     {"GET", "/v1/ports", "/v1/ports"},
-    {"GET", "/v1/ports/{p}", R"(/v1/ports/(\d{1,3}))"},
-    {"GET", "/v1/ports/{p}/processdata", R"(/v1/ports/(\d{1,3})/processdata)"},
-    {"PUT", "/v1/ports/{p}/processdata/out", R"(/v1/ports/(\d{1,3})/processdata/out)"},
-    {"GET", "/v1/ports/{p}/parameters/{index}/{subindex}", R"(/v1/ports/(\d{1,3})/parameters/(\d{1,5})/(\d{1,3}))"},
-    {"PUT", "/v1/ports/{p}/parameters/{index}/{subindex}", R"(/v1/ports/(\d{1,3})/parameters/(\d{1,5})/(\d{1,3}))"},
-    {"GET", "/v1/ports/{p}/events", R"(/v1/ports/(\d{1,3})/events)"},
-    {"GET", "/v1/ports/{p}/faults", R"(/v1/ports/(\d{1,3})/faults)"},
-    {"POST", "/v1/ports/{p}/faults", R"(/v1/ports/(\d{1,3})/faults)"},
+    {"GET", "/v1/ports/{p}", R"(/v1/ports/([1-9]\d?))"},
+    {"GET", "/v1/ports/{p}/processdata", R"(/v1/ports/([1-9]\d?)/processdata)"},
+    {"PUT", "/v1/ports/{p}/processdata/out", R"(/v1/ports/([1-9]\d?)/processdata/out)"},
+    {"GET", "/v1/ports/{p}/parameters/{index}/{subindex}", R"(/v1/ports/([1-9]\d?)/parameters/(\d{1,5})/(\d{1,3}))"},
+    {"PUT", "/v1/ports/{p}/parameters/{index}/{subindex}", R"(/v1/ports/([1-9]\d?)/parameters/(\d{1,5})/(\d{1,3}))"},
+    {"GET", "/v1/ports/{p}/events", R"(/v1/ports/([1-9]\d?)/events)"},
+    {"GET", "/v1/events", "/v1/events"},
+    {"GET", "/v1/ports/{p}/faults", R"(/v1/ports/([1-9]\d?)/faults)"},
+    {"POST", "/v1/ports/{p}/faults", R"(/v1/ports/([1-9]\d?)/faults)"},
     {"GET", "/v1/stats", "/v1/stats"},
 };
 
@@ -88,34 +91,71 @@ std::vector<RouteInfo> http_routes() {
   return out;
 }
 
+// cpp-httplib parses a request and routes it; the connection front
+// (http_front.hpp) gives it one whole request read beforehand, so a worker
+// never waits for a client.
+class Router final : public httplib::Server {
+ public:
+  using httplib::Server::process_request;
+};
+
+// One whole request in, the whole answer collected: nothing here touches the socket.
+class BufferStream final : public httplib::Stream {
+ public:
+  BufferStream(const std::string& in, int fd) : in_(in), fd_(fd) {}
+  bool is_readable() const override { return at_ < in_.size(); }
+  bool is_writable() const override { return true; }
+  ssize_t read(char* ptr, size_t size) override {
+    const std::size_t n = std::min(size, in_.size() - at_);
+    std::copy_n(in_.data() + at_, n, ptr);
+    at_ += n;
+    return static_cast<ssize_t>(n);
+  }
+  ssize_t write(const char* ptr, size_t size) override {
+    out.append(ptr, size);
+    return static_cast<ssize_t>(size);
+  }
+  void get_remote_ip_and_port(std::string& ip, int& port) const override { address(getpeername, ip, port); }
+  void get_local_ip_and_port(std::string& ip, int& port) const override { address(getsockname, ip, port); }
+  socket_t socket() const override { return fd_; }
+  std::string out;
+
+ private:
+  template <class F>
+  void address(F f, std::string& ip, int& port) const {
+    sockaddr_storage a{};
+    socklen_t len = sizeof a;
+    char text[INET6_ADDRSTRLEN] = {};
+    port = 0;
+    if (f(fd_, reinterpret_cast<sockaddr*>(&a), &len) != 0) return;
+    if (a.ss_family == AF_INET) {
+      inet_ntop(AF_INET, &reinterpret_cast<sockaddr_in*>(&a)->sin_addr, text, sizeof text);
+      port = ntohs(reinterpret_cast<sockaddr_in*>(&a)->sin_port);
+    } else if (a.ss_family == AF_INET6) {
+      inet_ntop(AF_INET6, &reinterpret_cast<sockaddr_in6*>(&a)->sin6_addr, text, sizeof text);
+      port = ntohs(reinterpret_cast<sockaddr_in6*>(&a)->sin6_port);
+    }
+    ip = text;
+  }
+  const std::string& in_;
+  std::size_t at_ = 0;
+  int fd_;
+};
+
 template <>
 struct Front<HttpOptions>::Impl {
   Hub& hub;
   HttpOptions options;
-  httplib::Server server;
-  int bound = -1;
-  std::thread thread;
+  Router server;
+  int listen_fd = -1;
+  std::unique_ptr<HttpFront> front;
   std::atomic<bool> stopping{false};
   std::atomic<int> streams{0};
-
   std::vector<std::regex> route_patterns; // kRoutes[i].pattern, for 405
-  int listen_fd = -1;                     // cpp-httplib's listening socket (owned by it)
 
   Impl(Hub& h, const HttpOptions& o) : hub(h), options(o) {
     for (const auto& r : kRoutes) route_patterns.emplace_back(r.pattern);
-    server.new_task_queue = [] { return new ConnectionThreads(kMaxThreads); };
-    // SO_REUSEADDR only: cpp-httplib's default adds SO_REUSEPORT, which let a
-    // second serve share the port silently (issue 27).
-    server.set_socket_options([this](socket_t sock) {
-      const int yes = 1;
-      setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
-      listen_fd = sock;
-    });
     server.set_payload_max_length(o.max_body_bytes); // larger bodies: 413
-    server.set_read_timeout(2, 0);
-    server.set_write_timeout(2, 0);
-    server.set_keep_alive_timeout(2);
-    server.set_tcp_nodelay(true); // no 40 ms Nagle / delayed-ACK stalls on small answers
     server.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr ep) {
       std::string what = "internal error";
       try {
@@ -140,16 +180,28 @@ struct Front<HttpOptions>::Impl {
       else send_error(res, res.status, fmt::format("HTTP {}", res.status));
     });
     register_routes();
-    errno = 0;
-    bound = o.port == 0 ? server.bind_to_any_port(o.host) : (server.bind_to_port(o.host, o.port) ? o.port : -1);
-    if (bound < 0)
-      throw std::runtime_error(fmt::format("http: cannot listen on {}:{}: {}", o.host, o.port,
-                                           errno == EADDRINUSE ? "address in use"
-                                           : errno != 0       ? std::strerror(errno)
-                                                              : "cannot bind"));
-    // cpp-httplib listens with a backlog of 5: a burst of clients then waits
-    // for SYN retries (1 s, 2 s, ...). listen() again only enlarges it.
-    if (listen_fd >= 0) ::listen(listen_fd, kListenBacklog);
+    listen_fd = listen_tcp(o.host, o.port, "http", kListenBacklog);
+    front = std::make_unique<HttpFront>(listen_fd, o.max_body_bytes, [this](const std::string& request, int fd) {
+      return serve_one(request, fd);
+    });
+  }
+
+  ~Impl() {
+    stop();
+    if (listen_fd >= 0) ::close(listen_fd);
+  }
+
+  // One whole request: an event stream (http_events.hpp) or cpp-httplib's routing.
+  FrontAnswer serve_one(const std::string& request, int fd) {
+    if (auto stream = open_event_stream(hub, request, streams, stopping)) return std::move(*stream);
+    BufferStream strm(request, fd);
+    bool closed = false;
+    server.process_request(strm, false, closed, nullptr);
+    FrontAnswer a;
+    a.bytes = std::move(strm.out);
+    // A request the parser refused leaves the connection in doubt: close it.
+    a.keep_alive = !closed && a.bytes.compare(0, 12, "HTTP/1.1 400") != 0 && a.bytes.compare(0, 12, "HTTP/1.1 414") != 0;
+    return a;
   }
 
   // "GET, PUT" for a path some route serves with other methods; "" if none does.
@@ -159,6 +211,15 @@ struct Front<HttpOptions>::Impl {
       if (std::regex_match(path, route_patterns[i]) && allow.find(kRoutes[i].method) == std::string::npos)
         allow += fmt::format("{}{}", allow.empty() ? "" : ", ", kRoutes[i].method);
     return allow;
+  }
+
+  // {"1": "cannot write ...", ...}: the ports whose last state write failed.
+  Json state_write_errors() {
+    Json j = Json::object();
+    for (int p = 1; p <= hub.port_count(); ++p)
+      if (const std::string e = hub.with_port(p, [](Hub::Port& port) { return port.state_write_error; }); !e.empty())
+        j[std::to_string(p)] = e;
+    return j;
   }
 
   // The port number from the path, or a 404 answer.
@@ -197,6 +258,9 @@ struct Front<HttpOptions>::Impl {
       send_error(res, e.status, e.what());
     } catch (const IsduRefused& e) {
       send_json(res, http_status_for(e.code), Json{{"iolink_error", iolink_error_text(e.code)}, {"message", e.what()}});
+    } catch (const StateWriteFailed& e) { // the state folder cannot take it: not done (issue 40)
+      res.set_header("Retry-After", "1");
+      send_json(res, 503, Json{{"iolink_error", iolink_error_text(e.code)}, {"message", e.what()}});
     }
   }
 
@@ -234,13 +298,18 @@ struct Front<HttpOptions>::Impl {
                             {"sim_time_s", s.sim_time_s},
                             {"wall_time_s", s.wall_time_s},
                             {"busy_fraction", s.busy_fraction},
-                            {"realtime_scheduling", s.realtime_scheduling}});
+                            {"realtime_scheduling", s.realtime_scheduling},
+                            {"run_id", hub.run_id()},
+                            {"state_write_failures", hub.state_write_failures()},
+                            {"state_write_errors", state_write_errors()},
+                            {"http_connections", front->connections()}});
     }
+    if (path.find("events") != std::string::npos) // GET is the front's (http_events.hpp); HEAD lands here
+      return send_error(res, 405, "event streams answer GET only");
     const int p = port_from(req, res);
     if (p < 0) return;
     const bool write = method != "GET";
     if (write && !authorised(req, res)) return;
-    if (path == "/v1/ports/{p}/events") return stream_events(p, req, res);
     guarded(res, [&] {
       Json body;
       if (write) body = parse_body(req.body); // before the lock: bad JSON never touches the twin
@@ -252,7 +321,7 @@ struct Front<HttpOptions>::Impl {
         index = static_cast<uint16_t>(i);
         sub = static_cast<uint8_t>(s);
       }
-      const Json out = hub.with_port(p, [&](Hub::Port& port) -> Json {
+      const auto run = [&](Hub::Port& port) -> Json {
         if (path == "/v1/ports/{p}") return port_summary(p, port);
         if (path == "/v1/ports/{p}/processdata") return processdata_json(port);
         if (path == "/v1/ports/{p}/processdata/out") {
@@ -262,51 +331,11 @@ struct Front<HttpOptions>::Impl {
         if (path == "/v1/ports/{p}/faults") return write ? apply_faults(port, body) : faults_json(port);
         if (method == "GET") return read_parameter(port, index, sub);
         return write_parameter(port, index, sub, body);
-      });
-      if (write) hub.persist(p); // before the answer: an answered write survives a kill
-      send_json(res, 200, out);
+      };
+      // A parameter write or a fault is on disk before its answer, or refused and undone.
+      const bool durable = write && path != "/v1/ports/{p}/processdata/out";
+      send_json(res, 200, durable ? hub.durable(p, run) : hub.with_port(p, run));
     });
-  }
-
-  // Server-Sent Events: the current state first, then every new event.
-  void stream_events(int p, const httplib::Request& req, httplib::Response& res) {
-    if (streams.fetch_add(1) >= kMaxStreams) {
-      streams.fetch_sub(1);
-      res.set_header("Connection", "close"); // the surplus client gives its thread back at once
-      res.set_header("Retry-After", "1");
-      return send_error(res, 503, fmt::format("at most {} event streams at a time", kMaxStreams));
-    }
-    uint64_t after = hub.latest_seq(p);
-    if (req.has_header("Last-Event-ID")) {
-      try {
-        after = std::stoull(req.get_header_value("Last-Event-ID"));
-      } catch (...) {
-      }
-    }
-    const Json hello = hub.with_port(p, [&](Hub::Port& port) { return port_summary(p, port); });
-    res.set_header("Cache-Control", "no-cache");
-    auto cursor = std::make_shared<uint64_t>(after);
-    auto first = std::make_shared<bool>(true);
-    res.set_chunked_content_provider(
-        "text/event-stream",
-        [this, p, cursor, first, hello](std::size_t, httplib::DataSink& sink) {
-          if (stopping.load() || !hub.running()) {
-            sink.done();
-            return true;
-          }
-          std::string chunk;
-          if (*first) {
-            chunk = fmt::format("retry: 1000\nevent: hello\ndata: {}\n\n", hello.dump());
-            *first = false;
-          }
-          for (const auto& e : hub.events_after(p, *cursor, std::chrono::milliseconds(250))) {
-            chunk += fmt::format("id: {}\nevent: {}\ndata: {}\n\n", e.seq, e.type, e.json);
-            *cursor = e.seq;
-          }
-          if (chunk.empty()) chunk = ": keep-alive\n\n";
-          return sink.write(chunk.data(), chunk.size());
-        },
-        [this](bool) { streams.fetch_sub(1); });
   }
 
   void register_routes() {
@@ -319,18 +348,11 @@ struct Front<HttpOptions>::Impl {
     }
   }
 
-  int port() const { return bound; }
-  void start() {
-    thread = std::thread([this] { server.listen_after_bind(); });
-    // cpp-httplib's stop() does nothing until the listening loop runs: a stop
-    // right after start (a signal during start-up) would leave it in accept()
-    // for good. Return only once it runs.
-    for (int i = 0; i < 5000 && !server.is_running(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  }
+  int port() const { return fd_port(listen_fd); }
+  void start() { front->start(); }
   void stop() {
     stopping.store(true);
-    server.stop();
-    if (thread.joinable()) thread.join();
+    if (front) front->stop();
   }
 };
 

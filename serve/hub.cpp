@@ -1,5 +1,6 @@
 #include "serve/hub.hpp"
 
+#include "device_logic/isdu.hpp"
 #include "device_logic/parameter_ids.hpp"
 
 #include "device_logic/units.hpp"
@@ -9,10 +10,12 @@
 #include <pthread.h>
 #include <sched.h>
 #include <sys/prctl.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <random>
 #include <set>
 
 #include <fmt/format.h>
@@ -55,18 +58,21 @@ Hub::Hub(const std::vector<TwinConfig>& configs, const HubOptions& options)
     tc.cycle_s = options.cycle_s;
     tc.record_trace = false; // a server runs for hours: no unbounded trace
     ports_.push_back(std::make_unique<Port>(tc));
-    persist_mutex_.push_back(std::make_unique<std::mutex>());
     Port& p = *ports_.back();
-    p.faults.supply_V = tc.supply.voltage_V;
-    p.faults.ambient_C = tc.thermal.ambient_C;
+    p.seq_source = &event_seq_;
+    p.faults.supply_V = p.nominal_supply_V = tc.supply.voltage_V;
+    p.faults.ambient_C = p.nominal_ambient_C = tc.thermal.ambient_C;
   }
   stats_start_ = Clock::now();
+  std::random_device rd;
+  run_id_ = fmt::format("{:08x}{:04x}", rd(), static_cast<unsigned>(::getpid()) & 0xFFFF);
 }
 
 Hub::~Hub() { stop(); }
 
 void Hub::push_event(Port& port, std::string type, std::string json) {
-  port.events.push_back(PortEvent{port.next_seq++, std::move(type), std::move(json)});
+  port.last_seq = ++*port.seq_source;
+  port.events.push_back(PortEvent{port.last_seq, std::move(type), std::move(json)});
   while (port.events.size() > kEventRing) port.events.pop_front();
   port.event_cv.notify_all();
 }
@@ -74,7 +80,7 @@ void Hub::push_event(Port& port, std::string type, std::string json) {
 std::vector<PortEvent> Hub::events_after(int p, uint64_t after_seq, std::chrono::milliseconds timeout) {
   Port& port_ref = port(p);
   std::unique_lock lock(port_ref.mutex);
-  const auto has_new = [&] { return !running_.load() || port_ref.next_seq > after_seq + 1; };
+  const auto has_new = [&] { return !running_.load() || port_ref.last_seq > after_seq; };
   port_ref.event_cv.wait_for(lock, timeout, has_new);
   std::vector<PortEvent> out;
   for (const auto& e : port_ref.events)
@@ -83,7 +89,7 @@ std::vector<PortEvent> Hub::events_after(int p, uint64_t after_seq, std::chrono:
 }
 
 uint64_t Hub::latest_seq(int p) {
-  return with_port(p, [](Port& port_ref) { return port_ref.next_seq - 1; });
+  return with_port(p, [](Port& port_ref) { return port_ref.last_seq; });
 }
 
 void Hub::after_cycle(Port& port) {
@@ -151,6 +157,7 @@ void Hub::run_port_cycle(Port& port) {
     // A replacement module got through start-up: the master restores its backup.
     if (port.ds_download_pending && port.twin.iolink_led() == IoLinkLedMode::Operate) {
       port.ds_download_pending = false;
+      ++port.ds_generation; // no longer owed (written by the saver, after the memory)
       port.ds_last_error = port.ds_backup ? ds_download(port.twin, *port.ds_backup) : 0;
       push_event(port, "data_storage",
                  nlohmann::json{{"t_s", port.twin.time_s()},
@@ -183,12 +190,34 @@ void Hub::start() {
 void Hub::ds_startup() {
   for (auto& p : ports_) {
     std::lock_guard lock(p->mutex);
-    if (!p->ds_backup || p->ds_backup->checksum != ds_checksum(p->twin) || ds_upload_requested(p->twin)) {
+    const bool another_module = p->ds_download_pending || p->fresh_module;
+    if (!p->ds_backup || (!another_module && ds_upload_requested(p->twin))) { // a new backup, or the device asks
+      p->ds_download_pending = false;
       if (auto b = ds_upload(p->twin)) {
         p->ds_backup = std::move(b);
         ++p->ds_generation;
       }
+    } else if (another_module && p->ds_backup->checksum != ds_checksum(p->twin)) { // the backup goes in
+      p->ds_download_pending = true;
+    } else if (p->ds_download_pending) { // owed, but the module holds the backup already
+      p->ds_download_pending = false;
+      ++p->ds_generation;
     }
+  }
+}
+
+void Hub::start_up_ports() {
+  const auto up = [](Port& port) {
+    return !port.failure.empty() || !port.faults.link_up || port.twin.iolink_led() == IoLinkLedMode::Operate;
+  };
+  for (int k = 0; k < 8; ++k) { // STARTUP, PREOPERATE, then the first exchange (A-LINK-3)
+    bool all = true;
+    for (auto& p : ports_) {
+      std::lock_guard lock(p->mutex);
+      all = all && up(*p) && !p->ds_download_pending;
+    }
+    if (all) return;
+    step_all();
   }
 }
 
@@ -200,36 +229,104 @@ void Hub::stop() {
     saver_cv_.notify_all();
   }
   if (saver_.joinable()) saver_.join();
-  if (state_ != nullptr)
-    for (int p = 1; p <= port_count(); ++p) persist(p); // the last word: what the module holds at power-off
+  if (state_ != nullptr) {
+    state_saved_ = true;
+    for (int p = 1; p <= port_count(); ++p) state_saved_ = persist(p) && state_saved_; // the last word: what the module holds at power-off
+  }
   for (auto& p : ports_) {
     std::lock_guard lock(p->mutex);
     p->event_cv.notify_all();
   }
 }
 
-void Hub::persist(int p) {
-  if (state_ == nullptr) return;
-  std::lock_guard order(*persist_mutex_.at(static_cast<std::size_t>(p - 1)));
+std::optional<TwinSnapshot> Hub::checkpoint(Port& port) const {
+  if (state_ == nullptr) return std::nullopt;
+  return port.twin.snapshot();
+}
+
+void Hub::throw_if_refused(uint16_t code, const Port& port) const {
+  if (code != 0) throw StateWriteFailed(code, "not saved, so not done (nothing changed): " + port.state_write_error);
+}
+
+// Port lock held. A failure is said on stderr when it starts and when it ends.
+void Hub::note_state_result(int p, Port& port, const std::string& error) {
+  if (error == port.state_write_error) return;
+  if (!error.empty()) {
+    state_failures_.fetch_add(1);
+    std::cerr << fmt::format("sreh-twin serve: port {}: state not saved: {}\n", p, error);
+  } else {
+    std::cerr << fmt::format("sreh-twin serve: port {}: state saved again\n", p);
+  }
+  port.state_write_error = error;
+}
+
+// The device's upload request (e.g. ParamDownloadStore) is served here, so
+// its answer means the backup holds it too. The memory goes first: a kill
+// or a failure between the two leaves a memory that no longer asks for the
+// upload beside the old backup, which the next start downloads, as befits
+// a request that was not answered.
+uint16_t Hub::commit(int p, Port& port, const std::optional<TwinSnapshot>& before) {
+  if (state_ == nullptr) return 0;
+  const std::optional<DsBackup> backup_before = port.ds_backup;
+  const uint64_t generation_before = port.ds_generation;
+  if (port.failure.empty() && !port.ds_download_pending && ds_upload_requested(port.twin))
+    if (auto b = ds_upload(port.twin)) {
+      port.ds_backup = std::move(b);
+      ++port.ds_generation;
+    }
+  const uint64_t seq = ++port.state_seq;
+  try {
+    const auto save_ds = [&] {
+      return port.ds_backup && state_->save_ds(p, *port.ds_backup, port.ds_download_pending, port.ds_generation);
+    };
+    // A download owed (a replacement): the backup file saying so goes
+    // first, so the next start knows the new module; otherwise (an upload,
+    // a download done) the memory goes first, see above.
+    const bool ds_first = port.ds_download_pending;
+    bool wrote = ds_first && save_ds();
+    wrote = state_->save_nvm(p, seq, port.twin.save_nvm()) || wrote;
+    wrote = (!ds_first && save_ds()) || wrote;
+    if (wrote) note_state_result(p, port, "");
+    return 0;
+  } catch (const std::exception& e) {
+    if (!port.state_write_error.empty()) state_failures_.fetch_add(1); // each refused write counts
+    note_state_result(p, port, e.what());
+    if (before) port.twin.restore(*before);
+    port.ds_backup = backup_before;
+    port.ds_generation = generation_before;
+    return kIsduApplicationNotReady;
+  }
+}
+
+bool Hub::persist(int p) {
+  if (state_ == nullptr) return true;
   std::vector<uint8_t> nvm;
   double flange_deg = 0;
+  uint64_t seq = 0, ds_generation = 0;
+  bool owed = false;
+  std::optional<DsBackup> ds;
   with_port(p, [&](Port& port) {
+    seq = ++port.state_seq;
     nvm = port.twin.save_nvm();
     flange_deg = rad_to_deg(port.twin.plant().angle_rad());
-  });
-  std::optional<DsBackup> ds;
-  uint64_t ds_generation = 0;
-  with_port(p, [&](Port& port) {
     ds_generation = port.ds_generation;
+    owed = port.ds_download_pending;
     if (port.ds_backup) ds = port.ds_backup;
   });
-  try {
-    state_->save(p, nvm, flange_deg); // outside the port lock: the clock goes on while the file is written
-    if (ds) state_->save_ds(p, *ds, ds_generation);
+  const bool failing = with_port(p, [](Port& port) { return !port.state_write_error.empty(); });
+  std::string error;
+  bool wrote = false;
+  try { // outside the port lock: the clock goes on while the files are written
+    // The memory first: after a download, "no longer owed" must not be on
+    // disk before the module that got it (a kill between: downloaded again).
+    wrote = state_->save_nvm(p, seq, nvm);
+    if (ds) wrote = state_->save_ds(p, *ds, owed, ds_generation) || wrote;
+    wrote = state_->save_flange(p, flange_deg, failing) || wrote; // after a failure: does the folder take writes again?
   } catch (const std::exception& e) {
-    static std::atomic<bool> told{false}; // a full disk: say it once, keep serving
-    if (!told.exchange(true)) std::cerr << "sreh-twin serve: warning: " << e.what() << "\n";
+    error = e.what();
   }
+  if (wrote || !error.empty()) with_port(p, [&](Port& port) { note_state_result(p, port, error); });
+  return error.empty();
 }
 
 // Counters and a moving flange change without a request: checked every kPersistEvery.
@@ -241,7 +338,7 @@ void Hub::save_loop() {
     lock.unlock();
     for (int p = 1; p <= port_count(); ++p) {
       with_port(p, [](Port& port) { // the device asks the master to back its set up (manual 8)
-        if (port.failure.empty() && port.twin.powered() && ds_upload_requested(port.twin))
+        if (port.failure.empty() && port.twin.powered() && !port.ds_download_pending && ds_upload_requested(port.twin))
           if (auto b = ds_upload(port.twin)) {
             port.ds_backup = std::move(b);
             ++port.ds_generation;

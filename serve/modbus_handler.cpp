@@ -17,10 +17,14 @@ struct Refusal {
 
 std::vector<uint8_t> exception_pdu(uint8_t function, uint8_t code) { return {static_cast<uint8_t>(function | 0x80), code}; }
 
-// Reads [addr, addr + count): refresh every block the range touches.
-std::vector<uint16_t> read_range(Hub& hub, Session& s, EventTrackers& events, int addr, int count) {
+void check_read(Hub& hub, int addr, int count) {
   if (count < 1 || count > kMaxRead) throw Refusal{kIllegalValue};
   if (addr + count > register_count(hub.port_count())) throw Refusal{kIllegalAddress};
+}
+
+// Reads [addr, addr + count): refresh every block the range touches.
+std::vector<uint16_t> read_range(Hub& hub, Session& s, EventTrackers& events, int addr, int count) {
+  check_read(hub, addr, count);
   std::vector<uint16_t> out(static_cast<std::size_t>(count), 0);
   std::vector<uint16_t> block(kPortBlock, 0);
   for (int b = addr / kPortBlock; b <= (addr + count - 1) / kPortBlock; ++b) {
@@ -38,8 +42,8 @@ std::vector<uint16_t> read_range(Hub& hub, Session& s, EventTrackers& events, in
   return out;
 }
 
-// Writes values at addr (one port block); returns the port.
-int write_range(Hub& hub, Session& s, EventTrackers& events, int addr, const std::vector<uint16_t>& values) {
+// Writes values at addr (one port block); an ISDU write is durable or refused.
+void write_range(Hub& hub, Session& s, EventTrackers& events, int addr, const std::vector<uint16_t>& values) {
   const int count = static_cast<int>(values.size());
   const int p = addr / kPortBlock, offset = addr % kPortBlock;
   if (!hub.valid_port(p) || !writable(offset, count)) throw Refusal{kIllegalAddress};
@@ -60,11 +64,12 @@ int write_range(Hub& hub, Session& s, EventTrackers& events, int addr, const std
       return;
     }
     std::copy(values.begin(), values.end(), block.begin() + offset);
-    apply_write(block.data(), offset, count, port, window);
+    const auto before = hub.checkpoint(port); // an ISDU write is saved before it is answered, or undone
+    if (apply_write(block.data(), offset, count, port, window))
+      if (const uint16_t code = hub.commit(p, port, before)) refuse_isdu(window, code);
   });
   if (refused) throw Refusal{kIllegalValue};
   if (isdu) events[i].last_isdu = window; // what a connection without its own window reads
-  return p;
 }
 
 std::vector<uint16_t> registers_at(std::span<const uint8_t> bytes, int count) {
@@ -95,14 +100,14 @@ Outcome handle(Hub& hub, Session& s, EventTrackers& events, std::span<const uint
         break;
       }
       case kWriteSingle: {
-        o.ports_written.insert(write_range(hub, s, events, be16(&pdu[1]), {be16(&pdu[3])}));
+        write_range(hub, s, events, be16(&pdu[1]), {be16(&pdu[3])});
         o.pdu.assign(pdu.begin(), pdu.end()); // echo
         break;
       }
       case kWriteMultiple: {
         const int count = be16(&pdu[3]);
         if (count < 1 || count > kMaxWrite || pdu[5] != 2 * count) throw Refusal{kIllegalValue};
-        o.ports_written.insert(write_range(hub, s, events, be16(&pdu[1]), registers_at(pdu.subspan(6), count)));
+        write_range(hub, s, events, be16(&pdu[1]), registers_at(pdu.subspan(6), count));
         o.pdu.assign(pdu.begin(), pdu.begin() + 5);
         break;
       }
@@ -111,7 +116,8 @@ Outcome handle(Hub& hub, Session& s, EventTrackers& events, std::span<const uint
         if (read_count < 1 || read_count > kMaxRead || write_count < 1 || write_count > kMaxReadWrite ||
             pdu[9] != 2 * write_count)
           throw Refusal{kIllegalValue};
-        o.ports_written.insert(write_range(hub, s, events, be16(&pdu[5]), registers_at(pdu.subspan(10), write_count)));
+        check_read(hub, be16(&pdu[1]), read_count); // both parts checked before either is done (issue 40)
+        write_range(hub, s, events, be16(&pdu[5]), registers_at(pdu.subspan(10), write_count));
         const auto regs = read_range(hub, s, events, be16(&pdu[1]), read_count);
         o.pdu = {fc};
         put_registers(o.pdu, regs);

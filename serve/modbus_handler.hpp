@@ -34,7 +34,6 @@ using EventTrackers = std::vector<PortShared>;
 
 struct Outcome {
   std::vector<uint8_t> pdu;     // the answer PDU (an exception: function | 0x80, code)
-  std::set<int> ports_written;  // ports a write reached (their memory may have changed)
 };
 
 // `pdu` has passed pdu_length_matches().

@@ -35,7 +35,7 @@ void fill_global(uint16_t* regs, int ports, double cycle_s) {
 
 void fill_port(uint16_t* block, Hub::Port& port, const PortRegisters& regs, EventTracker& events) {
   Twin& twin = port.twin;
-  const bool in_valid = port.faults.link_up && twin.device().powered();
+  const bool in_valid = pd_in_valid(port);
   block[kStatus] = static_cast<uint16_t>((in_valid ? 1 : 0) | (port.outputs_valid ? 2 : 0) | (port.failure.empty() ? 0 : 4));
   const PdInFrame in = encode(twin.pd_in());
   put_bytes(block + kPdIn, in, kPdInCount);
@@ -88,6 +88,10 @@ std::string check_write(int offset, const std::vector<uint16_t>& values, const u
   };
   if (overlaps(offset, count, kPdOutValid, 1) && value_at(kPdOutValid) > 1)
     return "PD out valid register takes 0 or 1";
+  // The request registers take only what the map says, also written alone (issue 40).
+  if (overlaps(offset, count, kIsduSubindex, 1) && value_at(kIsduSubindex) > 255) return "ISDU subindex is 0 .. 255";
+  if (overlaps(offset, count, kIsduLength, 1) && value_at(kIsduLength) > 2 * kIsduDataCount)
+    return "ISDU length is 0 .. 232 octets";
   if (overlaps(offset, count, kIsduCommand, 1)) {
     const uint16_t cmd = value_at(kIsduCommand);
     if (cmd != 1 && cmd != 2) return "ISDU command register takes 1 (read) or 2 (write)";
@@ -97,7 +101,7 @@ std::string check_write(int offset, const std::vector<uint16_t>& values, const u
   return "";
 }
 
-void apply_write(uint16_t* block, int offset, int count, Hub::Port& port, PortRegisters& regs) {
+bool apply_write(uint16_t* block, int offset, int count, Hub::Port& port, PortRegisters& regs) {
   if (overlaps(offset, count, kPdOut, kPdOutCount)) {
     const auto bytes = get_bytes(block + kPdOut, kPdOutBytes);
     port.twin.set_pd_out(decode_out(std::span<const uint8_t>(bytes)));
@@ -114,10 +118,10 @@ void apply_write(uint16_t* block, int offset, int count, Hub::Port& port, PortRe
     const auto sub = static_cast<uint8_t>(block[kIsduSubindex]);
     IsduResult r;
     if (block[kIsduCommand] == 1) {
-      r = port.twin.isdu_read(index, sub);
+      r = port_isdu_read(port, index, sub);
     } else {
       const auto data = get_bytes(block + kIsduData, block[kIsduLength]);
-      r = port.twin.isdu_write(index, sub, data);
+      r = port_isdu_write(port, index, sub, data);
     }
     auto& resp = regs.response;
     resp[0] = static_cast<uint16_t>(resp[0] + 1);
@@ -127,7 +131,17 @@ void apply_write(uint16_t* block, int offset, int count, Hub::Port& port, PortRe
     resp[kRespLength - kRespSequence] = static_cast<uint16_t>(len);
     put_bytes(resp.data() + (kRespData - kRespSequence), std::span<const uint8_t>(r.data.data(), len), kIsduDataCount);
     std::copy(resp.begin(), resp.end(), block + kRespSequence);
+    return block[kIsduCommand] == 2;
   }
+  return false;
+}
+
+void refuse_isdu(PortRegisters& regs, uint16_t code) {
+  auto& resp = regs.response;
+  resp[kRespStatus - kRespSequence] = 2;
+  resp[kRespError - kRespSequence] = code;
+  resp[kRespLength - kRespSequence] = 0;
+  std::fill(resp.begin() + (kRespData - kRespSequence), resp.end(), 0);
 }
 
 Json map_json(int ports) {

@@ -79,8 +79,11 @@ bool read_only_request(int offset, const std::vector<uint16_t>& values);
 std::string check_write(int offset, const std::vector<uint16_t>& values, const uint16_t* block);
 // Applies registers written at [offset, offset + count) of the block (already
 // holding the new values) to the twin; runs an ISDU request when the command
-// register was written.
-void apply_write(uint16_t* block, int offset, int count, Hub::Port& port, PortRegisters& regs);
+// register was written. True if that was an ISDU write (to be made durable).
+bool apply_write(uint16_t* block, int offset, int count, Hub::Port& port, PortRegisters& regs);
+// The ISDU write just answered could not be saved (rolled back): the
+// response says refused with `code` (issue 40).
+void refuse_isdu(PortRegisters& regs, uint16_t code);
 
 // `serve --print-modbus-map --json`
 Json map_json(int ports);

@@ -20,6 +20,7 @@
 #include <fmt/format.h>
 
 #include "serve/front_impl.hpp"
+#include "serve/listen_socket.hpp"
 #include "serve/modbus_frame.hpp"
 #include "serve/modbus_handler.hpp"
 
@@ -31,15 +32,11 @@ constexpr auto kFrameDeadline = std::chrono::milliseconds(1000); // a started fr
 constexpr int kFramesPerTurn = 8;         // then the next client gets its turn
 constexpr std::size_t kMaxPendingOut = 64 * 1024; // a client that does not read its answers is dropped
 constexpr int kPollMs = 20;
-
-int fd_port(int fd) {
-  sockaddr_storage addr{};
-  socklen_t len = sizeof addr;
-  if (getsockname(fd, reinterpret_cast<sockaddr*>(&addr), &len) != 0) return -1;
-  if (addr.ss_family == AF_INET) return ntohs(reinterpret_cast<sockaddr_in*>(&addr)->sin_port);
-  if (addr.ss_family == AF_INET6) return ntohs(reinterpret_cast<sockaddr_in6*>(&addr)->sin6_port);
-  return -1;
-}
+// Eviction by progress (issue 40): a connection that completed a request
+// within this window is working and is never evicted; among the others
+// (silent, or never finishing a frame however often it restarts one) the
+// one whose last completed request (or connect) lies furthest back goes.
+constexpr auto kWorkingWindow = std::chrono::seconds(5);
 
 std::string peer_address(int fd) {
   sockaddr_storage addr{};
@@ -53,47 +50,15 @@ std::string peer_address(int fd) {
   return text;
 }
 
-// Bound and listening, SO_REUSEADDR only (no SO_REUSEPORT: a second server
-// on the same port must fail, issue 27).
-int listen_on(const std::string& host, int port) {
-  addrinfo hints{};
-  hints.ai_family = AF_UNSPEC;
-  hints.ai_socktype = SOCK_STREAM;
-  hints.ai_flags = AI_PASSIVE | AI_NUMERICSERV;
-  addrinfo* res = nullptr;
-  const std::string service = std::to_string(port);
-  if (const int rc = getaddrinfo(host.c_str(), service.c_str(), &hints, &res); rc != 0)
-    throw std::runtime_error(fmt::format("modbus: cannot listen on {}:{}: {}", host, port, gai_strerror(rc)));
-  int err = 0;
-  int fd = -1;
-  for (addrinfo* a = res; a != nullptr && fd < 0; a = a->ai_next) {
-    fd = socket(a->ai_family, a->ai_socktype | SOCK_CLOEXEC | SOCK_NONBLOCK, a->ai_protocol);
-    if (fd < 0) {
-      err = errno;
-      continue;
-    }
-    const int yes = 1;
-    setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes); // restart while old connections linger in TIME_WAIT
-    if (bind(fd, a->ai_addr, a->ai_addrlen) != 0 || listen(fd, 64) != 0) {
-      err = errno;
-      close(fd);
-      fd = -1;
-    }
-  }
-  freeaddrinfo(res);
-  if (fd < 0)
-    throw std::runtime_error(fmt::format("modbus: cannot listen on {}:{}: {}", host, port,
-                                         err == EADDRINUSE ? "address in use" : std::strerror(err)));
-  return fd;
-}
-
 struct Client {
-  Client(int fd_, int ports) : fd(fd_), session(ports), last_activity(Clock::now()) {}
+  Client(int fd_, int ports) : fd(fd_), session(ports), last_activity(Clock::now()), progress(last_activity) {}
   int fd;
   modbus::Session session;
   std::vector<uint8_t> in, out;
   Clock::time_point last_activity;
   Clock::time_point frame_start; // when the first octet of the unfinished frame came
+  Clock::time_point progress;    // the last completed request (connect until the first)
+  bool completed_any = false;
   bool eof = false;      // the client closed its side: answer what is in, then close
   bool closing = false;  // close now, without answering more
 };
@@ -111,7 +76,7 @@ struct Front<ModbusOptions>::Impl {
   std::thread thread;
 
   Impl(Hub& h, const ModbusOptions& o) : hub(h), options(o), events(static_cast<std::size_t>(h.port_count())) {
-    listen_fd = listen_on(o.host, o.port);
+    listen_fd = listen_tcp(o.host, o.port, "modbus", 64);
   }
 
   ~Impl() {
@@ -127,7 +92,7 @@ struct Front<ModbusOptions>::Impl {
       const int yes = 1;
       setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &yes, sizeof yes);
       if (static_cast<int>(clients.size()) >= options.max_clients && !evict_one()) {
-        close(fd); // every slot is in the middle of a frame: the newest waits its turn
+        close(fd); // every connection is working: the newest waits its turn
         continue;
       }
       Client& c = clients.emplace_back(fd, hub.port_count());
@@ -136,15 +101,18 @@ struct Front<ModbusOptions>::Impl {
     }
   }
 
-  // The limit is reached: the connection idle the longest makes room.
+  // The limit is reached: the connection that has not completed a request
+  // for the longest makes room, unless every one is working (kWorkingWindow).
   bool evict_one() {
-    auto oldest = clients.end();
-    for (auto it = clients.begin(); it != clients.end(); ++it)
-      if (it->in.empty() && it->out.empty() && (oldest == clients.end() || it->last_activity < oldest->last_activity))
-        oldest = it;
-    if (oldest == clients.end()) return false;
-    close(oldest->fd);
-    clients.erase(oldest);
+    const auto now = Clock::now();
+    auto victim = clients.end();
+    for (auto it = clients.begin(); it != clients.end(); ++it) {
+      if (it->completed_any && now - it->progress < kWorkingWindow) continue;
+      if (victim == clients.end() || it->progress < victim->progress) victim = it;
+    }
+    if (victim == clients.end()) return false;
+    close(victim->fd);
+    clients.erase(victim);
     return true;
   }
 
@@ -180,7 +148,8 @@ struct Front<ModbusOptions>::Impl {
         return;
       }
       const modbus::Outcome o = modbus::handle(hub, c.session, events, r.pdu);
-      for (int p : o.ports_written) hub.persist(p); // before the answer: an answered write survives a kill
+      c.progress = Clock::now();
+      c.completed_any = true;
       const auto adu = modbus::answer(r, o.pdu);
       c.out.insert(c.out.end(), adu.begin(), adu.end());
       c.in.erase(c.in.begin(), c.in.begin() + static_cast<std::ptrdiff_t>(f.size));

@@ -4,7 +4,8 @@
 // register map in modbus_handler.hpp / modbus_map.hpp.
 //  - a started frame must be complete within kFrameDeadline, else the
 //    connection closes; a client silent for idle_timeout_s is disconnected;
-//  - at most kMaxClients: one more evicts the longest-idle connection;
+//  - at most max_clients: one more evicts the connection without a completed
+//    request for the longest, never one that completed one within 5 s;
 //  - a bad MBAP header (protocol id, length) or a PDU whose length does not
 //    match its function closes the connection without an answer.
 #pragma once

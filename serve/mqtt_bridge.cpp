@@ -7,6 +7,7 @@
 #include <condition_variable>
 #include <cstring>
 #include <mutex>
+#include <map>
 #include <regex>
 #include <set>
 #include <thread>
@@ -21,6 +22,11 @@
 namespace sreh::serve {
 
 namespace {
+// Signed commands carry "ts" (Unix time in ms); serve takes one only within
+// this much of its own clock, and each signature once (issue 40: a captured
+// command cannot be replayed). The clocks of the PLC and serve must agree
+// to well within it (NTP).
+constexpr int64_t kReplayWindow_ms = 30000;
 constexpr int kMaxPorts = 16;  // serve's limit: retained topics of ports above --ports are cleared at start
 constexpr auto kFlushTimeout = std::chrono::seconds(2);
 
@@ -30,6 +36,7 @@ constexpr auto kFlushTimeout = std::chrono::seconds(2);
 struct WillClient {
   mosquitto* m = nullptr;
   std::string topic;
+  const std::atomic<bool>* running = nullptr;
 };
 } // namespace
 
@@ -47,6 +54,8 @@ struct Front<MqttOptions>::Impl {
   std::thread publisher;
   std::vector<std::string> last_published;
   std::vector<uint64_t> event_cursor;
+  std::mutex seen_mutex;
+  std::map<std::string, int64_t> seen_signatures; // signature -> its ts, forgotten once outside the window
 
   Impl(Hub& h, const MqttOptions& o)
       : hub(h), options(o), last_published(static_cast<std::size_t>(h.port_count())),
@@ -69,7 +78,11 @@ struct Front<MqttOptions>::Impl {
       impl->flight_cv.notify_all();
     });
     mosquitto_connect_callback_set(client, [](mosquitto* m, void* self, int rc) {
-      if (rc == 0) static_cast<Impl*>(self)->subscribe(m);
+      if (rc != 0) return;
+      auto* impl = static_cast<Impl*>(self);
+      impl->subscribe(m);
+      // Every (re)connect: the broker may have published the last will meanwhile (issue 40).
+      if (impl->running.load()) impl->publish(impl->options.prefix + "/availability", "online", true);
     });
     mosquitto_message_callback_set(client, [](mosquitto*, void* self, const mosquitto_message* msg) {
       static_cast<Impl*>(self)->on_message(msg);
@@ -100,12 +113,19 @@ struct Front<MqttOptions>::Impl {
 
   // The per-port will connections (see WillClient); "online" once connected.
   void connect_wills() {
+    wills.reserve(static_cast<std::size_t>(hub.port_count())); // stable addresses: each is its client's user data
     for (int p = 1; p <= hub.port_count(); ++p) {
       WillClient w;
       w.topic = topic(p, "availability");
+      w.running = &running;
       w.m = mosquitto_new(nullptr, true, nullptr);
       if (w.m == nullptr) throw std::runtime_error("mqtt: cannot create a client");
       mosquitto_will_set(w.m, w.topic.c_str(), 7, "offline", 1, true);
+      mosquitto_connect_callback_set(w.m, [](mosquitto* m, void* self, int rc) { // every reconnect: online again
+        const auto* will = static_cast<const WillClient*>(self);
+        if (rc == 0 && will != nullptr && will->running->load())
+          mosquitto_publish(m, nullptr, will->topic.c_str(), 6, "online", 1, true);
+      });
       const int rc = mosquitto_connect(w.m, options.host.c_str(), options.port, 10);
       if (rc != MOSQ_ERR_SUCCESS) {
         mosquitto_destroy(w.m);
@@ -113,6 +133,7 @@ struct Front<MqttOptions>::Impl {
                                              options.port, mosquitto_strerror(rc)));
       }
       wills.push_back(w);
+      mosquitto_user_data_set(wills.back().m, &wills.back());
     }
   }
 
@@ -159,6 +180,9 @@ struct Front<MqttOptions>::Impl {
     if (!std::regex_match(t, m, pattern)) return;
     const int p = std::stoi(m[1].str());
     const std::string what = m[2].str();
+    // A retained command would run again at every start and override what
+    // the PLC did since: refused (issue 40).
+    if (msg->retain) return refuse(t, "retained command refused (a command runs once: publish it without the retain flag)");
     if (!hub.valid_port(p)) return refuse(t, fmt::format("no port {} (ports 1 .. {})", p, hub.port_count()));
     Json body;
     Json id = nullptr;
@@ -168,14 +192,20 @@ struct Front<MqttOptions>::Impl {
       if (!options.token.empty()) authorise(t, msg, body);
       body.erase("token");
       body.erase("auth");
+      body.erase("ts");
       if (what == "processdata/out/set") {
         hub.with_port(p, [&](Hub::Port& port) { apply_pd_out(port, body); });
       } else if (what == "faults/set") {
-        hub.with_port(p, [&](Hub::Port& port) { apply_faults(port, body); });
+        hub.durable(p, [&](Hub::Port& port) { apply_faults(port, body); });
       } else {
         isdu_request(p, body, id);
       }
-      hub.persist(p); // an ISDU write may have changed the memory image
+    } catch (const StateWriteFailed& e) {
+      if (what == "isdu/request")
+        publish(topic(p, "isdu/response"),
+                Json{{"id", id}, {"ok", false}, {"iolink_error", iolink_error_text(e.code)}, {"message", e.what()}}.dump());
+      else
+        refuse(t, e.what());
     } catch (const RequestError& e) {
       if (what == "isdu/request") publish(topic(p, "isdu/response"), Json{{"id", id}, {"ok", false}, {"error", e.what()}}.dump());
       refuse(t, e.what());
@@ -186,15 +216,32 @@ struct Front<MqttOptions>::Impl {
   }
 
   // With a token: "auth" (signed, the token never on the wire) or "token".
-  void authorise(const std::string& t, const mosquitto_message* msg, const Json& body) const {
+  void authorise(const std::string& t, const mosquitto_message* msg, const Json& body) {
     if (body.contains("auth")) {
       const std::string payload(static_cast<const char*>(msg->payload), static_cast<std::size_t>(msg->payloadlen));
       if (!body["auth"].is_string() || !command_signed(options.token, t, payload, body["auth"].get<std::string>()))
         throw RequestError(403, "wrong signature (auth)");
+      check_fresh(body);
       return;
     }
     if (!body.contains("token") || !body["token"].is_string() || body["token"].get<std::string>() != options.token)
       throw RequestError(403, "missing or wrong token (or auth)");
+  }
+
+  // A signed command is taken once, and only near its time stamp "ts".
+  void check_fresh(const Json& body) {
+    if (!body.contains("ts") || !body["ts"].is_number_integer())
+      throw RequestError(403, "a signed command needs \"ts\": Unix time in ms (replay protection)");
+    const int64_t ts = body["ts"].get<int64_t>();
+    const int64_t now = std::chrono::duration_cast<std::chrono::milliseconds>(
+                            std::chrono::system_clock::now().time_since_epoch()).count();
+    if (ts < now - kReplayWindow_ms || ts > now + kReplayWindow_ms)
+      throw RequestError(403, fmt::format("\"ts\" is {} ms from serve's clock (at most {} ms: replayed, or the clocks "
+                                          "disagree)", ts - now, kReplayWindow_ms));
+    std::lock_guard lock(seen_mutex);
+    std::erase_if(seen_signatures, [&](const auto& kv) { return kv.second < now - kReplayWindow_ms; });
+    if (!seen_signatures.emplace(body["auth"].get<std::string>(), ts).second)
+      throw RequestError(403, "this signed command was taken already (replayed)");
   }
 
   void isdu_request(int p, Json body, const Json& id) {
@@ -211,13 +258,11 @@ struct Front<MqttOptions>::Impl {
     body.erase("op");
     body.erase("index");
     body.erase("subindex");
-    Json answer = hub.with_port(p, [&](Hub::Port& port) {
-      if (op == "read") {
-        if (!body.empty()) throw RequestError(400, "isdu/request: a read takes only id, op, index, subindex");
-        return read_parameter(port, index, sub);
-      }
-      return write_parameter(port, index, sub, body);
-    });
+    Json answer = op == "read" ? hub.with_port(p, [&](Hub::Port& port) {
+      if (!body.empty()) throw RequestError(400, "isdu/request: a read takes only id, op, index, subindex");
+      return read_parameter(port, index, sub);
+    })
+                               : hub.durable(p, [&](Hub::Port& port) { return write_parameter(port, index, sub, body); });
     Json out{{"id", id}, {"ok", true}};
     for (auto& [k, v] : answer.items()) out[k] = v;
     publish(topic(p, "isdu/response"), out.dump());

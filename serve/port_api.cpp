@@ -118,6 +118,22 @@ int http_status_for(uint16_t code) {
   return 409;
 }
 
+bool pd_in_valid(Hub::Port& port) {
+  return port.faults.link_up && port.twin.powered() && port.twin.iolink_led() == IoLinkLedMode::Operate;
+}
+
+Json fault_injection_json(const Hub::Port& port) {
+  const FaultState& f = port.faults;
+  const FaultState normal;
+  Json list = Json::array();
+  if (!f.link_up) list.push_back("link down");
+  if (f.flange_blocked) list.push_back("flange blocked");
+  if (f.external_torque_Nm != normal.external_torque_Nm) list.push_back(fmt::format("external torque {:g} N·m", f.external_torque_Nm));
+  if (f.supply_V != port.nominal_supply_V) list.push_back(fmt::format("supply {:g} V", f.supply_V));
+  if (f.ambient_C != port.nominal_ambient_C) list.push_back(fmt::format("ambient {:g} °C", f.ambient_C));
+  return list;
+}
+
 Json port_summary(int p, Hub::Port& port) {
   const Telemetry tel = port.twin.telemetry();
   const ProcessDataIn in = port.twin.pd_in();
@@ -127,10 +143,12 @@ Json port_summary(int p, Hub::Port& port) {
               {"state", state_name(tel.state)},
               {"led", led_name(tel.led)},
               {"position_deg", wire_counts_to_deg(in.position_raw)},
-              {"pd_in_valid", port.faults.link_up && port.twin.device().powered()},
+              {"pd_in_valid", pd_in_valid(port)},
               {"pd_out_valid", port.outputs_valid},
               {"time_s", port.twin.time_s()},
-              {"failure", port.failure.empty() ? Json(nullptr) : Json(port.failure)}};
+              {"failure", port.failure.empty() ? Json(nullptr) : Json(port.failure)},
+              {"state_write_error", port.state_write_error.empty() ? Json(nullptr) : Json(port.state_write_error)},
+              {"fault_injection", fault_injection_json(port)}};
 }
 
 namespace {
@@ -153,7 +171,7 @@ Json processdata_json(Hub::Port& port) {
   const PdInFrame in_frame = encode(port.twin.pd_in());
   const PdOutFrame out_frame = encode(port.twin.pd_out());
   Json j;
-  j["in"] = Json{{"raw", hex_bytes(in_frame)}, {"valid", port.faults.link_up && port.twin.device().powered()}};
+  j["in"] = Json{{"raw", hex_bytes(in_frame)}, {"valid", pd_in_valid(port)}};
   add_fields(j["in"], in_frame, kPdInFields);
   j["in"]["state"] = state_name(port.twin.telemetry().state);
   j["out"] = Json{{"raw", hex_bytes(out_frame)}, {"valid", port.outputs_valid}};
@@ -265,15 +283,25 @@ std::vector<uint8_t> parameter_bytes(uint16_t index, uint8_t subindex, const Jso
   return detail::encode_untyped(get_integer(v, what + ".value", std::numeric_limits<int32_t>::min(), 0xFFFFFFFFLL));
 }
 
+IsduResult port_isdu_read(Hub::Port& port, uint16_t index, uint8_t subindex) {
+  if (port.ds_download_pending) return IsduResult{kIsduServiceTempUnavailable, {}};
+  return port.twin.isdu_read(index, subindex);
+}
+
+IsduResult port_isdu_write(Hub::Port& port, uint16_t index, uint8_t subindex, std::span<const uint8_t> data) {
+  if (port.ds_download_pending) return IsduResult{kIsduServiceTempUnavailable, {}};
+  return port.twin.isdu_write(index, subindex, data);
+}
+
 Json read_parameter(Hub::Port& port, uint16_t index, uint8_t subindex) {
-  const IsduResult r = port.twin.isdu_read(index, subindex);
+  const IsduResult r = port_isdu_read(port, index, subindex);
   if (!r.ok()) throw IsduRefused(r.error, iolink_error_name(r.error));
   return parameter_json(index, subindex, r.data);
 }
 
 Json write_parameter(Hub::Port& port, uint16_t index, uint8_t subindex, const Json& body) {
   const auto bytes = parameter_bytes(index, subindex, body);
-  const IsduResult r = port.twin.isdu_write(index, subindex, bytes);
+  const IsduResult r = port_isdu_write(port, index, subindex, bytes);
   if (!r.ok()) throw IsduRefused(r.error, iolink_error_name(r.error));
   Json j{{"index", index}, {"subindex", subindex}, {"written", hex_bytes(bytes)}};
   return j;
@@ -324,6 +352,7 @@ Json apply_faults(Hub::Port& port, const Json& body) {
     t.replace_device();
     ++f.device_replacements;
     port.ds_download_pending = true;
+    ++port.ds_generation; // on disk before the answer: owed also after a kill
   }
   port.faults = f;
   return faults_json(port);

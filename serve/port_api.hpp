@@ -36,6 +36,13 @@ std::string iolink_error_name(uint16_t code);                    // "Parameter v
 std::string iolink_error_text(uint16_t code);                    // "0x8030"
 int http_status_for(uint16_t iolink_code);                       // 404, 409 or 422
 
+// Process data in is valid once the module has started up and exchanged
+// since its last power-on (OPERATE, A-LINK-3), with the link up: never the
+// stale frame of before a restart (issue 40).
+bool pd_in_valid(Hub::Port& port);
+// The faults injected now, in words ("link down", "supply 17 V", ...).
+Json fault_injection_json(const Hub::Port& port);
+// Also "state_write_error": null or why the last state-folder write failed.
 Json port_summary(int p, Hub::Port& port);
 Json processdata_json(Hub::Port& port);
 // PUT processdata/out: {"raw": "<12 hex>"} or decoded fields (left-out
@@ -48,6 +55,12 @@ Json parameter_json(uint16_t index, uint8_t subindex, std::span<const uint8_t> d
 // or {"raw": "<hex>"}. Throws RequestError if the value does not fit its
 // wire type (the parameter's own range is the device's to check).
 std::vector<uint8_t> parameter_bytes(uint16_t index, uint8_t subindex, const Json& body);
+// The PLC's ISDU access to a port (all fronts): 0x8020 (service temporarily
+// not available) while the master still owes a replaced module its Data
+// Storage restore, as a master whose port is not in OPERATE yet; else the
+// device's own answer.
+IsduResult port_isdu_read(Hub::Port& port, uint16_t index, uint8_t subindex);
+IsduResult port_isdu_write(Hub::Port& port, uint16_t index, uint8_t subindex, std::span<const uint8_t> data);
 // Throws IsduRefused with the device's code; the device stays unchanged.
 Json read_parameter(Hub::Port& port, uint16_t index, uint8_t subindex);
 Json write_parameter(Hub::Port& port, uint16_t index, uint8_t subindex, const Json& body);

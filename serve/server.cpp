@@ -180,9 +180,16 @@ void bring_up_ports(Hub& hub, int ports, const std::vector<PortState>& kept, con
   }
   // Data Storage at the master (manual 8): the backup kept, or a first upload.
   for (int p = 1; p <= ports; ++p)
-    if (const auto& ds = kept[static_cast<std::size_t>(p - 1)].ds)
-      hub.with_port(p, [&](Hub::Port& port) { port.ds_backup = *ds; });
+    hub.with_port(p, [&](Hub::Port& port) {
+      const PortState& k = kept[static_cast<std::size_t>(p - 1)];
+      port.ds_backup = k.ds;
+      port.ds_download_pending = k.ds && k.ds_download_owed;
+      port.fresh_module = !k.nvm; // matters only beside a backup, i.e. with --state-dir
+    });
   hub.ds_startup();
+  // The module's start-up (manual 4.1, A-LINK-3) and a Data Storage download
+  // owed, before any client can ask: the first answer is already right (issue 40).
+  hub.start_up_ports();
 }
 
 // The network fronts (serve/front.hpp), bound but not started.
@@ -300,6 +307,10 @@ int run_serve(const ServeOptions& o, std::ostream& out, std::ostream& err) {
                      sig ? fmt::format(" on signal {}", *sig) : "", s.cycles, s.sim_time_s, s.wall_time_s,
                      s.jitter_p50_us, s.jitter_p99_us, s.jitter_max_us, s.late_cycles);
   if (!o.save_nvm_dir.empty()) save_nvm_images(*hub, o.ports, o.save_nvm_dir, err);
+  if (state && !hub->state_saved()) {
+    err << "sreh-twin serve: the state folder " << o.state_dir << " did not take everything at stop (see above)\n";
+    return kExitStateNotSaved;
+  }
   return 0;
 }
 

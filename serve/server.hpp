@@ -41,6 +41,8 @@ struct ServeOptions {
 
 // Throws std::invalid_argument (bad option values, unreadable files: exit 2);
 // returns the exit code.
+// Exit 4: stopped, but the last write of the state folder failed (issue 40).
+inline constexpr int kExitStateNotSaved = 4;
 int run_serve(const ServeOptions& options, std::ostream& out, std::ostream& err);
 
 } // namespace sreh::serve

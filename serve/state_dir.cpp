@@ -8,7 +8,10 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <atomic>
+#include <cstdlib>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <stdexcept>
 
@@ -16,7 +19,6 @@
 #include <nlohmann/json.hpp>
 
 #include "device_logic/device.hpp"
-#include "io/atomic_file.hpp"
 #include "twin/model_card.hpp"
 
 namespace sreh::serve {
@@ -32,6 +34,58 @@ std::optional<std::string> read_if_exists(const std::string& path) {
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
+}
+
+// Tests only (docs/serve.md, "Tests"): while the file this variable names
+// exists, every state write fails as on a full disk (ENOSPC). Lets a test
+// that cannot mount a small tmpfs check "durable or refused".
+int injected_write_error() {
+  const char* flag = std::getenv("SREH_SERVE_TEST_FAIL_STATE_WRITES_WHILE");
+  return flag != nullptr && *flag != '\0' && ::access(flag, F_OK) == 0 ? ENOSPC : 0;
+}
+
+// Writes `bytes` to `path` durably: a unique temporary in the same folder
+// (O_EXCL, O_NOFOLLOW), written, fsync'd, renamed onto `path`, then the
+// folder fsync'd so the rename itself survives a power loss. Throws
+// std::runtime_error naming `path` and the reason; the temporary is removed.
+void write_durably(const std::string& path, const std::string& bytes) {
+  static std::atomic<unsigned> counter{0};
+  const fs::path target(path);
+  const std::string temp = (target.parent_path() / fmt::format(".{}.{}-{}.tmp", target.filename().string(), ::getpid(),
+                                                               counter.fetch_add(1)))
+                               .string();
+  const auto fail = [&](int err) {
+    throw std::runtime_error(fmt::format("cannot write '{}': {}", path, std::strerror(err)));
+  };
+  if (const int err = injected_write_error()) fail(err);
+  const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0644);
+  if (fd < 0) fail(errno);
+  int err = 0;
+  for (std::size_t done = 0; done < bytes.size() && err == 0;) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n > 0) done += static_cast<std::size_t>(n);
+    else if (n < 0 && errno != EINTR) err = errno;
+  }
+  if (err == 0 && ::fsync(fd) != 0) err = errno;
+  if (::close(fd) != 0 && err == 0) err = errno;
+  if (err == 0 && ::rename(temp.c_str(), path.c_str()) != 0) err = errno;
+  if (err != 0) {
+    ::unlink(temp.c_str());
+    fail(err);
+  }
+  const int dir = ::open(target.parent_path().c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dir < 0) fail(errno);
+  if (::fsync(dir) != 0) err = errno;
+  ::close(dir);
+  if (err != 0) fail(err);
+}
+
+// Temporaries of a run killed mid-write: `.port<P>.<file>.<pid>-<n>.tmp`.
+void remove_stale_temporaries(const std::string& dir) {
+  static const std::regex stale(R"(^\.port\d+\.(nvm|flange\.json|ds\.json)\..*\.tmp$)");
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir, ec))
+    if (std::regex_match(e.path().filename().string(), stale)) fs::remove(e.path(), ec);
 }
 
 } // namespace
@@ -56,6 +110,7 @@ StateDir::StateDir(std::string dir, int ports) : dir_(std::move(dir)) {
     throw std::invalid_argument(fmt::format("--state-dir '{}': in use by another sreh-twin serve", dir_));
   }
   for (int p = 0; p < ports; ++p) saved_.push_back(std::make_unique<Saved>());
+  remove_stale_temporaries(dir_); // ours alone now (the lock is held)
 }
 
 StateDir::~StateDir() {
@@ -91,7 +146,7 @@ PortState StateDir::load(int p) {
   }
   if (const auto text = read_if_exists(ds_path(p))) {
     try {
-      s.ds = ds_backup_from_json(*text);
+      s.ds = ds_backup_from_json(*text, &s.ds_download_owed);
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument(fmt::format("{}: corrupt: {}; left as it is", ds_path(p), e.what()));
     }
@@ -103,29 +158,33 @@ PortState StateDir::load(int p) {
   return s;
 }
 
-void StateDir::save(int p, const std::vector<uint8_t>& nvm, double flange_angle_deg) {
+bool StateDir::save_nvm(int p, uint64_t seq, const std::vector<uint8_t>& nvm) {
   Saved& saved = *saved_.at(static_cast<std::size_t>(p - 1));
   std::lock_guard lock(saved.mutex); // one writer per port file at a time
-  if (!saved.nvm || *saved.nvm != nvm) {
-    io::write_file_atomic(nvm_path(p), [&](std::ostream& f) {
-      f.write(reinterpret_cast<const char*>(nvm.data()), static_cast<std::streamsize>(nvm.size()));
-    });
-    saved.nvm = nvm;
-  }
-  if (!saved.flange_angle_deg || std::abs(*saved.flange_angle_deg - flange_angle_deg) >= kFlangeResolution_deg) {
-    io::write_file_atomic(flange_path(p), [&](std::ostream& f) {
-      f << nlohmann::json{{"flange_angle_deg", flange_angle_deg}}.dump() << "\n";
-    });
-    saved.flange_angle_deg = flange_angle_deg;
-  }
+  if (seq < saved.seq || (saved.nvm && *saved.nvm == nvm)) return false; // a newer image is on disk already, or this one
+  write_durably(nvm_path(p), std::string(nvm.begin(), nvm.end()));
+  saved.nvm = nvm;
+  saved.seq = seq;
+  return true;
 }
 
-void StateDir::save_ds(int p, const DsBackup& backup, uint64_t generation) {
+bool StateDir::save_flange(int p, double flange_angle_deg, bool force) {
   Saved& saved = *saved_.at(static_cast<std::size_t>(p - 1));
   std::lock_guard lock(saved.mutex);
-  if (saved.ds_generation == generation) return;
-  io::write_file_atomic(ds_path(p), [&](std::ostream& f) { f << ds_backup_json(backup); });
+  if (!force && saved.flange_angle_deg && std::abs(*saved.flange_angle_deg - flange_angle_deg) < kFlangeResolution_deg)
+    return false;
+  write_durably(flange_path(p), nlohmann::json{{"flange_angle_deg", flange_angle_deg}}.dump() + "\n");
+  saved.flange_angle_deg = flange_angle_deg;
+  return true;
+}
+
+bool StateDir::save_ds(int p, const DsBackup& backup, bool download_owed, uint64_t generation) {
+  Saved& saved = *saved_.at(static_cast<std::size_t>(p - 1));
+  std::lock_guard lock(saved.mutex);
+  if (generation <= saved.ds_generation) return false;
+  write_durably(ds_path(p), ds_backup_json(backup, download_owed));
   saved.ds_generation = generation;
+  return true;
 }
 
 } // namespace sreh::serve

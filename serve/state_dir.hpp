@@ -9,7 +9,9 @@
 //                            power-on (manual 4.1);
 //   DIR/port<P>.ds.json      the master's Data Storage backup of the port
 //                            (scenarios/data_storage_master.hpp, manual 8).
-// Each is written atomically (io/atomic_file) when it changes; a missing file
+// Each is written durably when it changes (a temporary, fsync, rename, fsync of
+// the folder: on disk, also through a power loss, when save() returns);
+// temporaries a killed run left behind are removed at start; a missing file
 // is a factory-new module / a flange at 0; a corrupt one is bad input naming
 // the file and is never overwritten. DIR/.lock (flock) keeps a second serve out.
 #pragma once
@@ -28,6 +30,7 @@ struct PortState {
   std::optional<std::vector<uint8_t>> nvm;  // none: factory-new
   std::optional<double> flange_angle_deg;   // none: the flange at 0
   std::optional<DsBackup> ds;               // none: the master holds no backup yet
+  bool ds_download_owed = false;            // a replaced module still waits for the backup
 };
 
 class StateDir {
@@ -40,12 +43,17 @@ class StateDir {
 
   // Reads port p's files; throws std::invalid_argument naming a corrupt one.
   PortState load(int p);
-  // Writes what differs from the last load/save (atomic; thread-safe per port).
-  // Throws std::runtime_error naming the file if it cannot be written.
-  void save(int p, const std::vector<uint8_t>& nvm, double flange_angle_deg);
+  // Write what differs from the last load/save (durable; thread-safe per
+  // port). `seq` orders the callers of save_nvm: an image older than the one
+  // written last is skipped. Throw std::runtime_error naming the file and the
+  // reason (ENOSPC, EIO, EROFS, ...) if it cannot be written (the old file
+  // stays). True if a file was written. save_flange(..., force): written even
+  // if unchanged (whether the folder takes writes again after a failure).
+  bool save_nvm(int p, uint64_t seq, const std::vector<uint8_t>& nvm);
+  bool save_flange(int p, double flange_angle_deg, bool force = false);
 
-  // The master's backup, written when `generation` differs from the last one written.
-  void save_ds(int p, const DsBackup& backup, uint64_t generation);
+  // The master's backup, written when `generation` is newer than the last one written.
+  bool save_ds(int p, const DsBackup& backup, bool download_owed, uint64_t generation);
 
   std::string nvm_path(int p) const;
   std::string flange_path(int p) const;
@@ -60,6 +68,7 @@ class StateDir {
     std::optional<std::vector<uint8_t>> nvm;
     std::optional<double> flange_angle_deg;
     uint64_t ds_generation = 0;
+    uint64_t seq = 0;
   };
   std::string dir_;
   int lock_fd_ = -1;

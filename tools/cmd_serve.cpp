@@ -21,7 +21,8 @@ namespace {
 // serve's own exit codes (docs/serve.md says the same; a CTest compares them).
 constexpr const char* kServeExitCodes =
     "Exit codes: 0 stopped cleanly (SIGINT, SIGTERM or --duration-s), 2 bad input (an option, a file, a corrupt "
-    "state file, an address in use; one line on stderr, nothing bound), 3 internal error (a bug: please report).";
+    "state file, an address in use; one line on stderr, nothing bound), 3 internal error (a bug: please report), "
+    "4 stopped, but the state folder did not take everything (stderr names what was not saved).";
 
 struct ServeArgs {
   serve::ServeOptions options;

@@ -133,3 +133,96 @@ def pd_out_registers(target_raw=0, parameter_set=0, motor_on=0, move=0, stop=0, 
     t = target_raw & 0xFFFFFFFF
     bits = motor_on | (move << 1) | (stop << 2) | (reset_error << 3)
     return [t >> 16, t & 0xFFFF, (parameter_set << 8) | bits]
+
+
+# ---- issue 40: fast clients for the fault tests ----
+import http.client  # noqa: E402
+import socket  # noqa: E402
+import struct  # noqa: E402
+
+
+def http_call(host_port, method, path, body=None, headers=None, timeout=5):
+    """One request on a fresh connection (http.client); returns (status, parsed JSON or text)."""
+    host, port = host_port.rsplit(":", 1)
+    c = http.client.HTTPConnection(host, int(port), timeout=timeout)
+    try:
+        data = None if body is None else json.dumps(body)
+        h = dict(headers or {})
+        if data is not None:
+            h["Content-Type"] = "application/json"
+        c.request(method, path, body=data, headers=h)
+        r = c.getresponse()
+        text = r.read().decode()
+        try:
+            return r.status, json.loads(text)
+        except json.JSONDecodeError:
+            return r.status, text
+    finally:
+        c.close()
+
+
+def param(s, index, sub):
+    code, j = http_call(s.ready["http"], "GET", "/v1/ports/1/parameters/%d/%d" % (index, sub))
+    check(code == 200, "GET parameter %d.%d -> %d %s" % (index, sub, code, j))
+    return j["value"]
+
+
+def store_block(s, writes, port=1):
+    """A parameterisation as IO-Link wants it to survive a replacement: ParamDownloadStart (3), the
+    writes, ParamDownloadStore (5). Returns the status of the last answer (200: acknowledged)."""
+    base = "/v1/ports/%d/parameters/" % port
+    for path, body in [("2/0", {"value": 3})] + [("%d/%d" % (i, sb), {"value": v}) for i, sb, v in writes] + \
+            [("2/0", {"value": 5})]:
+        code, j = http_call(s.ready["http"], "PUT", base + path, body)
+        if code != 200:
+            return code, j
+    return 200, j
+
+
+class ModbusRaw:
+    """A bare Modbus TCP client (one socket, FC 3/6/16/23): exceptions come back as ("exc", code)."""
+
+    def __init__(self, port, timeout=5):
+        self.sock = socket.create_connection(("127.0.0.1", port), timeout=timeout)
+        self.sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
+        self.tid = 0
+
+    def close(self):
+        self.sock.close()
+
+    def call(self, pdu):
+        self.tid = (self.tid + 1) & 0xFFFF
+        self.sock.sendall(struct.pack(">HHHB", self.tid, 0, len(pdu) + 1, 1) + pdu)
+        head = self._recv(7)
+        tid, _, length, _ = struct.unpack(">HHHB", head)
+        body = self._recv(length - 1)
+        check(tid == self.tid, "modbus: transaction %d answered as %d" % (self.tid, tid))
+        if body[0] & 0x80:
+            return ("exc", body[1])
+        return body
+
+    def _recv(self, n):
+        out = b""
+        while len(out) < n:
+            chunk = self.sock.recv(n - len(out))
+            if not chunk:
+                raise ConnectionError("modbus: connection closed")
+            out += chunk
+        return out
+
+    def read(self, reg, count):
+        r = self.call(struct.pack(">BHH", 3, reg, count))
+        return r if isinstance(r, tuple) else list(struct.unpack(">%dH" % count, r[2:]))
+
+    def write1(self, reg, value):
+        r = self.call(struct.pack(">BHH", 6, reg, value))
+        return r if isinstance(r, tuple) else "ok"
+
+    def write(self, reg, values):
+        r = self.call(struct.pack(">BHHB", 16, reg, len(values), 2 * len(values)) + struct.pack(">%dH" % len(values), *values))
+        return r if isinstance(r, tuple) else "ok"
+
+    def read_write(self, read_reg, read_count, write_reg, values):
+        r = self.call(struct.pack(">BHHHHB", 23, read_reg, read_count, write_reg, len(values), 2 * len(values)) +
+                      struct.pack(">%dH" % len(values), *values))
+        return r if isinstance(r, tuple) else list(struct.unpack(">%dH" % read_count, r[2:]))

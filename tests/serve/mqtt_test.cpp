@@ -21,6 +21,7 @@
 #include "serve/mqtt_auth.hpp"
 #include "serve/mqtt_bridge.hpp"
 #include "serve/port_api.hpp"
+#include "serve/state_dir.hpp"
 
 extern char** environ;
 
@@ -60,11 +61,12 @@ struct Broker {
   int port = 0;
   fs::path dir;
 
-  bool start() {
+  // again on the same port (after stop(): the broker went away and comes back)
+  bool start(int same_port = 0) {
     dir = fs::temp_directory_path() / ("sreh-mqtt-" + std::to_string(getpid()));
     fs::create_directories(dir);
     for (int attempt = 0; attempt < 5; ++attempt) {
-      port = free_port();
+      port = same_port != 0 ? same_port : free_port();
       const std::string conf = (dir / "mosquitto.conf").string();
       std::ofstream(conf) << "listener " << port << " 127.0.0.1\nallow_anonymous true\npersistence false\n";
       std::string arg0 = kBroker, arg1 = "-c";
@@ -93,6 +95,18 @@ struct Broker {
     fs::remove_all(dir, ec);
   }
 };
+
+int64_t now_ms() {
+  return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::system_clock::now().time_since_epoch()).count();
+}
+
+// A signed command (serve/mqtt_auth.hpp) with its time stamp.
+std::string signed_command(const std::string& token, const std::string& topic, const std::string& fields, int64_t ts) {
+  const std::string unsigned_cmd = "{" + fields + ", \"ts\": " + std::to_string(ts) + ", \"auth\": \"\"}";
+  std::string out = unsigned_cmd;
+  out.replace(out.find("\"auth\": \"\"") + 9, 0, command_signature(token, topic, unsigned_cmd));
+  return out;
+}
 
 // A subscriber collecting every message under the prefix.
 struct Listener {
@@ -242,7 +256,8 @@ TEST(MqttBridge, TokenNeverPublishedIdOnRefusalsAvailabilityAndCleanStop) {
   // Malformed JSON that quotes the token: the error must not repeat it.
   commander.publish("t/port/1/faults/set", "{\"token\": \"" + token + "\", \"supply_V\": }");
   // A signed command (serve/mqtt_auth.hpp): the token itself never travels.
-  const std::string unsigned_cmd = R"({"id": 42, "op": "read", "index": 64, "subindex": 1, "auth": ""})";
+  const std::string unsigned_cmd =
+      R"({"id": 42, "op": "read", "index": 64, "subindex": 1, "ts": )" + std::to_string(now_ms()) + R"(, "auth": ""})";
   std::string signed_cmd = unsigned_cmd;
   signed_cmd.replace(signed_cmd.find(R"("auth": "")") + 9, 0, command_signature(token, "t/port/1/isdu/request", unsigned_cmd));
   commander.publish("t/port/1/isdu/request", signed_cmd);
@@ -305,6 +320,117 @@ TEST(MqttBridge, LastWillSaysOfflineWhenServeDies) {
   ASSERT_TRUE(online);
   EXPECT_TRUE(l.wait_raw("w/port/1/availability", "offline"));
   EXPECT_TRUE(l.wait_raw("w/availability", "offline"));
+}
+
+// Issue 40, point 3: a retained command (here one left on the broker before
+// serve starts, as `mosquitto_pub -r` leaves it) is refused, not run at
+// every start; a signed command is taken once and only near its "ts".
+TEST(MqttBridge, RetainedCommandsAndReplayedSignedCommandsAreRefused) {
+  if (access(kBroker, X_OK) != 0) GTEST_SKIP() << "mosquitto not installed";
+  Broker broker;
+  ASSERT_TRUE(broker.start()) << "mosquitto did not start";
+  const std::string token = "tok-replay-0a1b";
+  const std::string isdu = "t/port/1/isdu/request";
+  {
+    Listener earlier(broker.port, "t/none");
+    earlier.publish("t/port/1/processdata/out/set", R"({"motor_on": true, "token": "tok-replay-0a1b"})", true);
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  Listener l(broker.port, "t/#");
+  Hub hub(std::vector<TwinConfig>(1), HubOptions{});
+  MqttOptions o;
+  o.port = broker.port;
+  o.prefix = "t";
+  o.token = token;
+  MqttBridge bridge(hub, o);
+  hub.start();
+  bridge.start();
+  EXPECT_TRUE(l.wait_for("t/errors", [](const Json& j) {
+    return j["topic"] == "t/port/1/processdata/out/set" && j["error"].get<std::string>().find("retained") != std::string::npos;
+  })) << "a retained command was not refused";
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  EXPECT_EQ(hub.with_port(1, [](Hub::Port& p) { return p.twin.telemetry().state; }), State::MotorOff)
+      << "the retained Motor On ran";
+
+  const std::string cmd = signed_command(token, isdu, R"("id": 51, "op": "read", "index": 64, "subindex": 1)", now_ms());
+  l.publish(isdu, cmd);
+  const auto ok = l.wait_for("t/port/1/isdu/response", [](const Json& j) { return j["id"] == 51; });
+  ASSERT_TRUE(ok);
+  EXPECT_TRUE((*ok)["ok"].get<bool>()) << ok->dump();
+  l.publish(isdu, cmd); // captured and replayed
+  const auto replay = l.wait_for("t/port/1/isdu/response", [](const Json& j) { return j["id"] == 51 && !j["ok"].get<bool>(); });
+  ASSERT_TRUE(replay) << "a replayed signed command was taken";
+  EXPECT_NE((*replay)["error"].get<std::string>().find("replay"), std::string::npos) << replay->dump();
+  l.publish(isdu, signed_command(token, isdu, R"("id": 52, "op": "read", "index": 64, "subindex": 1)", now_ms() - 120000));
+  const auto old = l.wait_for("t/port/1/isdu/response", [](const Json& j) { return j["id"] == 52; });
+  ASSERT_TRUE(old);
+  EXPECT_FALSE((*old)["ok"].get<bool>()) << "a command signed two minutes ago was taken";
+  bridge.stop();
+  hub.stop();
+}
+
+// Issue 40, point 8: the broker goes away and comes back (its retained
+// messages gone, or the last will published meanwhile): serve says "online"
+// again on every reconnect.
+TEST(MqttBridge, OnlineIsPublishedAgainAfterAReconnect) {
+  if (access(kBroker, X_OK) != 0) GTEST_SKIP() << "mosquitto not installed";
+  Broker broker;
+  ASSERT_TRUE(broker.start()) << "mosquitto did not start";
+  Hub hub(std::vector<TwinConfig>(1), HubOptions{});
+  MqttOptions o;
+  o.port = broker.port;
+  o.prefix = "r";
+  MqttBridge bridge(hub, o);
+  hub.start();
+  bridge.start();
+  {
+    Listener l(broker.port, "r/#");
+    ASSERT_TRUE(l.wait_raw("r/availability", "online"));
+  }
+  const int port = broker.port;
+  broker.stop();
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  ASSERT_TRUE(broker.start(port)) << "mosquitto did not come back on port " << port;
+  Listener l(broker.port, "r/#");
+  EXPECT_TRUE(l.wait_raw("r/availability", "online")) << "serve did not say online after reconnecting";
+  EXPECT_TRUE(l.wait_raw("r/port/1/availability", "online"));
+  bridge.stop();
+  hub.stop();
+}
+
+// Issue 40, point 1 over MQTT: a write the state folder cannot take (the
+// test hook of docs/serve.md: as a full disk) answers 0x8082 and changes nothing.
+TEST(MqttBridge, AWriteTheStateFolderCannotTakeIsRefusedWith0x8082) {
+  if (access(kBroker, X_OK) != 0) GTEST_SKIP() << "mosquitto not installed";
+  Broker broker;
+  ASSERT_TRUE(broker.start()) << "mosquitto did not start";
+  const fs::path dir = fs::temp_directory_path() / ("sreh-mqtt-state-" + std::to_string(getpid()));
+  fs::create_directories(dir / "state");
+  StateDir state((dir / "state").string(), 1);
+  Hub hub(std::vector<TwinConfig>(1), HubOptions{});
+  hub.set_state_dir(&state);
+  MqttOptions o;
+  o.port = broker.port;
+  o.prefix = "s";
+  MqttBridge bridge(hub, o);
+  hub.start();
+  bridge.start();
+  Listener l(broker.port, "s/#");
+  const fs::path flag = dir / "disk-full";
+  std::ofstream(flag) << "";
+  setenv("SREH_SERVE_TEST_FAIL_STATE_WRITES_WHILE", flag.c_str(), 1);
+  l.publish("s/port/1/isdu/request", R"({"id": 61, "op": "write", "index": 66, "subindex": 4, "value": 2222})");
+  const auto refused = l.wait_for("s/port/1/isdu/response", [](const Json& j) { return j["id"] == 61; });
+  unsetenv("SREH_SERVE_TEST_FAIL_STATE_WRITES_WHILE");
+  ASSERT_TRUE(refused);
+  EXPECT_FALSE((*refused)["ok"].get<bool>()) << refused->dump();
+  EXPECT_EQ((*refused)["iolink_error"], "0x8082") << refused->dump();
+  EXPECT_NE(hub.with_port(1, [](Hub::Port& p) { return read_parameter(p, 66, 4)["value"]; }), 2222) << "not rolled back";
+  EXPECT_FALSE(hub.with_port(1, [](Hub::Port& p) { return p.state_write_error; }).empty());
+  bridge.stop();
+  hub.stop();
+  std::error_code ec;
+  fs::remove_all(dir, ec);
 }
 
 TEST(MqttBridge, UnreachableBrokerIsAClearError) {

@@ -34,7 +34,9 @@ TEST_F(StateDirTest, MissingFilesAreFactoryNewAndSavesComeBack) {
     const PortState first = s.load(1);
     EXPECT_FALSE(first.nvm.has_value());
     EXPECT_FALSE(first.flange_angle_deg.has_value());
-    s.save(1, commissioned(), 300.0);
+    EXPECT_TRUE(s.save_nvm(1, 1, commissioned()));
+    EXPECT_TRUE(s.save_flange(1, 300.0));
+    EXPECT_FALSE(s.save_nvm(1, 2, commissioned())) << "an unchanged image is not written again";
   }
   StateDir s(dir.string(), 2);
   const PortState again = s.load(1);
@@ -92,6 +94,49 @@ TEST(Bearer, SchemeIsCaseInsensitiveTokenIsNot) {
   EXPECT_FALSE(bearer_matches("Bearer s3cre", "s3cret"));
   EXPECT_FALSE(bearer_matches("Basic s3cret", "s3cret"));
   EXPECT_FALSE(bearer_matches("Bearers3cret", "s3cret"));
+}
+
+// Issue 40: temporaries of a run killed mid-write are removed at start
+// (only serve's own names); an image older than the last one written never
+// overwrites it (a saver that captured before a request answered after).
+TEST_F(StateDirTest, StaleTemporariesGoAndAnOlderImageNeverOverwritesANewerOne) {
+  const fs::path stale = dir / ".port1.nvm.4242-7.tmp", stale_ds = dir / ".port2.ds.json.4242-8.tmp";
+  const fs::path foreign = dir / "notes.tmp";
+  for (const auto& f : {stale, stale_ds, foreign}) std::ofstream(f) << "x";
+  StateDir s(dir.string(), 2);
+  EXPECT_FALSE(fs::exists(stale));
+  EXPECT_FALSE(fs::exists(stale_ds));
+  EXPECT_TRUE(fs::exists(foreign)) << "a file serve did not write was removed";
+  const auto newer = commissioned();
+  auto older = newer;
+  Twin t{TwinConfig{}};
+  older = t.save_nvm(); // factory-new
+  ASSERT_NE(older, newer);
+  EXPECT_TRUE(s.save_nvm(1, 5, newer));
+  EXPECT_FALSE(s.save_nvm(1, 4, older));
+  EXPECT_EQ(s.load(1).nvm.value(), newer);
+  for (const auto& e : fs::directory_iterator(dir)) // nothing half-written left behind
+    EXPECT_EQ(e.path().extension() == ".tmp" && e.path() != foreign, false) << e.path();
+}
+
+// Issue 40: a write the folder refuses throws naming the file and the
+// reason, and leaves the file as it was (the test hook of docs/serve.md).
+TEST_F(StateDirTest, AFailedWriteThrowsAndLeavesTheOldFile) {
+  StateDir s(dir.string(), 1);
+  ASSERT_TRUE(s.save_nvm(1, 1, commissioned()));
+  const fs::path flag = dir / "disk-full";
+  std::ofstream(flag) << "";
+  setenv("SREH_SERVE_TEST_FAIL_STATE_WRITES_WHILE", flag.c_str(), 1);
+  Twin t{TwinConfig{}};
+  try {
+    s.save_nvm(1, 2, t.save_nvm());
+    FAIL() << "the write did not fail";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("port1.nvm"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("No space left"), std::string::npos) << e.what();
+  }
+  unsetenv("SREH_SERVE_TEST_FAIL_STATE_WRITES_WHILE");
+  EXPECT_EQ(s.load(1).nvm.value(), commissioned());
 }
 
 } // namespace
