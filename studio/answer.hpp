@@ -1,0 +1,37 @@
+// The studio's answer to a state (issue 37): the load's figures, and the
+// sizing `sreh-twin size --json --report` gives for the same inputs
+// (sizing's public API: make_request, size, to_json), with what the page
+// shows around it: the verdict block, plots, ISDU writes when the set is
+// usable, and a way out of an infeasible answer.
+#pragma once
+#include <string>
+
+#include "sizing/sizing.hpp"
+#include "studio/project.hpp"
+
+namespace sreh::studio {
+
+// Mass, inertia about the axis, centre of mass, gravity torque and each
+// part's share. A load over the module's limit is not refused: its figures
+// come with "over_by_gcm2" and the part with the largest share.
+// Throws ProjectError for a part the load parser refuses.
+Json load_panel(const Json& state);
+
+// The request `size` would make for the state (the load as the project
+// file holds it), with the trace kept as `size --report` keeps it.
+sizing::SizingRequest sizing_request(const Json& state);
+
+// {"load": load_panel, "size": the size JSON, "command": the command line,
+//  "verdict_html", "plots_html", "writes": [...], "writes_ready": bool,
+//  "way_out": {...} (infeasible only)} or, for input the sizing refuses,
+// {"load": ..., "error": "..."}. Never throws for bad input.
+Json answer(const Json& state);
+
+// The CSV of an answer's figures (sizing/size_csv.hpp, as `size --csv`).
+std::string answer_csv(const Json& state);
+// The scenario replaying the sized move (`size --emit-scenario`).
+std::string answer_scenario(const Json& state);
+// The printable page: `size --report`'s page with where it came from.
+std::string answer_report(const Json& state, const std::string& version);
+
+} // namespace sreh::studio
