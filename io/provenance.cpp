@@ -6,6 +6,25 @@
 #include "io/html_page.hpp"
 
 namespace sreh::io {
+namespace {
+
+Provenance& origin() {
+  static Provenance o{"sreh-twin library", "(library)", {}};
+  return o;
+}
+
+} // namespace
+
+void set_report_origin(const std::string& made_by, const std::string& version) {
+  origin().made_by = made_by;
+  origin().version = version;
+}
+
+Provenance report_provenance(std::vector<std::pair<std::string, std::string>> inputs) {
+  Provenance p = origin();
+  p.inputs = std::move(inputs);
+  return p;
+}
 
 std::string report_date() {
   std::time_t t = std::time(nullptr);

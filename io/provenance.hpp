@@ -15,6 +15,13 @@ struct Provenance {
   std::vector<std::pair<std::string, std::string>> inputs; // name, value
 };
 
+// What made the reports of this process: the command line and the version
+// (tools/main.cpp sets them once; a library caller leaves them unset and
+// its pages say "sreh-twin library").
+void set_report_origin(const std::string& made_by, const std::string& version);
+// A Provenance with the origin filled in and `inputs`.
+Provenance report_provenance(std::vector<std::pair<std::string, std::string>> inputs);
+
 // "2026-11-27 08:30 UTC": now, or SOURCE_DATE_EPOCH when set (reproducible
 // builds' convention: byte-identical pages from the same inputs).
 std::string report_date();

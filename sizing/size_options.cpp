@@ -13,6 +13,7 @@
 #include "sizing/cycle_output.hpp"
 #include "sizing/output.hpp"
 #include "sizing/report.hpp"
+#include "sizing/report_provenance.hpp"
 #include "sizing/size_csv.hpp"
 #include "sizing/uncertainty.hpp"
 #include "io/cpus.hpp"
@@ -178,7 +179,7 @@ SizeOutcome run_cycle(const SizeOptions& a) {
   }
   if (!a.report.empty()) {
     try {
-      write_cycle_report(a.report, rq, out.cycle_result, u ? &*u : nullptr);
+      write_report_page(a.report, cycle_report_html(rq, out.cycle_result, u ? &*u : nullptr), cycle_provenance(rq));
     } catch (const std::runtime_error& e) {
       throw SizingInputError(fmt::format("--report {}: {}", a.report, e.what()));
     }
@@ -228,7 +229,8 @@ SizeOutcome run_size_or_cycle(const SizeOptions& a) {
   }
   if (!a.report.empty()) {
     try {
-      write_size_report(a.report, out.request, out.result, u ? &*u : nullptr);
+      write_report_page(a.report, size_report_html(out.request, out.result, u ? &*u : nullptr),
+                        size_provenance(out.request, out.result.evaluation.load_gcm2));
     } catch (const std::runtime_error& e) {
       throw SizingInputError(fmt::format("--report {}: {}", a.report, e.what()));
     }
