@@ -2,7 +2,9 @@
 
 #include <httplib.h>
 
+#include <cctype>
 #include <chrono>
+#include <ctime>
 #include <mutex>
 #include <thread>
 
@@ -59,6 +61,12 @@ Json state_of(const httplib::Request& req) {
   return j;
 }
 
+double thread_cpu_ms() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) * 1e3 + static_cast<double>(ts.tv_nsec) * 1e-6;
+}
+
 std::string file_stem(const Json& state) {
   std::string out;
   for (char c : state.value("name", std::string("project"))) out += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
@@ -96,11 +104,16 @@ void run_studio(const StudioOptions& o, const std::function<void(const std::stri
     const Json state = state_of(req);
     const auto t0 = std::chrono::steady_clock::now();
     Json a;
+    double cpu_ms = 0;
     {
       std::lock_guard<std::mutex> lock(sizing_mutex);
+      const double c0 = thread_cpu_ms();
       a = answer(state);
+      cpu_ms = thread_cpu_ms() - c0;
     }
+    // Wall time (includes waiting for another tab's sizing) and this thread's CPU time (docs/performance-sizing.md).
     a["elapsed_ms"] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    a["cpu_ms"] = cpu_ms;
     res.set_content(a.dump(), kJsonType);
   });
   auto download = [&](const char* path, const char* ext, const char* type, auto make) {

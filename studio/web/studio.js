@@ -137,7 +137,7 @@
     if (mine !== seq) return; // a newer edit is on its way
     window.studio.answer = a;
     showAnswer(a);
-    timings.push({client_ms: performance.now() - t0, server_ms: a.elapsed_ms});
+    timings.push({client_ms: performance.now() - t0, server_ms: a.elapsed_ms, cpu_ms: a.cpu_ms});
     $('status').classList.remove('busy');
     $('status').textContent = `answered in ${Math.round(performance.now() - t0)} ms`;
     window.studio.pending = 0;
@@ -163,7 +163,7 @@
 
   function summaryHtml(a) {
     const s = a.summary, j = a.size, set = s.set;
-    return `<p class="answerline"><b class="${s.feasible ? 'ok' : 'bad'}" id="answer-verdict">${s.feasible ? 'FEASIBLE' : 'NOT FEASIBLE'}</b>;
+    return `<p class="answerline"><b class="${s.feasible ? 'okt' : 'badt'}" id="answer-verdict">${s.feasible ? 'FEASIBLE' : 'NOT FEASIBLE'}</b>;
 binding limit: <b id="answer-binding">${esc(s.binding_limit_words)}</b></p>
 <table id="answer-set"><tr><th class="l">${j.mode === 'recommend' ? 'recommended' : 'given'} set</th><th>speed deg/s</th><th>acceleration %</th><th>jerk %</th><th>positioning s</th><th>cycle s</th></tr>
 <tr><td class="l" id="rec-set">${set.parameter_set}</td><td id="rec-speed">${set.speed_dps}</td><td id="rec-accel">${set.accel_pct}</td>
