@@ -19,15 +19,6 @@
 namespace sreh::studio {
 namespace {
 
-// The load as the project file holds it, read by the load files' parser.
-LoadFileContents parsed_load(const Json& state, double mass_scale = 1.0) {
-  try {
-    return parse_load_text(project_yaml(state, mass_scale), "project", ".");
-  } catch (const ScenarioError& e) {
-    throw ProjectError(e.message());
-  }
-}
-
 Json part_json(const PartFigures& p, double scale, double total_inertia) {
   const double j = kgm2_to_gcm2(p.inertia_kgm2) / scale;
   return {{"name", p.name}, {"shape", p.shape}, {"mass_kg", p.mass_kg / scale}, {"inertia_gcm2", j},
@@ -35,12 +26,15 @@ Json part_json(const PartFigures& p, double scale, double total_inertia) {
           {"com_m", {p.com_m[0], p.com_m[1], p.com_m[2]}}};
 }
 
-// A load over the limit is built with its masses scaled down (inertia and
-// mass are linear in the masses, the centre of mass does not move) and its
-// figures scaled back up (issue 37: show by how much, do not refuse).
-constexpr double kOverLimitScale = 1e-3;
-
 } // namespace
+
+LoadFileContents parsed_load(const Json& state, double mass_scale) {
+  try {
+    return parse_load_text(project_yaml(state, mass_scale), "project", ".");
+  } catch (const ScenarioError& e) {
+    throw ProjectError(e.message());
+  }
+}
 
 Json load_panel(const Json& state_in) {
   const Json s = normalised_state(state_in);

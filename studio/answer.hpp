@@ -6,10 +6,21 @@
 #pragma once
 #include <string>
 
+#include "scenarios/load_file.hpp"
 #include "sizing/sizing.hpp"
 #include "studio/project.hpp"
 
 namespace sreh::studio {
+
+// The load (and mounting) as the project file holds it, read by the load
+// files' parser; with `mass_scale` every part's mass multiplied. Throws
+// ProjectError with the parser's message.
+LoadFileContents parsed_load(const Json& state, double mass_scale = 1.0);
+
+// A load over the limit is built with its masses scaled down (inertia and
+// mass are linear in the masses, the centre of mass does not move) and its
+// figures scaled back up (issue 37, A-STUDIO-2: show by how much, do not refuse).
+inline constexpr double kOverLimitScale = 1e-3;
 
 // Mass, inertia about the axis, centre of mass, gravity torque and each
 // part's share. A load over the module's limit is not refused: its figures
@@ -31,6 +42,9 @@ Json answer(const Json& state);
 std::string answer_csv(const Json& state);
 // The scenario replaying the sized move (`size --emit-scenario`).
 std::string answer_scenario(const Json& state);
+// `load show --picture` of the state's load (PNG bytes): from above and
+// from the side, axis and centre of mass marked; a load over the limit too.
+std::string load_picture_png(const Json& state);
 // The printable page: `size --report`'s page with where it came from.
 std::string answer_report(const Json& state, const std::string& version);
 

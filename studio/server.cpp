@@ -131,6 +131,11 @@ void run_studio(const StudioOptions& o, const std::function<void(const std::stri
   download("/api/export/project", ".yaml", "application/yaml", [](const Json& s) { return project_yaml(s); });
   download("/api/export/csv", ".csv", "text/csv", [](const Json& s) { return answer_csv(s); });
   download("/api/export/scenario", "_scenario.yaml", "application/yaml", [](const Json& s) { return answer_scenario(s); });
+  server.Get("/api/picture", [&](const httplib::Request& req, httplib::Response& res) {
+    const Json state = state_of(req);
+    std::lock_guard<std::mutex> lock(sizing_mutex);
+    res.set_content(load_picture_png(state), "image/png");
+  });
   server.Get("/report", [&](const httplib::Request& req, httplib::Response& res) {
     const Json state = state_of(req);
     std::lock_guard<std::mutex> lock(sizing_mutex);

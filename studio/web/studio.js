@@ -118,6 +118,7 @@
   // --- answer -------------------------------------------------------------
   function changed() {
     history.replaceState(null, '', link());
+    $('load-picture').hidden = true; // drawn for the load as it was: shown again on request
     exportLinks();
     clearTimeout(timer);
     window.studio.pending = 1;
@@ -269,6 +270,11 @@ binding limit: <b id="answer-binding">${esc(s.binding_limit_words)}</b></p>
     changed();
   });
   $('pin').addEventListener('click', pin);
+  $('show-picture').addEventListener('click', () => {
+    const img = $('load-picture');
+    img.src = '/api/picture?s=' + encodeURIComponent(JSON.stringify(state));
+    img.hidden = false;
+  });
   $('compare').addEventListener('click', (e) => {
     if (e.target.dataset.unpin === undefined) return;
     pins.splice(Number(e.target.dataset.unpin), 1);

@@ -15,6 +15,7 @@ typing into the page's fields and clicking its buttons.
   address reproduces the view (the same state and answer);
 - exports the CSV (the figures of `size --json`) and the scenario, and runs
   the scenario with `sreh-twin run` (it passes);
+- the load's picture (load show --picture) is shown on request;
 - the page at 1400 x 900 and 800 x 900 and the printable report have
   nothing wider than the page (layout_check.js); screenshots are written.
 With --latency N: N edits of a part's mass, the time from request to the
@@ -210,6 +211,11 @@ def main():
               "ISDU writes shown for an infeasible set, or missing for a feasible one")
         if cli["feasible"]:
             check(str(rec["isdu_writes"][0]["value"]) in text(cdp, "writes-text"), "the writes are not the set's")
+        click(cdp, "show-picture")  # the load on the module, as load show --picture draws it
+        end = time.monotonic() + 60
+        while not cdp.evaluate("(() => { const i = document.getElementById('load-picture'); return i.complete && i.naturalWidth > 0; })()"):
+            cdp.pump(end)
+        check(cdp.evaluate("document.getElementById('load-picture').naturalWidth") == 1280, "the load picture is not 1280 px wide")
         for width in (1400, 800):
             check_layout(cdp, "studio", shots, width)
         cdp.set_width(1400)
