@@ -36,6 +36,23 @@ LoadFileContents parsed_load(const Json& state, double mass_scale) {
   }
 }
 
+LoadFigures load_figures_of(const Json& state, double& mass_scale) {
+  mass_scale = 1.0;
+  try {
+    return load_figures(parsed_load(state).load);
+  } catch (const std::invalid_argument& first) {
+    mass_scale = kOverLimitScale;
+    LoadFigures f;
+    try {
+      f = load_figures(parsed_load(state, mass_scale).load);
+    } catch (const std::invalid_argument&) {
+      throw ProjectError(first.what());
+    }
+    if (within_load_limit(kgm2_to_gcm2(f.inertia_kgm2) / mass_scale)) throw ProjectError(first.what());
+    return f;
+  }
+}
+
 Json load_panel(const Json& state_in) {
   const Json s = normalised_state(state_in);
   const double tilt = s["mounting_tilt_deg"].get<double>();
@@ -43,18 +60,7 @@ Json load_panel(const Json& state_in) {
               {"com_radius_m", 0.0},        {"gravity_torque_Nm", 0.0}, {"parts", Json::array()}, {"over_by_gcm2", 0.0}};
   if (s["parts"].empty()) return out;
   double scale = 1.0;
-  LoadFigures f;
-  try {
-    f = load_figures(parsed_load(s).load);
-  } catch (const std::invalid_argument& first) {
-    scale = kOverLimitScale;
-    try {
-      f = load_figures(parsed_load(s, scale).load);
-    } catch (const std::invalid_argument&) {
-      throw ProjectError(first.what());
-    }
-    if (within_load_limit(kgm2_to_gcm2(f.inertia_kgm2) / scale)) throw ProjectError(first.what());
-  }
+  const LoadFigures f = load_figures_of(s, scale);
   const double inertia = kgm2_to_gcm2(f.inertia_kgm2) / scale;
   out["mass_kg"] = f.mass_kg / scale;
   out["inertia_gcm2"] = inertia;

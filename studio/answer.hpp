@@ -9,6 +9,7 @@
 #include "scenarios/load_file.hpp"
 #include "sizing/sizing.hpp"
 #include "studio/project.hpp"
+#include "twin/load_figures.hpp"
 
 namespace sreh::studio {
 
@@ -21,6 +22,12 @@ LoadFileContents parsed_load(const Json& state, double mass_scale = 1.0);
 // mass are linear in the masses, the centre of mass does not move) and its
 // figures scaled back up (issue 37, A-STUDIO-2: show by how much, do not refuse).
 inline constexpr double kOverLimitScale = 1e-3;
+
+// The load's figures (twin/load_figures.hpp) as built with `mass_scale`
+// (1, or kOverLimitScale for a load over the limit: divide masses, inertias
+// and torques by it). Throws ProjectError for a load the parser or the
+// twin refuses for another reason.
+LoadFigures load_figures_of(const Json& state, double& mass_scale);
 
 // Mass, inertia about the axis, centre of mass, gravity torque and each
 // part's share. A load over the module's limit is not refused: its figures

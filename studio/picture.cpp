@@ -8,7 +8,6 @@
 
 #include "renders/load_picture.hpp"
 #include "studio/answer.hpp"
-#include "twin/load_figures.hpp"
 
 namespace sreh::studio {
 
@@ -16,12 +15,8 @@ std::string load_picture_png(const Json& state) {
   const Json s = normalised_state(state);
   if (s["parts"].empty()) throw ProjectError("picture: the load has no parts");
   const LoadSpec load = parsed_load(s).load;
-  LoadFigures f; // only the centre of mass and the mounting face are drawn: the same for scaled masses
-  try {
-    f = load_figures(load);
-  } catch (const std::invalid_argument&) {
-    f = load_figures(parsed_load(s, kOverLimitScale).load); // over the limit (A-STUDIO-2); else it throws again
-  }
+  double scale = 1.0; // only the centre of mass and the mounting face are drawn: the same for scaled masses
+  const LoadFigures f = load_figures_of(s, scale);
   std::string dir_template = (std::filesystem::temp_directory_path() / "sreh-studio-XXXXXX").string();
   if (mkdtemp(dir_template.data()) == nullptr) throw std::runtime_error("picture: no temporary folder");
   const std::filesystem::path dir = dir_template;
