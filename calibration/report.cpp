@@ -12,8 +12,10 @@
 #include "calibration/fit_adequacy.hpp"
 #include "io/html_page.hpp"
 #include "io/output_path.hpp"
+#include "io/provenance.hpp"
 #include "renders/figure.hpp"
 #include "renders/svg_plot.hpp"
+#include "twin/load_builder.hpp"
 
 namespace sreh {
 namespace {
@@ -138,6 +140,23 @@ std::string correlation_table(const FitResult& fit) {
 
 bool calibration_reports_available() { return true; }
 
+namespace {
+
+// Where the page came from (issue 37): command line, version, date, the logs and their setups.
+std::string with_provenance(const std::string& body, const std::vector<FitCase>& cases) {
+  std::vector<std::pair<std::string, std::string>> in;
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const TwinConfig& c = cases[i].setup.config;
+    in.push_back({fmt::format("log {}", i + 1), fmt::format("{} ({} rows): load {}, axis tilted {} deg from vertical, {} V, "
+                                                            "ambient {} degC", cases[i].log.path, cases[i].log.rows.size(),
+                                                            describe_load(c.load), c.mounting_tilt_deg, c.supply.voltage_V,
+                                                            c.thermal.ambient_C)});
+  }
+  return io::with_provenance(body, io::report_provenance(std::move(in)));
+}
+
+} // namespace
+
 std::filesystem::path write_calibration_report(const std::filesystem::path& dir, const std::vector<FitCase>& cases,
                                                const ModelCard& start, const FitResult& fit) {
   const ModuleModel start_module = start.module_model();
@@ -160,7 +179,7 @@ std::filesystem::path write_calibration_report(const std::filesystem::path& dir,
   io::make_output_folder(dir.string());
   const std::filesystem::path index = dir / "index.html";
   io::write_file_atomic(index.string(),
-                        [&](std::ostream& out) { out << io::html_page(title, report::page_head(), body); });
+                        [&](std::ostream& out) { out << io::html_page(title, report::page_head(), with_provenance(body, cases)); });
   return index;
 }
 

@@ -20,7 +20,8 @@ LoadFileContents parse_load_text(const std::string& yaml_text, const std::string
     return {sc.world.load, root["mounting"] ? std::optional<double>(sc.world.mounting_tilt_deg) : std::nullopt};
   }
   const detail::YamlReader reader(file);
-  reader.check_map(root, "load file", {"name", "description", "load", "mounting"});
+  // `studio:`: a studio project's move and options (docs/studio.md), for `sreh-twin studio` only.
+  reader.check_map(root, "load file", {"name", "description", "load", "mounting", "studio"});
   for (const char* key : {"name", "description"}) {
     if (root[key]) (void)reader.text(root[key], key);
   }

@@ -37,6 +37,7 @@ struct SizeOptions {
   std::string report;        // HTML report folder ("" none)
   std::string cycle;         // --cycle FILE.yaml: a multi-segment cycle (the file holds load, supply, ...)
   std::string emit_scenario; // --emit-scenario FILE: a scenario replaying the sized cycle
+  std::string csv;           // --csv FILE: the figures of the JSON object, one a row (size_csv.hpp)
   std::string model;         // --model FILE: model card overrides (issue 25)
   bool uncertainty = false;  // --uncertainty: bands over the model card's ranges (issue 26)
   int samples = 32;          // --samples: models sampled (Latin hypercube)

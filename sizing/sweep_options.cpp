@@ -17,6 +17,7 @@
 #include "io/shard.hpp"
 #include "twin/load_builder.hpp"
 #include "sizing/report.hpp"
+#include "sizing/report_provenance.hpp"
 #include "sizing/sizing.hpp"
 
 namespace sreh::sizing {
@@ -144,7 +145,7 @@ SweepResult run_sweep_command(const SweepOptions& a, const SweepRequest& rq) {
     }
     if (!a.report.empty() && rq.shards == 1) {
       const std::vector<double> targets = a.targets_s.empty() ? default_targets_s(result) : a.targets_s;
-      write_sweep_report(a.report, rq, result, targets);
+      write_report_page(a.report, sweep_report_html(rq, result, targets), sweep_provenance(rq));
     }
   } catch (const std::runtime_error& e) {
     throw SizingInputError(e.what());

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "io/interrupt.hpp"
+#include "io/provenance.hpp"
 #include "io/output_path.hpp"
 #include "io/text.hpp"
 #include "tools/cli_hints.hpp"
@@ -81,6 +82,7 @@ int fail(int code, const std::string& what) {
 int main(int argc, char** argv) {
   using namespace sreh::tools;
   set_command_line(argc, argv);
+  sreh::io::set_report_origin(command_line(), SREH_VERSION); // the reports say where they came from (issue 37)
   CLI::App app{"sreh-twin: digital twin of the Afag SREH-50-IOL smart rotary module"};
   app.footer(kExitCodes);
   // --version: the release and where this installation finds its models (issue 13).

@@ -140,6 +140,9 @@ def main():
                 cdp.navigate(url, REPORT_READY)
                 if name in ("size", "cycle"):
                     check_sizing_page(cdp, name)
+                if name != "run":  # issue 37: the command line, version, date and inputs under the title
+                    prov = cdp.evaluate("(document.getElementById('provenance') || {}).textContent || ''")
+                    check("sreh-twin " in prov and "made by" in prov and "date" in prov, "%s page without provenance: %r" % (name, prov[:200]))
                 if name == "sweep":  # no page per point: a verdict row each
                     rows = cdp.evaluate("document.querySelectorAll('#verdicts tr td.mini .fill').length")
                     check(rows == 4 * 6, "sweep page: %s verdict bars, expected 4 for each of 6 points" % rows)

@@ -1,0 +1,294 @@
+// sreh-twin studio (issue 37): the page keeps one state (the project, as
+// studio/project.hpp describes it) and the pinned options; every edit
+// updates the address (#state) and, debounced, asks /api/answer. The server
+// does all sizing; this script only shows what it answers.
+(() => {
+  'use strict';
+  const META = window.STUDIO.meta;
+  const DEBOUNCE_MS = 150;
+  const MAX_PINS = 4;
+  const $ = (id) => document.getElementById(id);
+  const esc = (s) => String(s).replace(/[&<>"']/g, (c) => ({'&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;'}[c]));
+  const fmt = (v, d) => (v === null || v === undefined ? '-' : Number(v).toFixed(d));
+  const shapeKeys = (shape) => META.shapes.find((s) => s.shape === shape).keys;
+  const DEFAULT_DIMS = {mass_kg: 0.1, radius_m: 0.03, thickness_m: 0.01, inner_radius_m: 0.01, outer_radius_m: 0.03,
+                        x_m: 0.02, y_m: 0.02, z_m: 0.02, length_m: 0.03};
+
+  let state = window.STUDIO.project;
+  let pins = []; // [{state, answer}]
+  let seq = 0;
+  let timer = null;
+  const timings = []; // request -> answer shown, ms (docs/performance-sizing.md)
+  window.studio = {timings, get state() { return state; }, get pins() { return pins; }, answer: null, pending: 0};
+
+  function fromHash() {
+    const m = location.hash.match(/^#state=(.*)$/);
+    if (!m) return;
+    try {
+      const h = JSON.parse(decodeURIComponent(m[1]));
+      if (h.state) state = h.state;
+      if (Array.isArray(h.pins)) pins = h.pins.slice(0, MAX_PINS).map((s) => ({state: s, answer: null}));
+    } catch (e) { /* a broken link: keep the project */ }
+  }
+
+  function link() {
+    return '#state=' + encodeURIComponent(JSON.stringify({state, pins: pins.map((p) => p.state)}));
+  }
+
+  // --- inputs -------------------------------------------------------------
+  function partHtml(p, k) {
+    const opts = META.shapes.map((s) => `<option${s.shape === p.shape ? ' selected' : ''}>${s.shape}</option>`).join('');
+    const dims = shapeKeys(p.shape).map((key) =>
+      `<label>${key} <input id="part-${k}-${key}" data-k="${k}" data-key="${key}" type="number" step="any" value="${p[key]}"></label>`).join('');
+    const vec = (key, label) => [0, 1, 2].map((i) =>
+      `<label>${label[i]} <input id="part-${k}-${key}-${i}" data-k="${k}" data-key="${key}" data-i="${i}" type="number" step="any" value="${p[key][i]}"></label>`).join('');
+    return `<fieldset class="part" id="part-${k}"><legend>Part ${k + 1}</legend>
+<div class="row"><label>name <input id="part-${k}-name" data-k="${k}" data-key="name" type="text" value="${esc(p.name)}"></label>
+<label>shape <select id="part-${k}-shape" data-k="${k}" data-key="shape">${opts}</select></label>
+<button type="button" id="part-${k}-remove" data-remove="${k}">remove</button></div>
+<div class="row">${dims}</div>
+<div class="row">${vec('at_m', ['at x m', 'y m', 'z m'])}</div>
+<div class="row">${vec('rpy_deg', ['roll deg', 'pitch deg', 'yaw deg'])}</div></fieldset>`;
+  }
+
+  function renderInputs() {
+    $('name').value = state.name;
+    $('parts').innerHTML = state.parts.map(partHtml).join('');
+    const tilt = state.mounting_tilt_deg;
+    $('mounting').value = tilt === 0 ? '0' : tilt === 90 ? '90' : 'tilt';
+    $('tilt').value = tilt;
+    $('tilt-label').hidden = $('mounting').value !== 'tilt';
+    for (const id of ['angle_deg', 'dwell_s', 'tolerance_deg', 'target_ms', 'voltage_V', 'ambient_C']) $(id).value = state[id];
+    $('target').value = state.target;
+    $('target-ms-label').hidden = state.target === 'none';
+    $('set-mode').value = state.set ? 'given' : 'recommend';
+    for (const id of ['speed_dps', 'accel_pct', 'jerk_pct']) $(id).value = state.set ? state.set[id] : '';
+    document.querySelectorAll('label.given').forEach((l) => { l.hidden = !state.set; });
+  }
+
+  function num(el) {
+    const v = parseFloat(el.value);
+    return Number.isFinite(v) ? v : null;
+  }
+
+  function onPartInput(e) {
+    const el = e.target;
+    const k = Number(el.dataset.k);
+    const key = el.dataset.key;
+    if (Number.isNaN(k) || !key) return;
+    const p = state.parts[k];
+    if (key === 'name') p.name = el.value;
+    else if (key === 'shape') {
+      const old = p;
+      const next = {name: old.name, shape: el.value, at_m: old.at_m, rpy_deg: old.rpy_deg};
+      for (const dim of shapeKeys(el.value)) next[dim] = old[dim] !== undefined ? old[dim] : DEFAULT_DIMS[dim];
+      state.parts[k] = next;
+      renderInputs();
+    } else if (el.dataset.i !== undefined) {
+      const v = num(el);
+      if (v === null) return;
+      p[key][Number(el.dataset.i)] = v;
+    } else {
+      const v = num(el);
+      if (v === null) return;
+      p[key] = v;
+    }
+    changed();
+  }
+
+  function onInput(e) {
+    const id = e.target.id;
+    if (id === 'name') state.name = e.target.value;
+    else if (id === 'mounting') {
+      if (e.target.value !== 'tilt') state.mounting_tilt_deg = Number(e.target.value);
+      $('tilt-label').hidden = e.target.value !== 'tilt';
+      $('tilt').value = state.mounting_tilt_deg;
+    } else if (id === 'tilt') { const v = num(e.target); if (v === null) return; state.mounting_tilt_deg = v; }
+    else if (id === 'target') { state.target = e.target.value; $('target-ms-label').hidden = state.target === 'none'; }
+    else if (id === 'set-mode') {
+      state.set = e.target.value === 'given' ? {speed_dps: 3000, accel_pct: 100, jerk_pct: 100} : null;
+      renderInputs();
+    } else if (['speed_dps', 'accel_pct', 'jerk_pct'].includes(id)) {
+      const v = num(e.target); if (v === null || !state.set) return; state.set[id] = v;
+    } else if (id in state) { const v = num(e.target); if (v === null) return; state[id] = v; }
+    else return;
+    changed();
+  }
+
+  // --- answer -------------------------------------------------------------
+  function changed() {
+    history.replaceState(null, '', link());
+    $('load-picture').hidden = true; // drawn for the load as it was: shown again on request
+    exportLinks();
+    clearTimeout(timer);
+    window.studio.pending = 1;
+    $('status').classList.add('busy');
+    timer = setTimeout(ask, DEBOUNCE_MS);
+  }
+
+  async function post(s) {
+    const r = await fetch('/api/answer', {method: 'POST', body: JSON.stringify(s), headers: {'Content-Type': 'application/json'}});
+    return r.json();
+  }
+
+  async function ask() {
+    const mine = ++seq;
+    const t0 = performance.now();
+    const a = await post(state);
+    if (mine !== seq) return; // a newer edit is on its way
+    window.studio.answer = a;
+    showAnswer(a);
+    timings.push({client_ms: performance.now() - t0, server_ms: a.elapsed_ms, cpu_ms: a.cpu_ms});
+    $('status').classList.remove('busy');
+    $('status').textContent = `answered in ${Math.round(performance.now() - t0)} ms`;
+    window.studio.pending = 0;
+  }
+
+  function loadFigures(l) {
+    if (!l) return '';
+    const pct = 100 * l.inertia_gcm2 / l.max_gcm2;
+    const cls = pct > 100 ? 'badb' : pct > 85 ? 'warnb' : 'okb';
+    let o = `<table><tr><td class="l">mass</td><td id="load-mass">${fmt(l.mass_kg, 3)} kg</td></tr>
+<tr><td class="l">inertia about the axis</td><td id="load-inertia">${fmt(l.inertia_gcm2, 1)} g cm^2 of ${l.max_gcm2} (${fmt(pct, 0)} %)</td></tr>
+<tr><td class="l">centre of mass</td><td id="load-com">[${l.com_m.map((v) => fmt(1000 * v, 1)).join(', ')}] mm, ${fmt(1000 * l.com_radius_m, 1)} mm from the axis</td></tr>
+<tr><td class="l">gravity torque (largest over a turn)</td><td id="load-gravity">${fmt(l.gravity_torque_Nm, 3)} N m</td></tr></table>
+<div class="loadbar"><div class="fill ${cls}" style="width:${Math.min(pct, 125) / 1.25}%"></div><div class="mark" style="left:80%"></div></div>`;
+    if (l.over_text) o += `<p class="over" id="load-over">${esc(l.over_text)}</p>`;
+    if (l.parts.length) {
+      o += '<table id="load-parts"><tr><th>#</th><th class="l">part</th><th>mass kg</th><th>inertia g cm^2</th><th>share</th></tr>' +
+        l.parts.map((p, k) => `<tr><td>${k + 1}</td><td class="l">${esc(p.name || p.shape)}</td><td>${fmt(p.mass_kg, 3)}</td>` +
+          `<td>${fmt(p.inertia_gcm2, 1)}</td><td>${fmt(100 * p.share, 1)} %</td></tr>`).join('') + '</table>';
+    }
+    return o;
+  }
+
+  function summaryHtml(a) {
+    const s = a.summary, j = a.size, set = s.set;
+    return `<p class="answerline"><b class="${s.feasible ? 'okt' : 'badt'}" id="answer-verdict">${s.feasible ? 'FEASIBLE' : 'NOT FEASIBLE'}</b>;
+binding limit: <b id="answer-binding">${esc(s.binding_limit_words)}</b></p>
+<table id="answer-set"><tr><th class="l">${j.mode === 'recommend' ? 'recommended' : 'given'} set</th><th>speed deg/s</th><th>acceleration %</th><th>jerk %</th><th>positioning s</th><th>cycle s</th></tr>
+<tr><td class="l" id="rec-set">${set.parameter_set}</td><td id="rec-speed">${set.speed_dps}</td><td id="rec-accel">${set.accel_pct}</td>
+<td id="rec-jerk">${set.jerk_pct}</td><td id="rec-positioning">${fmt(j.positioning_s, 4)}</td><td id="rec-cycle">${fmt(j.cycle_s, 4)}</td></tr></table>`;
+  }
+
+  function wayOutHtml(w) {
+    if (!w) return '';
+    let o = '<h3>Way out</h3><table class="limits" id="limits"><tr><th class="l">limit</th><th>this option</th><th>allowed</th><th class="l"></th></tr>' +
+      w.limits.map((r) => `<tr><td class="l">${esc(r.limit)}</td><td>${esc(r.value)}</td><td>${esc(r.allowed)}</td>` +
+        `<td class="l${r.over ? ' overc' : ''}">${esc(r.by)}</td></tr>`).join('') + '</table>';
+    const first = w.options.findIndex((x) => x.feasible);
+    o += '<ul id="way-options">' + w.options.map((x, i) => `<li id="way-${i}">${i === first ? '<b>nearest feasible:</b> ' : ''}${esc(x.label)}: ` +
+      (x.feasible ? `feasible, set ${x.set.speed_dps} deg/s, ${x.set.accel_pct} %, ${x.set.jerk_pct} %; positioning ${fmt(x.positioning_s, 4)} s, cycle ${fmt(x.cycle_s, 4)} s`
+                  : `still not feasible (${esc(x.binding_limit)})`) +
+      `<button type="button" class="waybtn" data-way="${i}">apply</button></li>`).join('') + '</ul>';
+    return o;
+  }
+
+  function showAnswer(a) {
+    $('load-figures').innerHTML = loadFigures(a.load);
+    $('error').hidden = !a.error;
+    $('error').textContent = a.error || '';
+    $('summary').innerHTML = a.summary ? summaryHtml(a) : '';
+    $('verdict-box').innerHTML = a.verdict_html || '';
+    $('way-out').innerHTML = wayOutHtml(a.way_out);
+    $('writes').innerHTML = !a.summary ? '' : a.writes_ready
+      ? `<pre id="writes-text">${esc(a.writes.join('\n'))}</pre><p class="note">scenario steps, ready to paste under <code>steps:</code></p>`
+      : '<p id="writes-none" class="over">No writes to paste: this set does not meet what is asked. Apply a way out above.</p>';
+    $('plots').innerHTML = a.plots_html || '';
+    $('command').textContent = a.command || '';
+  }
+
+  // --- compare ------------------------------------------------------------
+  const ROWS = [
+    ['load', 'load g cm^2', (p) => fmt(p.answer && p.answer.load ? p.answer.load.inertia_gcm2 : null, 1)],
+    ['tilt', 'axis tilt deg', (p) => p.state.mounting_tilt_deg],
+    ['voltage', 'supply V', (p) => p.state.voltage_V],
+    ['ambient', 'ambient degC', (p) => p.state.ambient_C],
+    ['move', 'move deg / dwell s', (p) => `${p.state.angle_deg} / ${p.state.dwell_s}`],
+    ['target', 'required', (p) => (p.state.target === 'none' ? '-' : `${p.state.target} ${p.state.target_ms} ms`)],
+    ['verdict', 'verdict', (p) => (!p.answer ? '...' : p.answer.summary ? (p.answer.summary.feasible ? 'feasible' : 'NOT feasible') : 'error')],
+    ['binding', 'binding limit', (p) => (p.answer && p.answer.summary ? p.answer.summary.binding_limit_words : '-')],
+    ['set', 'speed / accel / jerk', (p) => (p.answer && p.answer.summary ? `${p.answer.summary.set.speed_dps} / ${p.answer.summary.set.accel_pct} / ${p.answer.summary.set.jerk_pct}` : '-')],
+    ['positioning', 'positioning s', (p) => fmt(p.answer && p.answer.size ? p.answer.size.positioning_s : null, 4)],
+    ['cycle', 'cycle s', (p) => fmt(p.answer && p.answer.size ? p.answer.size.cycle_s : null, 4)],
+    ['peak', 'peak torque %', (p) => fmt(p.answer && p.answer.size ? p.answer.size.utilisation.peak_torque_pct : null, 0)],
+    ['rms', 'RMS torque %', (p) => fmt(p.answer && p.answer.size ? p.answer.size.utilisation.rms_torque_pct : null, 0)],
+    ['thermal', 'thermal margin K', (p) => fmt(p.answer && p.answer.size ? p.answer.size.utilisation.thermal_margin_K : null, 1)],
+  ];
+
+  function renderCompare() {
+    if (!pins.length) { $('compare').innerHTML = '<p class="note">No option pinned yet.</p>'; return; }
+    let o = '<table class="compare" id="compare-table"><tr><th class="l"></th>' +
+      pins.map((p, c) => `<th id="cmp-head-${c}">option ${c + 1} <button type="button" data-unpin="${c}">remove</button></th>`).join('') + '</tr>';
+    for (const [key, label, get] of ROWS) {
+      const vals = pins.map(get);
+      o += `<tr><td class="l">${label}</td>` + vals.map((v, c) =>
+        `<td id="cmp-${key}-${c}"${c > 0 && String(v) !== String(vals[0]) ? ' class="diff"' : ''}>${esc(v)}</td>`).join('') + '</tr>';
+    }
+    $('compare').innerHTML = o + '</table>';
+  }
+
+  async function pin() {
+    if (pins.length >= MAX_PINS) pins.shift();
+    const p = {state: JSON.parse(JSON.stringify(state)), answer: window.studio.answer};
+    pins.push(p);
+    if (!p.answer || window.studio.pending) p.answer = await post(p.state);
+    history.replaceState(null, '', link());
+    renderCompare();
+  }
+
+  // --- export -------------------------------------------------------------
+  function exportLinks() {
+    const q = '?s=' + encodeURIComponent(JSON.stringify(state));
+    $('export-project').href = '/api/export/project' + q;
+    $('export-csv').href = '/api/export/csv' + q;
+    $('export-scenario').href = '/api/export/scenario' + q;
+    $('export-report').href = '/report' + q;
+    $('permalink').href = link();
+  }
+
+  // --- wiring -------------------------------------------------------------
+  fromHash();
+  renderInputs();
+  renderCompare();
+  exportLinks();
+  $('parts').addEventListener('input', onPartInput);
+  $('parts').addEventListener('change', (e) => { if (e.target.tagName === 'SELECT') onPartInput(e); });
+  $('parts').addEventListener('click', (e) => {
+    const k = e.target.dataset.remove;
+    if (k === undefined) return;
+    state.parts.splice(Number(k), 1);
+    renderInputs();
+    changed();
+  });
+  $('inputs').addEventListener('input', (e) => { if (!e.target.closest('#parts')) onInput(e); });
+  $('inputs').addEventListener('change', (e) => { if (e.target.tagName === 'SELECT' && !e.target.closest('#parts')) onInput(e); });
+  $('add-part').addEventListener('click', () => {
+    state.parts.push({name: `part ${state.parts.length + 1}`, shape: 'disk', mass_kg: 0.1, radius_m: 0.03, thickness_m: 0.01,
+                      at_m: [0, 0, 0.005], rpy_deg: [0, 0, 0]});
+    renderInputs();
+    changed();
+  });
+  $('pin').addEventListener('click', pin);
+  $('show-picture').addEventListener('click', () => {
+    const img = $('load-picture');
+    img.src = '/api/picture?s=' + encodeURIComponent(JSON.stringify(state));
+    img.hidden = false;
+  });
+  $('compare').addEventListener('click', (e) => {
+    if (e.target.dataset.unpin === undefined) return;
+    pins.splice(Number(e.target.dataset.unpin), 1);
+    history.replaceState(null, '', link());
+    renderCompare();
+  });
+  $('way-out').addEventListener('click', (e) => {
+    const i = e.target.dataset.way;
+    if (i === undefined || !window.studio.answer.way_out) return;
+    Object.assign(state, window.studio.answer.way_out.options[Number(i)].patch);
+    renderInputs();
+    changed();
+  });
+  // Pins from a link: their answers, one after the other.
+  (async () => { for (const p of pins) { p.answer = await post(p.state); renderCompare(); } })();
+  changed();
+})();
