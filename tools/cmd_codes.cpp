@@ -28,7 +28,7 @@ void print_cause(std::ostream& out, const CauseDefinition& c) {
 }
 
 void print_event(std::ostream& out, const EventDefinition& e) {
-  out << fmt::format("event 0x{:04X}: {} ({})\n", e.code, e.name, e.section);
+  out << fmt::format("event 0x{:04X}: {}, manual {}\n", e.code, e.name, e.section);
 }
 
 void print_all(std::ostream& out) {

@@ -92,8 +92,8 @@ function range(rows, min_half) {
 }
 
 // The plots of a port: title with unit and legend above each (HTML, outside
-// the canvas), no axis titles inside the chart, so that no title ever sits
-// on a tick label (issue 39: "deg-0.005").
+// the canvas) instead of a rotated y-axis title, which sat on the tick
+// labels (issue 39: "deg-0.005"); the time axis titled below its ticks.
 const PLOTS = [
   { key: 'pos', title: 'position and setpoint / deg', labels: ['position', 'setpoint'], colors: ['#1f2937', '#16a34a'],
     min_half: 1, of: (s) => [s.position_deg, s.setpoint_deg] },
@@ -137,17 +137,12 @@ class PortView {
     this.facts = el('div', { class: 'facts' });
     this.errBox = el('div', { class: 'error', id: id('error') });
     const charts = el('div', { class: 'charts' });
-    this.plots = {};
-    for (const d of PLOTS) {
+    const chartDivs = PLOTS.map((d) => {
       const legend = el('div', { class: 'chart-legend' });
       const chart = el('div', { class: 'chart', id: id('chart-' + d.key) });
       charts.append(el('div', { class: 'chart-title' }, d.title), legend, chart);
-      this.plots[d.key] = new Dygraph(chart, [[0, ...d.labels.map(() => 0)]], {
-        labels: ['t / s', ...d.labels], colors: d.colors, legend: 'always', labelsDiv: legend, axisLabelFontSize: 11,
-        strokeWidth: 1.5, xAxisHeight: 20,
-        axes: { x: { pixelsPerLabel: 60 },
-                y: { axisLabelWidth: 56, pixelsPerLabel: 16, axisLabelFormatter: (v) => String(Number(v.toPrecision(3))) } } });
-    }
+      return [d, chart, legend];
+    });
     this.target = el('input', { id: id('target'), type: 'number', value: '90', step: '0.1' });
     this.pset = el('input', { id: id('pset'), type: 'number', value: '1', min: '0', max: '7' });
     this.torqueIn = el('input', { id: id('ext-torque'), type: 'number', value: '0.3', step: '0.05' });
@@ -187,6 +182,15 @@ class PortView {
       el('div', { class: 'row' }, el('div', { class: 'side' }, this.dial, this.facts), charts),
       controls, this.errBox, this.editor.root, logBox);
     document.getElementById('ports').append(this.root);
+    this.plots = {}; // drawn once the card is laid out: dygraphs measures its box
+    for (const [d, chart, legend] of chartDivs) {
+      this.plots[d.key] = new Dygraph(chart, [[0, ...d.labels.map(() => 0)]], {
+        labels: ['t / s', ...d.labels], colors: d.colors, legend: 'always', labelsDiv: legend, axisLabelFontSize: 11,
+        xlabel: 't / s', xLabelHeight: 16,
+        strokeWidth: 1.5, xAxisHeight: 20,
+        axes: { x: { pixelsPerLabel: 60 },
+                y: { axisLabelWidth: 56, pixelsPerLabel: 16, axisLabelFormatter: (v) => String(Number(v.toPrecision(3))) } } });
+    }
     this.activeEvents = new Map(); // code -> label, while it is pending
     this.onSummary(info);
     this.refreshFaults();
@@ -357,6 +361,7 @@ class ParameterEditor {
     const g = this.group.value;
     const id = this.view.id;
     this.body.replaceChildren();
+    this.now = new Map(); // row -> its "now" cell (the catalog's rows are shared by every port)
     this.shown = this.rows.filter((r) => (r.record || 'Settings and diagnostics') === g);
     for (const r of this.shown) {
       const key = `${r.index}-${r.subindex}`;
@@ -365,7 +370,7 @@ class ParameterEditor {
       const write = r.access === 'r' ? el('td', { class: 'l note' }, 'read-only') :
         el('td', { class: 'l' }, input, ' ', el('button', { id: id(`param-${key}-write`),
           onclick: () => this.write(r, input, now) }, 'Write'));
-      r.now = now;
+      this.now.set(r, now);
       const title = r.notes ? `${r.notes} (manual ${r.section})` : `manual ${r.section}`;
       this.body.append(el('tr', { title },
         el('td', { class: 'l' }, r.name), el('td', { class: 'l' }, `${r.index}.${r.subindex}`), now,
@@ -377,11 +382,12 @@ class ParameterEditor {
 
   async readAll() {
     for (const r of this.shown) {
-      if (r.access === 'w') { r.now.textContent = '\u2014'; continue; }
+      const cell = this.now.get(r);
+      if (r.access === 'w') { cell.textContent = '\u2014'; continue; }
       try {
         const v = await api('GET', `/v1/ports/${this.view.p}/parameters/${r.index}/${r.subindex}`);
-        r.now.textContent = typeof v.value === 'number' ? shown(v.value, r.scale) : String(v.value);
-      } catch (e) { r.now.textContent = e.iolink || '?'; r.now.title = e.message; }
+        cell.textContent = typeof v.value === 'number' ? shown(v.value, r.scale) : String(v.value);
+      } catch (e) { cell.textContent = e.iolink || '?'; cell.title = e.message; }
     }
   }
 
