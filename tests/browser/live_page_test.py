@@ -47,12 +47,6 @@ def wait_for(cdp, expr, what, timeout=15):
         cdp.pump(min(end, time.monotonic() + 0.3))
 
 
-def click(cdp, element_id):
-    """A real mouse click, the element scrolled into the viewport first."""
-    cdp.evaluate("document.getElementById(%s).scrollIntoView({block: 'center'}); true" % json.dumps(element_id))
-    cdp.click(element_id)
-
-
 def get(s, path):
     with urllib.request.urlopen(s.http + path, timeout=10) as r:
         return json.load(r)
@@ -100,19 +94,19 @@ def editor(cdp, s):
     wait_for(cdp, "!!document.getElementById('p1-param-65-1-in') && "
                   "document.getElementById('p1-param-65-1-now').textContent === '3000.0'", "65.1 read as 3000.0 deg/s")
     type_into(cdp, "p1-param-65-1-in", "65.1")
-    click(cdp, "p1-param-65-1-write")
+    cdp.click("p1-param-65-1-write")
     wait_for(cdp, "document.getElementById('p1-param-status').textContent.includes('written')", "the write confirmed")
     check(get(s, "/v1/ports/1/parameters/65/1")["value"] == 651, "65.1 deg/s did not arrive as raw 651")
     check(cdp.evaluate("document.getElementById('p1-param-65-1-now').textContent") == "65.1", "the page does not show 65.1")
     type_into(cdp, "p1-param-65-1-in", "5000")
-    click(cdp, "p1-param-65-1-write")
+    cdp.click("p1-param-65-1-write")
     wait_for(cdp, "document.getElementById('p1-param-status').textContent.includes('refused')", "the refusal shown")
     text = cdp.evaluate("document.getElementById('p1-param-status').textContent")
     check("0x8030" in text and "Parameter value out of range" in text, "refusal not named: %r" % text)
     check(get(s, "/v1/ports/1/parameters/65/1")["value"] == 651, "a refused write changed the value")
     # Back to the factory speed for the move below.
     type_into(cdp, "p1-param-65-1-in", "3000")
-    click(cdp, "p1-param-65-1-write")
+    cdp.click("p1-param-65-1-write")
     wait_for(cdp, "document.getElementById('p1-param-65-1-now').textContent === '3000.0'", "3000 deg/s written back")
 
 
@@ -120,13 +114,13 @@ def blocked_flange(cdp, s):
     """The injected fault is visible; the tracking error is named with its remedy in the event log."""
     check(not cdp.evaluate("getComputedStyle(document.getElementById('p1-injected')).display !== 'none' && "
                            "document.getElementById('p1-injected').offsetHeight > 0"), "a fault shown before any was injected")
-    click(cdp, "p1-block")
+    cdp.click("p1-block")
     wait_for(cdp, "document.getElementById('p1-injected').offsetHeight > 0 && "
                   "document.getElementById('p1-injected').textContent.includes('flange blocked')", "the injected fault shown")
-    click(cdp, "p1-motor-on")
+    cdp.click("p1-motor-on")
     wait_for(cdp, "document.getElementById('p1-state').textContent === 'Ready'", "Ready after Motor on")
     type_into(cdp, "p1-target", "120")
-    click(cdp, "p1-move")
+    cdp.click("p1-move")
     wait_for(cdp, "[...document.querySelectorAll('#p1-log tr.appears')].some((r) => "
                   "r.textContent.toLowerCase().includes('position tracking error (114.5)'))", "the tracking error logged")
     row = cdp.evaluate("[...document.querySelectorAll('#p1-log tr.appears')].filter((r) => "
