@@ -104,7 +104,7 @@ struct EventDefinition {
 };
 
 // Every cause the module reports (issue 39), the manual's tables 7.2 and 7.3
-// word for word: the error or warning byte's bit (2.4), the subindex of
+// in its words (A-CODES-1): the error or warning byte's bit (2.4), the subindex of
 // 114 / 115 that holds the cause code (7.1), the code, the manual's "Error
 // cause" and "Description / Remedy". The one table of names for the run
 // output, JUnit, reports, serve, Python and docs/errors.md

@@ -51,7 +51,7 @@ std::string codes_markdown() {
       "editor, Python (`IsduError.name`, `IsduError.remedy`) and this page.\n"
       "`sreh-twin codes CODE` prints one (`0x8CA3`, `0x8030`, `114.5`).\n\n"
       "## Errors (process data error byte, index 114)\n\n"
-      "The manual's table 7.2, word for word; the bit is that of the error byte\n"
+      "The manual's table 7.2 in its words (A-CODES-1); the bit is that of the error byte\n"
       "(manual 2.4), the index the subindex of 114 that holds the code (7.1).\n"
       "Bits 7..3 switch the motor off, bit 2 only for codes 1, 16 and 17, bits 1\n"
       "and 0 never (2.4).\n\n";

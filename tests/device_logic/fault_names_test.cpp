@@ -52,7 +52,9 @@ TEST(FaultNames, EveryEventFindsItsCauses) {
   const auto check = [](const EventDefinition& e) {
     ASSERT_EQ(find_event(e.code), &e);
     EXPECT_FALSE(causes_of_bit(e.type, e.bit).empty()) << e.name;
-    if (e.cause_code) EXPECT_NE(find_cause(e.type, e.bit, e.cause_code), nullptr) << e.name;
+    if (e.cause_code) {
+      EXPECT_NE(find_cause(e.type, e.bit, e.cause_code), nullptr) << e.name;
+    }
   };
   for (const EventDefinition& e : kErrorEvents) check(e);
   for (const EventDefinition& e : kWarningEvents) check(e);
