@@ -23,6 +23,7 @@ packages=(
   mosquitto mbpoll curl python3-pymodbus                  # serve's tests: broker and real PLC-style clients
   python3-serial-asyncio                                  # pymodbus' client package imports it even for TCP (only Recommended)
   python3-yaml                                            # serve's OpenAPI test reads docs/api/openapi.yaml
+  python3-junitparser                                     # run --junit read back by a real JUnit consumer (tests/tools/junit_check.sh)
   pybind11-dev python3-pybind11 python3-dev python3-numpy python3-pytest  # Python API (headers: python3-dev) and its tests, Debian's /usr/bin/python3
   parallel                                                # sharded sweeps and scenario runs
   slurmctld slurmd slurm-client munge                     # tests/scale_out: a one-node Slurm started by hand (no service is started at install)

@@ -99,26 +99,116 @@ struct EventDefinition {
   EventType type;
   std::string_view name;
   std::string_view section; // manual section of the cause
+  uint8_t bit;              // of the error / warning byte (manual 2.4)
+  uint8_t cause_code = 0;   // the one cause it stands for; 0: every cause of the bit
 };
+
+// Every cause the module reports (issue 39), the manual's tables 7.2 and 7.3
+// in its words (A-CODES-1): the error or warning byte's bit (2.4), the subindex of
+// 114 / 115 that holds the cause code (7.1), the code, the manual's "Error
+// cause" and "Description / Remedy". The one table of names for the run
+// output, JUnit, reports, serve, Python and docs/errors.md
+// (device_logic/fault_names.hpp looks things up in it).
+struct CauseDefinition {
+  EventType type;
+  uint8_t bit;      // of the error / warning byte (manual 2.4)
+  uint8_t subindex; // 114.subindex / 115.subindex (manual 7.1)
+  uint8_t code;     // the subindex's value
+  std::string_view name;
+  std::string_view remedy;
+};
+// A-CODES-1: 114.2 code 1 has no remedy in the manual (an empty cell, in DE
+// and EN); 115.2 code 2 shares the cell of code 1 (a merged cell).
+inline constexpr std::string_view kNoRemedyGiven = "The manual gives no remedy for this cause; contact Afag.";
+inline constexpr std::array<CauseDefinition, 24> kCauses{{
+    {EventType::Error, 7, 1, 1, "Internal configuration faulty", "Contact Afag."},
+    {EventType::Error, 6, 2, 1, "Output stage overcurrent", kNoRemedyGiven},
+    {EventType::Error, 6, 2, 2, "Trajectory error", "Contact Afag."},
+    {EventType::Error, 6, 2, 3, "Error in the state machine", "Contact Afag."},
+    {EventType::Error, 6, 2, 255, "Unknown error", "Contact Afag."},
+    {EventType::Error, 5, 3, 1, "Overtemperature (>= 75 \u00b0C)",
+     "Check the thermal connection. Longer pauses between movements. Check the mechanical structure."},
+    {EventType::Error, 4, 4, 1, "Motor voltage too low",
+     "The motor voltage has left the valid range when the motor is switched on. When the motor is switched off, "
+     "this only results in a warning. Check the parameter set, especially the load. Check the motor supply."},
+    {EventType::Error, 4, 4, 2, "Motor voltage too high",
+     "Check which other units are connected to the motor supply and load it or feed back to it. Possibly set the "
+     "lower/upper voltage limit less restrictively (provided this is permissible for the power supply unit and all "
+     "other connected loads). In case of overvoltage: install more capacity on the motor supply or install a chopper."},
+    {EventType::Error, 3, 5, 64, "Position tracking error",
+     "Check the parameter set, especially the load. Check the motor supply. With reduced motor voltage (< 24 V), "
+     "the maximum achievable speed is reduced proportionally to the voltage. Check that the speed is not set too "
+     "high. Check the mechanical structure (collision, friction)."},
+    {EventType::Error, 2, 6, 1, "Motor unexpectedly switched off",
+     "The motor must not be switched off in the Busy and Done states."},
+    {EventType::Error, 2, 6, 2, "Operation aborted",
+     "The Move process data bit must remain set until the Done state is reached."},
+    {EventType::Error, 2, 6, 4, "Move command from invalid state",
+     "An operation may only be started in the Ready state."},
+    {EventType::Error, 2, 6, 5, "SetOrigin from invalid state",
+     "Zero setting may only be carried out in the Ready state."},
+    {EventType::Error, 2, 6, 6, "Move command and SetOrigin simultaneously",
+     "The two bits Move and SetOrigin must not be set at the same time."},
+    {EventType::Error, 2, 6, 16, "Connection interruption IO-Link",
+     "A connection interruption is only considered an error if the motor was switched on before the "
+     "interruption. Check the wiring. Check the configuration of the IO-Link master. Check the PLC."},
+    {EventType::Error, 2, 6, 17, "Process data outputs marked as invalid",
+     "Invalid process data outputs are only evaluated as errors if the motor was switched on before the "
+     "interruption. Check the IO-Link master and the PLC."},
+    {EventType::Error, 1, 7, 1, "Invalid target position",
+     "The target position is outside the specified range. Check the PLC programme. Check the position range "
+     "(index 81). Check that the Relative and Shortest Path process data bits have been set correctly before "
+     "starting the movement."},
+    {EventType::Error, 1, 7, 2, "Invalid parameter set",
+     "Check whether a valid parameter set (0 to 7) has been selected in the process data. This value must be "
+     "present at the latest when Move is set and at least until the module changes to the Busy state."},
+    {EventType::Error, 1, 7, 3, "Relative and Shortest Path simultaneously",
+     "The two modes are mutually exclusive: at most one of the two bits may be set. The bits must be present at "
+     "the latest when Move is set and at least until the module changes to the Busy state."},
+    {EventType::Error, 0, 8, 1, "Settling-timeout",
+     "Check the parameter set, especially the load. Check the motor supply. Check the mechanical structure "
+     "(collision, friction). If necessary, set the timeout in the selected parameter set higher (index 64..71)."},
+    {EventType::Warning, 7, 1, 1, "Temperature warning (>= 70 \u00b0C)", "See overtemperature (error index 114.3)."},
+    {EventType::Warning, 6, 2, 1, "Motor voltage too low", "See voltage error (error index 114.4)."},
+    {EventType::Warning, 6, 2, 2, "Motor voltage too high", "See voltage error (error index 114.4)."},
+    {EventType::Warning, 5, 3, 1, "Exit position tolerance window",
+     "After the positioning was completed, the tolerance window was left again. This can occur if the waiting "
+     "time is set too short and therefore the position is found to be stable too early: increase the waiting time "
+     "in the parameter set (index 64..71). Leaving the tolerance window can also be caused by external influences "
+     "(a moment acting on the flange; vibration that cannot be sufficiently compensated, especially with large "
+     "loads): ideally remedy the external influence; depending on the accuracy requirements, the tolerance window "
+     "may be set less narrow. The warning disappears automatically on the next operation or as soon as the motor "
+     "is switched off."},
+}};
+
+// The bits of the error and warning bytes as the manual's bit-field tables
+// name them (2.4), by bit number; empty: not used.
+inline constexpr std::array<std::string_view, 8> kErrorBitNames{
+    "Positioning error", "Invalid parameter", "Invalid command / communication", "Position tracking error",
+    "Motor voltage",     "Temperature error", "Final stage/trajectory",          "Device error"};
+inline constexpr std::array<std::string_view, 8> kWarningBitNames{
+    "", "", "", "", "", "Positioning warning", "Motor voltage", "Temperature warning"};
 // By error bit number (manual 2.4).
 inline constexpr std::array<EventDefinition, 8> kErrorEvents{{
-    {0x8CA0, EventType::Error, "Positioning error", "7.2 (114.8)"},
-    {0x8CA1, EventType::Error, "Invalid parameter", "7.2 (114.7)"},
-    {0x8CA2, EventType::Error, "Invalid command / communication", "7.2 (114.6)"},
-    {0x8CA3, EventType::Error, "Position tracking error", "7.2 (114.5)"},
-    {0x5100, EventType::Error, "Motor voltage (general power supply fault)", "7.2 (114.4)"},
-    {0x4000, EventType::Error, "Temperature fault", "7.2 (114.3)"},
-    {0x8CA6, EventType::Error, "Output stage / trajectory / state machine", "7.2 (114.2)"},
-    {0x6320, EventType::Error, "Device error (parameter / configuration)", "7.2 (114.1)"},
+    {0x8CA0, EventType::Error, "Positioning error", "7.2 (114.8)", 0},
+    {0x8CA1, EventType::Error, "Invalid parameter", "7.2 (114.7)", 1},
+    {0x8CA2, EventType::Error, "Invalid command / communication", "7.2 (114.6)", 2},
+    {0x8CA3, EventType::Error, "Position tracking error", "7.2 (114.5)", 3},
+    {0x5100, EventType::Error, "Motor voltage (general power supply fault)", "7.2 (114.4)", 4},
+    {0x4000, EventType::Error, "Temperature fault", "7.2 (114.3)", 5},
+    {0x8CA6, EventType::Error, "Output stage / trajectory / state machine", "7.2 (114.2)", 6},
+    {0x6320, EventType::Error, "Device error (parameter / configuration)", "7.2 (114.1)", 7},
 }};
 inline constexpr EventDefinition kTemperatureWarningEvent{0x4210, EventType::Warning,
-                                                          "Device temperature over-run", "7.3 (115.1)"};
+                                                          "Device temperature over-run", "7.3 (115.1)", 7};
 inline constexpr EventDefinition kVoltageLowWarningEvent{0x5111, EventType::Warning,
-                                                         "Primary supply voltage under-run", "7.3 (115.2)"};
+                                                         "Primary supply voltage under-run", "7.3 (115.2)", 6,
+                                                         cause::kVoltageLow};
 inline constexpr EventDefinition kVoltageHighWarningEvent{0x5110, EventType::Warning,
-                                                          "Primary supply voltage over-run", "7.3 (115.2)"};
+                                                          "Primary supply voltage over-run", "7.3 (115.2)", 6,
+                                                          cause::kVoltageHigh};
 inline constexpr EventDefinition kToleranceWindowWarningEvent{0x8CB5, EventType::Warning,
-                                                              "Left the tolerance window", "7.3 (115.3)"};
+                                                              "Left the tolerance window", "7.3 (115.3)", 5};
 inline constexpr std::array<EventDefinition, 4> kWarningEvents{
     {kTemperatureWarningEvent, kVoltageLowWarningEvent, kVoltageHighWarningEvent, kToleranceWindowWarningEvent}};
 

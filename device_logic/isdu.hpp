@@ -2,6 +2,7 @@
 // (ErrorCode and AdditionalCode as one 16-bit value, iolink.md).
 #pragma once
 #include <cstdint>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -38,6 +39,16 @@ struct IsduResult {
 
 inline IsduResult isdu_error(uint16_t code) { return IsduResult{code, {}}; }
 inline IsduResult isdu_data(std::vector<uint8_t> data) { return IsduResult{kIsduOk, std::move(data)}; }
+
+// One row of the table of ISDU error codes (isdu.cpp, docs/errors.md).
+struct IsduErrorDefinition {
+  uint16_t code;
+  std::string_view name;   // IO-Link's (iolink.md)
+  std::string_view when;   // when this module answers it
+  std::string_view remedy; // what to do
+};
+std::span<const IsduErrorDefinition> isdu_errors();
+const IsduErrorDefinition* find_isdu_error(uint16_t code); // nullptr for a code not in the table
 
 // The IO-Link name of an ISDU error code ("Parameter value out of range"
 // for 0x8030; iolink.md, IO-Link spec Annex C); "ISDU error" for a code

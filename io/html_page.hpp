@@ -20,6 +20,11 @@ enum class NonAscii { Keep, AsReference };
 // one escaper of the project (HTML pages, SVG plots, the IODD export).
 std::string html_escape(std::string_view text, NonAscii non_ascii = NonAscii::Keep);
 
+// The style of every page (CSS, no <style> tag): the reports put it into
+// their <head> (renders/figure.hpp page_head), serve's live page too, under
+// its own app.css (issue 39: one look).
+extern const char* const kPageCss;
+
 // The print stylesheet every page carries (A4, no plot or table cut by a
 // page break), after the page's own <head> content.
 extern const char* const kPrintCss;

@@ -75,12 +75,14 @@ class IsduError(base):
     """An ISDU request refused by the device. ``code`` is the IO-Link error
     code (e.g. 0x8030 value out of range, 0x8011 index not available),
     ``name`` its IO-Link name ("Parameter value out of range"),
-    ``index`` / ``subindex`` the request."""
-    def __init__(self, code, index, subindex, message=None, name=None):
+    ``remedy`` what to do (docs/errors.md), ``index`` / ``subindex`` the
+    request."""
+    def __init__(self, code, index, subindex, message=None, name=None, remedy=None):
         self.code = int(code)
         self.index = int(index)
         self.subindex = int(subindex)
         self.name = name or "ISDU error"
+        self.remedy = remedy
         super().__init__(message or f"ISDU {index}.{subindex}: error 0x{self.code:04X} ({self.name})")
 )PY", ns);
   isdu_error_type() = ns["IsduError"];

@@ -31,12 +31,15 @@ namespace {
 constexpr uint16_t kIndexSystemCommand = 2; // manual 6.6
 
 // "ISDU 65.1 refused: error 0x8030 (Parameter value out of range)"; .name
-// carries the IO-Link name alone (issue 29).
+// carries the IO-Link name alone (issue 29), .remedy what to do (issue 39).
 [[noreturn]] void raise_isdu(uint16_t code, uint16_t index, uint8_t subindex) {
   const std::string text = "ISDU " + std::to_string(index) + "." + std::to_string(subindex) +
                            " refused: error " + isdu_error_label(code);
+  const IsduErrorDefinition* row = find_isdu_error(code); // the one table (issue 39)
   PyErr_SetObject(isdu_error_type().ptr(),
-                  pyb::make_tuple(code, index, subindex, text, std::string(isdu_error_name(code))).ptr());
+                  pyb::make_tuple(code, index, subindex, text, std::string(isdu_error_name(code)),
+                                  row ? pyb::object(pyb::str(std::string(row->remedy))) : pyb::object(pyb::none()))
+                      .ptr());
   throw pyb::error_already_set();
 }
 

@@ -6,38 +6,11 @@
 
 #include <fmt/format.h>
 
+#include "io/html_page.hpp"
 #include "renders/report_assets.hpp" // generated from libjs-dygraphs (renders/CMakeLists.txt)
 
 namespace sreh::report {
 
-const char* const kPageCss = R"css(
-body{font-family:system-ui,-apple-system,"Segoe UI",sans-serif;margin:24px auto;max-width:1240px;color:#222;padding:0 16px}
-h1{font-size:22px;margin-bottom:4px;overflow-wrap:anywhere}h2{font-size:17px;margin-top:28px;border-bottom:1px solid #ddd;padding-bottom:4px}
-.result{display:inline-block;padding:3px 12px;border-radius:4px;font-weight:bold;color:#fff}
-.pass,.ok{background:#2e7d32}.fail,.bad{background:#c62828}
-table{border-collapse:collapse;font-size:13px;display:block;overflow-x:auto;max-width:100%}td,th{border:1px solid #ccc;padding:3px 8px;text-align:right}
-th{background:#f2f2f2}td.l,th.l{text-align:left}td.okc{color:#2e7d32;font-weight:bold}td.badc{color:#c62828;font-weight:bold}
-svg.plot{display:block;margin:10px 0;width:100%;height:auto}video,img.video{max-width:100%;height:auto;background:#000}
-pre,code.cmd{background:#f7f7f7;padding:6px 8px;font-size:13px;overflow-x:auto;display:block;white-space:pre-wrap;overflow-wrap:anywhere}
-p,li{overflow-wrap:anywhere}
-.note{color:#666;font-size:12px}ul.failed li{color:#c62828;margin:3px 0}
-.fig{margin:12px 0}.fig .dy{display:none;width:100%;height:340px}
-.fig .dytitle,.fig .dylegend,.fig .dykey{display:none;font-size:13px}.fig .dytitle{font-weight:bold;font-size:14px;margin:4px 0}
-.fig .dylegend{min-height:1.3em}.fig .dykey span.k{margin-right:14px;white-space:nowrap}
-.fig .dykey i{display:inline-block;width:18px;vertical-align:middle;margin-right:4px}
-.fig.live .dy,.fig.live .dytitle,.fig.live .dylegend,.fig.live .dykey{display:block}.fig.live .static{display:none}
-.fig .hint{display:none;color:#666;font-size:11px}.fig.live .hint{display:block}
-.verdict{border:1px solid #ccc;border-radius:6px;padding:8px 14px;margin:12px 0;break-inside:avoid}
-.verdict table.bars{display:table;width:100%;border:none}.verdict table.bars td{border:none;padding:2px 8px;vertical-align:middle}
-.verdict td.bar{width:45%}.verdict .track{height:14px}.verdict table.bars td:first-child,.verdict table.bars td:nth-child(3){white-space:nowrap}.verdict dl{display:grid;grid-template-columns:max-content 1fr;gap:2px 14px;margin:8px 0;font-size:13px}
-.verdict dt{color:#555}.verdict dd{margin:0}
-table.verdicts td.mini{min-width:150px;white-space:nowrap}table.verdicts .track{display:inline-block;width:90px;height:10px;margin-right:6px;vertical-align:middle}
-.verdict .track,table.verdicts .track{position:relative;background:#eee;border-radius:3px}
-.verdict .fill,table.verdicts .fill{position:absolute;left:0;top:0;bottom:0;border-radius:3px}
-.fill.okb{background:#43a047}.fill.warnb{background:#f9a825}.fill.badb{background:#e53935}
-.verdict .mark,table.verdicts .mark{position:absolute;top:-3px;bottom:-3px;width:2px;background:#222}.mark.req{background:#7b1fa2!important}
-@media print{.fig.live .dy,.fig.live .hint,.fig.live .dytitle,.fig.live .dylegend,.fig.live .dykey{display:none}.fig.live .static{display:block}}
-)css";
 namespace {
 
 constexpr const char* kHelperJs = R"js(
@@ -97,7 +70,7 @@ std::string interactive_head() {
                      find_report_asset("dygraph.min.js"), kHelperJs);
 }
 
-std::string page_head() { return fmt::format("<style>{}</style>\n{}", kPageCss, interactive_head()); }
+std::string page_head() { return fmt::format("<style>{}</style>\n{}", io::kPageCss, interactive_head()); }
 
 namespace {
 

@@ -9,14 +9,11 @@
 
 namespace sreh::report {
 
-// CSS shared by every report page.
-extern const char* const kPageCss;
-
 // <style> and <script> for the page's <head>: dygraphs and the small helper
 // that draws a figure. Once per page, before any figure.
 std::string interactive_head();
 
-// The <head> content of every report page: kPageCss and interactive_head(),
+// The <head> content of every report page: io::kPageCss and interactive_head(),
 // for io::html_page / io::html_page_open (the one page shell).
 std::string page_head();
 

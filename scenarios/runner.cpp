@@ -1,6 +1,7 @@
 #include "scenarios/runner.hpp"
 
 #include "device_logic/device_snapshot.hpp"
+#include "device_logic/fault_names.hpp"
 #include "device_logic/parameter_ids.hpp"
 
 #include <algorithm>
@@ -109,8 +110,8 @@ class ScenarioRun {
     const Snapshot now = take_snapshot(*twin_);
     std::string failure = fmt::format("step {} (line {}{}): {}: {} at t={:.3f} s [{}, {:.3f} deg, error_code {}, warning_code {}]",
                                       step, loc.line, pass_, description, why, twin_->time_s(),
-                                      state_name(now.state), now.position_deg, now.in.error_code,
-                                      now.in.warning_code);
+                                      state_name(now.state), now.position_deg, error_byte_text(now.in.error_code),
+                                      warning_byte_text(now.in.warning_code));
     if (o_.failure_sink) o_.failure_sink(failure);
     else r_.failures.push_back(std::move(failure));
     if (s_.stop_on_failure) throw StopRun{};

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "device_logic/fault_names.hpp"
 #include "device_logic/units.hpp"
 
 namespace sreh {
@@ -40,6 +41,14 @@ class Evaluator {
     std::string why;
     const bool ok = want->holds(actual, vars_, &why);
     add(name, want->str(), fmt::format("{:.{}f}", actual, decimals) + (why.empty() ? "" : " (" + why + ")"), ok);
+  }
+  // A code byte (manual 2.4): the number, and the bits' names (issue 39).
+  void code(const char* name, const std::optional<Comparison>& want, uint8_t actual, std::string (*names)(uint8_t)) {
+    if (!want) return;
+    std::string why;
+    const bool ok = want->holds(actual, vars_, &why);
+    const std::string named = actual == 0 ? "" : " (" + names(actual) + ")";
+    add(name, want->str(), fmt::format("{}{}", actual, named) + (why.empty() ? "" : " (" + why + ")"), ok);
   }
   void flag(const char* name, const std::optional<bool>& want, bool actual) {
     if (!want) return;
@@ -81,8 +90,8 @@ Evaluation evaluate(const Conditions& c, const Snapshot& s, const Variables& var
   ev.one_of("state", c.state, s.state, state_name);
   ev.number("position_deg", c.position_deg, s.position_deg, 4);
   ev.number("position_raw", c.position_raw, static_cast<double>(s.in.position_raw), 0);
-  ev.number("error_code", c.error_code, s.in.error_code, 0);
-  ev.number("warning_code", c.warning_code, s.in.warning_code, 0);
+  ev.code("error_code", c.error_code, s.in.error_code, error_byte_names);
+  ev.code("warning_code", c.warning_code, s.in.warning_code, warning_byte_names);
   ev.flag("error", c.error, s.in.error);
   ev.flag("warning", c.warning, s.in.warning);
   ev.one_of("led", c.led, s.telemetry.led, led_name);

@@ -21,6 +21,7 @@
 #include "serve/http_events.hpp"
 #include "serve/http_front.hpp"
 #include "serve/listen_socket.hpp"
+#include "serve/parameter_catalog.hpp"
 #include "serve/port_api.hpp"
 #include "serve/web_assets.hpp"
 
@@ -51,6 +52,7 @@ constexpr Route kRoutes[] = {
     {"GET", "/v1/ports/{p}/faults", R"(/v1/ports/([1-9]\d?)/faults)"},
     {"POST", "/v1/ports/{p}/faults", R"(/v1/ports/([1-9]\d?)/faults)"},
     {"GET", "/v1/stats", "/v1/stats"},
+    {"GET", "/v1/parameters", "/v1/parameters"}, // the parameter table (issue 39)
 };
 
 void send_json(httplib::Response& res, int status, const Json& j) {
@@ -73,9 +75,11 @@ std::string content_type_for(std::string_view name) {
 }
 
 // The live page: the one page shell (io/html_page.hpp) around web/live_body.html;
-// its look (app.css) and charts (dygraphs) are served from /assets.
+// the reports' look (io::kPageCss, issue 39), then its own (app.css) and
+// charts (dygraphs) from /assets.
 std::string live_page() {
   static const std::string page = io::html_page("sreh-twin: virtual IO-Link master",
+                                                std::string("<style>") + io::kPageCss + "</style>\n" +
                                                 "<link rel=\"stylesheet\" href=\"/assets/dygraph.min.css\">\n"
                                                 "<link rel=\"stylesheet\" href=\"/assets/app.css\">\n"
                                                 "<link rel=\"icon\" href=\"data:,\">\n",
@@ -284,6 +288,7 @@ struct Front<HttpOptions>::Impl {
       for (int p = 1; p <= hub.port_count(); ++p) list.push_back(hub.with_port(p, [&](Hub::Port& port) { return port_summary(p, port); }));
       return send_json(res, 200, list);
     }
+    if (path == "/v1/parameters") return send_json(res, 200, parameter_catalog());
     if (path == "/v1/stats") {
       const PacingStats s = hub.stats();
       return send_json(res, 200,

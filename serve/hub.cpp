@@ -4,6 +4,7 @@
 #include "device_logic/parameter_ids.hpp"
 
 #include "device_logic/units.hpp"
+#include "serve/event_names.hpp"
 #include "serve/state_dir.hpp"
 #include "twin/plant.hpp"
 
@@ -123,16 +124,17 @@ void Hub::after_cycle(Port& port) {
       };
       const auto before = entries(port.last_detailed_status);
       const auto after = entries(now);
+      // Each with its name, cause and remedy from the code table (issue 39).
+      const auto device_event = [&](const char* mode, unsigned q, unsigned code) {
+        nlohmann::ordered_json j{{"t_s", t_s}, {"mode", mode}, {"qualifier", fmt::format("0x{:02X}", q)},
+                                 {"code", hex16(code)}};
+        j.update(describe_device_event(twin, static_cast<uint16_t>(code)));
+        push_event(port, "device_event", j.dump());
+      };
       for (const auto& [q, code] : after)
-        if (!before.count({q, code}))
-          push_event(port, "device_event",
-                     nlohmann::json{{"t_s", t_s}, {"mode", "appears"}, {"qualifier", fmt::format("0x{:02X}", q)},
-                                    {"code", hex16(code)}}.dump());
+        if (!before.count({q, code})) device_event("appears", q, code);
       for (const auto& [q, code] : before)
-        if (!after.count({q, code}))
-          push_event(port, "device_event",
-                     nlohmann::json{{"t_s", t_s}, {"mode", "disappears"}, {"qualifier", fmt::format("0x{:02X}", q)},
-                                    {"code", hex16(code)}}.dump());
+        if (!after.count({q, code})) device_event("disappears", q, code);
       port.last_detailed_status = std::move(now);
     }
     nlohmann::json j{{"t_s", t_s},

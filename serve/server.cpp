@@ -294,6 +294,13 @@ int run_serve(const ServeOptions& o, std::ostream& out, std::ostream& err) {
       err << "sreh-twin serve: warning: SCHED_FIFO refused (needs CAP_SYS_NICE); pacing with normal scheduling\n";
   }
   out << ready.dump() << std::endl; // one line: where to connect (ports chosen by the OS included)
+  // The same for a person (issue 39): the page to open. A wildcard address
+  // is reachable on this machine as localhost.
+  const bool wildcard = o.http.host == "0.0.0.0" || o.http.host == "::" || o.http.host.empty();
+  err << fmt::format("sreh-twin serve: open http://{}/ for the live page (HTTP API /v1/..., Modbus TCP {}{})\n",
+                     endpoint_text(wildcard ? "127.0.0.1" : o.http.host, fronts.http->bound_port()),
+                     endpoint_text(o.modbus.host, fronts.modbus->bound_port()),
+                     wildcard ? "; listening on every interface: use this machine's name from elsewhere" : "");
 
   const std::optional<int> sig = wait_for_stop(o.duration_s);
   // Fronts first (no new requests), then the clock.

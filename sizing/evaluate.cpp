@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "device_logic/fault_names.hpp"
 #include "device_logic/faults.hpp"
 #include "device_logic/motor_model.hpp"
 #include "device_logic/parameter_ids.hpp"
@@ -26,26 +27,22 @@
 
 namespace sreh::sizing {
 
-// Shared with the cycle evaluation (run_parts.hpp).
-std::string error_text(uint8_t code) {
-  static constexpr const char* kNames[8] = {
-      "settling timeout (114.8)",        "invalid parameter (114.7)", "invalid command (114.6)",
-      "position tracking error (114.5)", "motor voltage (114.4)",     "overtemperature (114.3)",
-      "output stage (114.2)",            "device error (114.1)"};
+namespace {
+// "error 0x08: position tracking error (114.5)": the one table of names (issue 39).
+std::string code_text(EventType type, uint8_t code) {
   std::string s;
-  for (int bit = 0; bit < 8; ++bit) {
-    if (code & (1u << bit)) s += (s.empty() ? "" : ", ") + std::string(kNames[bit]);
+  for (uint8_t bit = 0; bit < 8; ++bit) {
+    if (!(code & (1u << bit))) continue;
+    s += (s.empty() ? "" : ", ") + fmt::format("{} ({})", mid_sentence(bit_name(type, bit)),
+                                               cause_index(type, cause_subindex(type, bit)));
   }
-  return fmt::format("error 0x{:02X}: {}", code, s);
+  return fmt::format("{} 0x{:02X}: {}", type == EventType::Error ? "error" : "warning", code, s);
 }
+} // namespace
 
-std::string warning_text(uint8_t code) {
-  std::string s;
-  if (code & (1u << static_cast<int>(WarningBit::Positioning))) s += "left the tolerance window after Done (115.3)";
-  if (code & (1u << static_cast<int>(WarningBit::MotorVoltage))) s += std::string(s.empty() ? "" : ", ") + "motor voltage (115.2)";
-  if (code & (1u << static_cast<int>(WarningBit::Temperature))) s += std::string(s.empty() ? "" : ", ") + "temperature (115.1)";
-  return fmt::format("warning 0x{:02X}: {}", code, s);
-}
+// Shared with the cycle evaluation (run_parts.hpp).
+std::string error_text(uint8_t code) { return code_text(EventType::Error, code); }
+std::string warning_text(uint8_t code) { return code_text(EventType::Warning, code); }
 
 void write_all(Twin& twin, const std::vector<IsduWrite>& writes) {
   for (const IsduWrite& w : writes) {

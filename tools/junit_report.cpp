@@ -19,6 +19,22 @@ constexpr std::size_t kMaxFailures = 100;
 // 1.0) escaped as the CLI echoes them, then & < > " ' (io/html_page.hpp).
 std::string xml(const std::string& raw) { return io::html_escape(io::escape_control(raw)); }
 
+// Element text (<failure>, <system-out>): as xml(), but each line its own
+// line (issue 39: CI servers show the log as written, not as one line with
+// "\n" in it).
+std::string xml_lines(const std::string& raw) {
+  std::string out;
+  std::size_t from = 0;
+  while (from < raw.size()) {
+    std::size_t to = raw.find('\n', from);
+    if (to == std::string::npos) to = raw.size();
+    out += xml(raw.substr(from, to - from));
+    if (to < raw.size()) out += '\n';
+    from = to + 1;
+  }
+  return out;
+}
+
 } // namespace
 
 void JunitReport::begin_case(const std::string& file, const std::string& scenario_name) {
@@ -84,12 +100,12 @@ void JunitReport::write(const std::string& path) const {
         std::string text;
         for (const std::string& f : c.failures) text += f + "\n";
         out << fmt::format("      <{} message=\"{}\" type=\"{}\">{}</{}>\n", c.error ? "error" : "failure",
-                           xml(c.failures.front()), c.error ? "bad input" : "check failed", xml(text),
+                           xml(c.failures.front()), c.error ? "bad input" : "check failed", xml_lines(text),
                            c.error ? "error" : "failure");
       }
       std::string text = c.file + ": " + c.scenario_name + "\n" + c.checks;
       if (c.checks_left_out > 0) text += fmt::format("... and {} more checks\n", c.checks_left_out);
-      out << "      <system-out>" << xml(text) << "</system-out>\n";
+      out << "      <system-out>" << xml_lines(text) << "</system-out>\n";
       out << "    </testcase>\n";
     }
     out << "  </testsuite>\n</testsuites>\n";

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "device_logic/fault_names.hpp"
 #include "io/text.hpp"
 
 namespace sreh::tools {
@@ -53,7 +54,8 @@ void RunOutput::print(std::ostream& out, const RunResult& r, double wall_s) {
   out << fmt::format("  {} of {} checks held, {} moves, {:.3f} s simulated{}\n", r.checks_held, r.checks_recorded,
                      r.moves_recorded, r.sim_time_s, r.stopped_early ? " (stopped at the first failure)" : "");
   out << fmt::format("  final: {} at {:.3f} deg, error_code {}, warning_code {}\n", state_name(r.final_state.state),
-                     r.final_state.position_deg, r.final_state.error_code, r.final_state.warning_code);
+                     r.final_state.position_deg, error_byte_text(r.final_state.error_code),
+                     warning_byte_text(r.final_state.warning_code));
 }
 
 // The runner handed every failure to the sink: RunResult::failures is empty.

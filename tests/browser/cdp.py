@@ -105,8 +105,9 @@ class Cdp:
         return r["result"].get("value")
 
     def click(self, element_id):
-        """A real mouse click at the element's centre."""
-        box = self.evaluate("(() => { const r = document.getElementById(%s).getBoundingClientRect();"
+        """A real mouse click at the element's centre, scrolled into the viewport first."""
+        box = self.evaluate("(() => { const e = document.getElementById(%s); e.scrollIntoView({block: 'center'});"
+                            " const r = e.getBoundingClientRect();"
                             " return [r.x + r.width / 2, r.y + r.height / 2]; })()" % json.dumps(element_id))
         for kind in ("mousePressed", "mouseReleased"):
             self.send("Input.dispatchMouseEvent", {"type": kind, "x": box[0], "y": box[1], "button": "left",

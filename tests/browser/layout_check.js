@@ -4,6 +4,7 @@
 //   the clipped group is left out: it is cut at the plot area on purpose);
 // - a title, legend, key or axis label of an interactive plot (dygraphs)
 //   outside its figure;
+// - an axis title of an interactive plot on one of its tick labels;
 // - anything wider than the page: the document scrolls sideways, or an
 //   element reaches past the viewport (inside a scrolling box is fine).
 (() => {
@@ -45,6 +46,20 @@
       if (r.left < box.left - slack || r.right > box.right + slack) bad.push(`${fig.id || name(fig)}: ${name(e)} outside its figure`);
       if (e.scrollWidth > e.clientWidth + slack && e.clientWidth > 0 && getComputedStyle(e).overflowX === 'hidden') {
         bad.push(`${fig.id || name(fig)}: ${name(e)} cut (${e.scrollWidth} > ${e.clientWidth})`);
+      }
+    }
+  }
+  // An axis title of an interactive plot on a tick label (issue 39: the live
+  // page's "deg" ran into "-0.005"): the extents of the texts themselves.
+  const textBox = (e) => { const r = document.createRange(); r.selectNodeContents(e); return r.getBoundingClientRect(); };
+  for (const fig of document.querySelectorAll('.fig.live, .chart')) {
+    const titles = [...fig.querySelectorAll('.dygraph-label')].filter((e) => (e.textContent || '').trim());
+    const ticks = [...fig.querySelectorAll('.dygraph-axis-label')].filter((e) => (e.textContent || '').trim());
+    for (const t of titles) {
+      const tr = textBox(t);
+      if (tr.width === 0 && tr.height === 0) continue;
+      for (const k of ticks) {
+        if (overlap(tr, textBox(k))) bad.push(`${fig.id || name(fig)}: axis title ${name(t)} overlaps tick ${name(k)}`);
       }
     }
   }

@@ -3,7 +3,7 @@ report (top and plots), the sizing, cycle, sweep and calibration pages and
 serve's live page. Run by docs/img/make_screenshots.sh (which also makes the
 video frames, docs/img/make-video-images.sh).
 
-usage: screenshots.py SREH_TWIN SOURCE_DIR OUT_DIR"""
+usage: screenshots.py SREH_TWIN SOURCE_DIR OUT_DIR [live]   (live: the live page only)"""
 import base64
 import os
 import shutil
@@ -50,20 +50,22 @@ def main():
     tmp = tempfile.mkdtemp()
     cdp = None
     try:
-        pages = make_pages(exe, src, tmp, cycle="examples/cycles/pick_and_place.yaml")
+        live_only = sys.argv[4:] == ["live"]
+        pages = {} if live_only else make_pages(exe, src, tmp, cycle="examples/cycles/pick_and_place.yaml")
         cdp = Cdp(os.path.join(tmp, "profile"), width=WIDTH)
         cdp.open_tab()
         cdp.set_width(WIDTH)
         ready = ("document.readyState === 'complete' && "
                  "document.querySelectorAll('.fig .dy').length === document.querySelectorAll('.fig.live').length")
-        for name, file in (("run", "run-report.png"), ("size", "sizing-report.png"), ("cycle", "cycle-report.png"),
+        for name, file in () if live_only else (("run", "run-report.png"), ("size", "sizing-report.png"), ("cycle", "cycle-report.png"),
                            ("sweep", "sweep-report.png"), ("calibration", "calibration-report.png")):
             cdp.navigate(pages[name], ready)
             time.sleep(0.3)
             shoot(cdp, os.path.join(out, file))
-        cdp.navigate(pages["run"], ready)
-        top = cdp.evaluate("Math.round(document.getElementById('over-time').getBoundingClientRect().top + window.scrollY)")
-        shoot(cdp, os.path.join(out, "run-report-plots.png"), top=top)
+        if not live_only:
+            cdp.navigate(pages["run"], ready)
+            top = cdp.evaluate("Math.round(document.getElementById('over-time').getBoundingClientRect().top + window.scrollY)")
+            shoot(cdp, os.path.join(out, "run-report-plots.png"), top=top)
         from harness import Serve
         s = Serve(exe, "--ports", "2")
         try:
@@ -73,7 +75,13 @@ def main():
             cdp.evaluate("document.getElementById('p1-target').value = '135'; true")
             cdp.click("p1-move")
             time.sleep(2.5)
-            shoot(cdp, os.path.join(out, "live-page.png"), max_height=1000)
+            # Port 2 against a blocked flange: the injected fault and the named event (issue 39).
+            cdp.click("p2-block")
+            cdp.click("p2-motor-on")
+            time.sleep(0.3)
+            cdp.click("p2-move")
+            time.sleep(1.5)
+            shoot(cdp, os.path.join(out, "live-page.png"), max_height=1400)
         finally:
             cdp.navigate("about:blank")
             s.stop()

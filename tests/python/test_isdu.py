@@ -107,6 +107,8 @@ def test_isdu_error_carries_the_io_link_name():
     assert refused.value.code == 0x8030
     assert refused.value.name == "Parameter value out of range"
     assert "0x8030 (Parameter value out of range)" in str(refused.value)
+    # Issue 39: and what to do, from the one table of codes (docs/errors.md).
+    assert "inside the range" in refused.value.remedy
 
 
 def test_version_is_the_command_lines():
