@@ -68,6 +68,7 @@ mjrRect FrameText::banner_rect(const std::string& banner) const {
 // places relative to the last viewport, set here by an empty rectangle
 // the size of the text (the raster position must lie inside it).
 void FrameText::text_at(const char* kind, int font, const std::string& txt, int x, int y_top, const float rgb[3]) const {
+  if (txt.empty()) return;
   const bool big = font == mjFONT_BIG;
   const int h = big ? con_.charHeightBig : con_.charHeight;
   drawn_.push_back({kind, x, y_top, text_width(txt, big), h, txt});

@@ -25,6 +25,8 @@ std::string code_text(const char* what, uint8_t code) {
   return code == 0 ? fmt::format("no {}", what) : fmt::format("{} 0x{:02X}", what, code);
 }
 
+ReportCheck report_check(const CheckRecord& c) { return {c.description, c.passed, c.step, c.line, c.t_s, c.actual}; }
+
 bool same_file(const std::string& a, const std::string& b) {
   std::error_code ec;
   return fs::equivalent(a, b, ec);
@@ -93,6 +95,7 @@ struct RunMedia::Impl {
   std::optional<ReportRecorder> report;
   std::vector<std::string> failures; // the first few, for the closing card
   std::size_t failures_seen = 0;
+  bool failures_streamed = false, checks_streamed = false, moves_streamed = false;
   std::optional<VideoSummary> summary;
 
   void on_cycle(const Twin& twin) {
@@ -144,26 +147,37 @@ void RunMedia::attach(RunOptions& o) {
       if (const auto* c = std::get_if<CommentStep>(&step.action)) m.caption = c->text;
     };
   }
-  // The failures reach the closing card whether the caller keeps them or streams them.
-  o.failure_sink = [prev = std::move(o.failure_sink), &m](const std::string& f) {
-    if (prev) prev(f);
-    if (m.failures.size() < kCardFailures) m.failures.push_back(f);
-    ++m.failures_seen;
-  };
+  // Records the caller streams (the CLI's output) are taken on the way;
+  // otherwise they stay in the RunResult (Python's dict) and are read from
+  // it after the run.
+  if (o.failure_sink) {
+    m.failures_streamed = true;
+    o.failure_sink = [prev = std::move(o.failure_sink), &m](const std::string& f) {
+      prev(f);
+      if (m.failures.size() < kCardFailures) m.failures.push_back(f);
+      ++m.failures_seen;
+    };
+  }
   if (!m.report) return;
   ReportRecorder& report = *m.report;
   o.trace_sink = [prev = std::move(o.trace_sink), &report](const TraceRow& row) {
     if (prev) prev(row);
     report.add_row(row);
   };
-  o.check_sink = [prev = std::move(o.check_sink), &report](const CheckRecord& c) {
-    if (prev) prev(c);
-    report.add_check({c.description, c.passed, c.step, c.line, c.t_s, c.actual});
-  };
-  o.move_sink = [prev = std::move(o.move_sink), &report](const MoveRecord& mv) {
-    if (prev) prev(mv);
-    report.add_move(mv);
-  };
+  if (o.check_sink) {
+    m.checks_streamed = true;
+    o.check_sink = [prev = std::move(o.check_sink), &report](const CheckRecord& c) {
+      prev(c);
+      report.add_check(report_check(c));
+    };
+  }
+  if (o.move_sink) {
+    m.moves_streamed = true;
+    o.move_sink = [prev = std::move(o.move_sink), &report](const MoveRecord& mv) {
+      prev(mv);
+      report.add_move(mv);
+    };
+  }
 }
 
 void RunMedia::render_video(const RunResult& result, const std::function<void(double)>& progress) {
@@ -179,7 +193,8 @@ void RunMedia::render_video(const RunResult& result, const std::function<void(do
     }
     m.title.time_scale = vo.time_map->describe(scale);
     vo.title = make_title_card(m.title);
-    const TitleCard closing = make_closing_card(result, m.failures, m.failures_seen);
+    const TitleCard closing = m.failures_streamed ? make_closing_card(result, m.failures, m.failures_seen)
+                                                  : make_closing_card(result, result.failures, result.failures.size());
     vo.closing = closing;
     m.summary = m.recording->render(vo, m.options.fixed_slowmo, scale);
   }
@@ -188,6 +203,12 @@ void RunMedia::render_video(const RunResult& result, const std::function<void(do
 void RunMedia::write_report(const RunResult& result) {
   Impl& m = *impl_;
   if (m.report) {
+    if (!m.checks_streamed) {
+      for (const CheckRecord& c : result.checks) m.report->add_check(report_check(c));
+    }
+    if (!m.moves_streamed) {
+      for (const MoveRecord& mv : result.moves) m.report->add_move(mv);
+    }
     ReportSummary summary;
     summary.scenario_name = result.name;
     summary.passed = result.passed;

@@ -36,7 +36,7 @@ struct TimeScaleOptions {
   // on screen: the one that gives the shortest move min_move_video_s; moves
   // that would get a factor more than this many times smaller on their own
   // (a move this much longer) get their own factor, which the banner names
-  // (docs/assumptions/renders.md A-RENDERS-19).
+  // (docs/assumptions/renders.md A-RENDERS-20).
   double max_factor_ratio = 5.0;
   double end_hold_video_s = 0.5;   // the final state stays this long (RunRecording)
 };

@@ -71,7 +71,6 @@ def main():
 
     # Title card: frame 0.
     card = [r for r in on_frame(rows, 0) if r["kind"] == "card"]
-    heading = [r for r in card if r["h"] == card[0]["h"] and r["x"] != card[-1]["x"]]
     joined = " ".join(r["text"] for r in card)
     assert name in joined, f"the full name is not on the title card: {joined}"
     assert len([r for r in card if r["text"] in name]) >= 2, "a long name at 640x360 should wrap"
