@@ -2,6 +2,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <regex>
 
@@ -37,7 +38,7 @@ TitleCard make_closing_card(const RunResult& r, const std::vector<std::string>& 
   TitleCard card;
   const uint64_t failed = r.checks_recorded - std::min(r.checks_held, r.checks_recorded);
   if (r.passed) {
-    card.heading = fmt::format("PASS: all {} checks held", r.checks_recorded);
+    card.heading = r.checks_recorded == 0 ? std::string("PASS (no checks)") : fmt::format("PASS: all {} checks held", r.checks_recorded);
     card.heading_rgb = {0.45f, 0.9f, 0.45f};
   } else {
     card.heading = failed > 0 ? fmt::format("FAIL: {} of {} checks failed", failed, r.checks_recorded) : std::string("FAIL");

@@ -45,8 +45,14 @@ int size_command(const SizeArgs& a) {
   } catch (const sizing::SizingInputError& e) {
     throw InputError(e.what());
   }
-  if (a.json) std::cout << out.json.dump(2) << "\n";
-  else std::cout << out.text;
+  if (a.json) {
+    std::cout << out.json.dump(2) << "\n";
+  } else {
+    std::cout << out.text;
+    // Issue 39: a success line per file written.
+    if (!a.options.report.empty()) std::cout << "wrote " << a.options.report << "/index.html\n";
+    if (!a.options.emit_scenario.empty()) std::cout << "wrote " << a.options.emit_scenario << "\n";
+  }
   return out.feasible ? 0 : 1;
 }
 
