@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "renders/run_recording.hpp"
 #include "renders/video.hpp"
 #include "renders/video_title.hpp"
 #include "scenarios/runner.hpp"

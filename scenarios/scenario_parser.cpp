@@ -259,13 +259,13 @@ class Parser {
         const auto parsed = from_name(r_.text(x, kw));
         if (!parsed) {
           // Issue 39: "did you mean" ("ready" -> "Ready").
-          std::vector<std::string> names;
+          std::vector<std::string> choices;
           for (std::string_view rest = known; !rest.empty();) {
             const std::size_t comma = rest.find(", ");
-            names.emplace_back(rest.substr(0, comma));
+            choices.emplace_back(rest.substr(0, comma));
             rest = comma == std::string_view::npos ? std::string_view() : rest.substr(comma + 2);
           }
-          const std::string guess = io::closest_name(x.Scalar(), names);
+          const std::string guess = io::closest_name(x.Scalar(), choices);
           r_.fail(x, guess.empty() ? fmt::format("{}: unknown '{}' (known: {})", kw, x.Scalar(), known)
                                    : fmt::format("{}: unknown '{}'; did you mean '{}'? (known: {})", kw, x.Scalar(), guess, known));
         }

@@ -37,6 +37,21 @@ bool number_with_unit(const std::string& value) {
   return end != value.c_str() && *end != '\0' && std::isalpha(static_cast<unsigned char>(*end));
 }
 
+// "90", "0,5000,15000": every comma-separated piece a number.
+bool all_numbers(const std::string& value) {
+  if (value.empty()) return false;
+  std::size_t at = 0;
+  for (;;) {
+    const std::size_t comma = value.find(',', at);
+    const std::string piece = value.substr(at, comma == std::string::npos ? std::string::npos : comma - at);
+    char* end = nullptr;
+    std::strtod(piece.c_str(), &end);
+    if (piece.empty() || end == piece.c_str() || *end != '\0') return false;
+    if (comma == std::string::npos) return true;
+    at = comma + 1;
+  }
+}
+
 // The unit an option's name ends in, in words, and a typical value
 // (issue 39): "--angle-deg" -> {"deg", "90"}. Empty: no unit in the name.
 std::pair<std::string, std::string> unit_of(const std::string& option) {
@@ -93,11 +108,8 @@ std::string cli_hint(const CLI::App& app, const CLI::ParseError& error, int argc
     if (option != nullptr && dynamic_cast<const CLI::ConversionError*>(&error) != nullptr) {
       const std::size_t eq = arg.find('=');
       const std::string value = eq != std::string::npos ? arg.substr(eq + 1) : (i + 1 < argc ? argv[i + 1] : "");
-      // The option CLI11 could not convert: the one whose value is not a number.
-      char* end = nullptr;
-      std::strtod(value.c_str(), &end);
-      const bool parses = !value.empty() && end != value.c_str() && *end == '\0';
-      if (parses && value.find(',') == std::string::npos) continue;
+      // The option CLI11 could not convert: the one whose value is not a number (or list of them).
+      if (all_numbers(value)) continue;
       if (std::string m = not_a_number(*option, name, value); !m.empty()) return m;
     }
   }
