@@ -72,7 +72,7 @@ pyb::object render_twin(const Twin& twin, std::unique_ptr<TwinRenderer, TwinRend
   if (overlay) scene.overlay = overlay_lines(info);
   pyb::array_t<uint8_t> image({height, width, 3});
   cache->renderer->render_into(plant.model(), plant.data(), scene, image.mutable_data(), true);
-  return std::move(image);
+  return image;
 #else
   (void)twin, (void)cache, (void)width, (void)height, (void)overlay;
   throw std::runtime_error("render: this sreh_twin was built without rendering (SREH_WITH_RENDER=OFF)");
