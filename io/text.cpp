@@ -1,6 +1,7 @@
 #include "io/text.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdint>
 #include <cstdio>
 #include <vector>
@@ -84,6 +85,29 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
     }
   }
   return row[b.size()];
+}
+
+std::string closest_name(std::string_view given, const std::vector<std::string>& names) {
+  auto lower = [](std::string_view t) {
+    std::string out(t);
+    for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return out;
+  };
+  const std::string g = lower(given);
+  if (g.empty()) return {};
+  for (const std::string& n : names) {
+    if (lower(n) == g) return n;
+  }
+  for (const std::string& n : names) {
+    if (n.size() > g.size() && lower(n).rfind(g, 0) == 0) return n;
+  }
+  std::string best;
+  std::size_t best_d = std::max<std::size_t>(1, g.size() / 3) + 1;
+  for (const std::string& n : names) {
+    const std::size_t d = edit_distance(g, lower(n));
+    if (d < best_d && d <= std::max<std::size_t>(1, n.size() / 3)) best_d = d, best = n;
+  }
+  return best;
 }
 
 } // namespace sreh::io

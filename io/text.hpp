@@ -4,6 +4,7 @@
 #pragma once
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace sreh::io {
 
@@ -16,5 +17,11 @@ std::size_t first_invalid_utf8(std::string_view text);
 // Levenshtein distance (insertions, deletions, substitutions): the "did you
 // mean" of mistyped names (model constants, options).
 std::size_t edit_distance(std::string_view a, std::string_view b);
+
+// The name among `names` that `given` most likely meant, or "" when none is
+// close (issue 39): the same name in other letter case; a name `given` is
+// the start of ("angle" -> "angle-deg"); else the nearest by edit distance
+// of at most a third of the name's length (at least 1), ignoring case.
+std::string closest_name(std::string_view given, const std::vector<std::string>& names);
 
 } // namespace sreh::io

@@ -4,11 +4,13 @@
 #pragma once
 #include <pybind11/pybind11.h>
 
+#include <memory>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "device_logic/process_data.hpp"
+#include "twin/twin.hpp"
 
 namespace sreh::py {
 
@@ -30,7 +32,17 @@ pyb::error_already_set input_error(const std::string& message);
 
 pyb::dict pd_in_dict(const sreh::ProcessDataIn& in); // decode_pd_in's dict
 
+// Twin.render() (render_binding.cpp): an off-screen renderer kept per Twin,
+// made on the first call; an RGB numpy array (height, width, 3) uint8.
+struct TwinRenderer;
+struct TwinRendererDeleter {
+  void operator()(TwinRenderer* r) const;
+};
+pyb::object render_twin(const Twin& twin, std::unique_ptr<TwinRenderer, TwinRendererDeleter>& cache, int width, int height,
+                        bool overlay);
+
 void bind_process_data(pyb::module_& m);
+void bind_render(pyb::module_& m);
 void bind_twin(pyb::module_& m);
 void bind_tools(pyb::module_& m);
 

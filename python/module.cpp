@@ -104,4 +104,5 @@ class IsduError(base):
   bind_process_data(m);
   bind_twin(m);
   bind_tools(m);
+  bind_render(m); // after bind_tools: its run_scenario (with video=, report=) is the one kept
 }

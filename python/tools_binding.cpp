@@ -1,18 +1,14 @@
 // The CLI's commands from Python (issue 19), on the same code paths:
-// run_scenario = `run --json`, size = `size --json`, sweep = `sweep` with the
+// size = `size --json` (run_scenario = `run --json`: render_binding.cpp), sweep = `sweep` with the
 // CSV's columns as numpy arrays. Keywords are the long options with '-' as '_'.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
-#include <chrono>
 #include <type_traits>
 
 #include "python/bindings.hpp"
 #include "scenarios/model_card_json.hpp"
-#include "scenarios/result_json.hpp"
-#include "scenarios/runner.hpp"
-#include "scenarios/scenario_parser.hpp"
 #include "sizing/size_options.hpp"
 #include "calibration/calibrate.hpp"
 #include "calibration/fit_output.hpp"
@@ -191,27 +187,6 @@ void bind_tools(pyb::module_& m) {
       pyb::arg("model") = pyb::none(),
       "The module's model card (issue 25): {'constants': {NAME: {'value', 'unit', 'source', 'range'}}}, with a "
       "model file's overrides applied when given.");
-  m.def(
-      "run_scenario",
-      [](const std::string& path) {
-        RunResult result;
-        double wall_s = 0;
-        try {
-          const Scenario scenario = parse_scenario_file(path);
-          const auto start = std::chrono::steady_clock::now();
-          result = run_scenario(scenario);
-          wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        } catch (const ScenarioError& e) {
-          throw input_error(e.what());
-        }
-        nlohmann::json j = to_json(result); // as `run --json`, with its measured wall time (issue 25)
-        j["wall_s"] = wall_s;
-        j["real_time_factor"] = wall_s > 0 ? result.sim_time_s / wall_s : 0.0;
-        return to_python(j);
-      },
-      arg("path"),
-      "Run a scenario file; the result dict of `sreh-twin run --json` (passed, failures, moves, final, checks, ...). "
-      "Raises InputError for a bad scenario (the CLI's exit 2).");
   m.def(
       "size",
       [](const pyb::kwargs& kwargs) {

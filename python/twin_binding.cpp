@@ -343,6 +343,7 @@ class PyTwin {
 
   Twin& twin() { return *twin_; }
   const Twin& twin() const { return *twin_; }
+  pyb::object render(int width, int height, bool overlay) { return render_twin(*twin_, renderer_, width, height, overlay); }
 
  private:
   static std::pair<uint16_t, uint8_t> address(int index, int subindex) {
@@ -352,6 +353,7 @@ class PyTwin {
   }
 
   std::unique_ptr<Twin> twin_;
+  std::unique_ptr<TwinRenderer, TwinRendererDeleter> renderer_; // made by the first render()
 };
 
 } // namespace
@@ -435,6 +437,9 @@ model: a model file overriding constants of the module's model card
            "numbering).")
       .def("trace_csv", &PyTwin::trace_csv, arg("path") = pyb::none(),
            "The trace as the CSV of `sreh-twin run --trace` (returned, and written to path if given).")
+      .def("render", &PyTwin::render, arg("width") = 640, arg("height") = 480, pyb::kw_only(), arg("overlay") = true,
+           "The module as it stands now, rendered off-screen as a video frame shows it (the overlay with time, state, "
+           "positions and codes unless overlay=False): a numpy uint8 array of shape (height, width, 3), RGB.")
       .def("moves", &PyTwin::moves, "One dict per accepted Move (as `run --json` moves).")
       .def("save_nvm", &PyTwin::save_nvm, "The non-volatile memory image (for Twin(nvm=...)).")
       .def("snapshot", [](const PyTwin& t) { return t.twin().snapshot(); },

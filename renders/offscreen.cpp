@@ -226,7 +226,7 @@ struct OffscreenRenderer::Impl {
   // rectangles the last frame drew.
   bool retained = false;
   std::optional<mjrRect> scene_box;
-  mjrRect last_panel{0, 0, 0, 0}, last_banner{0, 0, 0, 0};
+  mjrRect last_panel{0, 0, 0, 0}, last_banner{0, 0, 0, 0}, last_caption{0, 0, 0, 0};
   std::unique_ptr<FrameText> text; // overlay, banner, title card (on con)
 
   void make_current() {
@@ -383,7 +383,8 @@ struct OffscreenRenderer::Impl {
   // frame's does not cover (a narrower panel, another banner text).
   void render_changed(const mjModel* m, const mjData* d, const SceneState& state) {
     render_box(changing_box(m, d));
-    for (const auto& [last, now] : {std::pair{last_panel, text->panel_rect(state)}, {last_banner, text->banner_rect(state.banner)}}) {
+    for (const auto& [last, now] : {std::pair{last_panel, text->panel_rect(state)}, {last_banner, text->banner_rect(state.banner)},
+                                    {last_caption, text->caption_rect(state)}}) {
       if (!covers(now, last)) render_box(last);
     }
   }
@@ -488,6 +489,7 @@ void OffscreenRenderer::set_camera(const CameraSpec& camera) {
 int OffscreenRenderer::width() const { return impl_->options.width_px; }
 int OffscreenRenderer::height() const { return impl_->options.height_px; }
 OverlayPanel OffscreenRenderer::overlay_panel(const SceneState& state) const { return impl_->text->panel(state); }
+const std::vector<DrawnText>& OffscreenRenderer::drawn_text() const { return impl_->text->drawn(); }
 
 void OffscreenRenderer::render_into(const mjModel* m, const mjData* d, const SceneState& state, uint8_t* rgb, bool flip) {
   Impl& s = *impl_;
@@ -515,16 +517,19 @@ void OffscreenRenderer::render_into(const mjModel* m, const mjData* d, const Sce
   // depth ties differently under the narrowed frustum).
   if (!partial || !s.retained) mjr_render(viewport, &s.scn, &s.con);
   if (partial) s.render_changed(m, d, state);
+  s.text->clear_drawn();
   if (state.title) {
     s.text->draw_title(*state.title);
   } else {
     s.text->draw_panel(state);
+    s.text->draw_caption(state);
     s.text->draw_banner(state.banner);
   }
   // The image now holds this frame's overlay: the next frame redraws under it.
   s.retained = !state.title;
   s.last_panel = s.text->panel_rect(state);
   s.last_banner = s.text->banner_rect(state.banner);
+  s.last_caption = s.text->caption_rect(state);
   mjr_readPixels(rgb, nullptr, viewport, &s.con);
   if (flip) flip_rows(rgb, s.options.width_px, s.options.height_px);
 }

@@ -50,9 +50,22 @@ struct RenderOptions {
 // A video's opening card (issue 29): a heading (the scenario's name) and
 // label/value lines (load, inertia, parameter sets, ...), drawn centred over
 // the dimmed first frame with the overlay's fonts.
+// The closing card (issue 39) is one too: the verdict as its heading, in
+// the heading's colour, the failed checks and the final state as its lines.
+// Text is wrapped at spaces to the frame's width, never cut.
 struct TitleCard {
   std::string heading;
   std::vector<std::pair<std::string, std::string>> lines;
+  std::array<float, 3> heading_rgb{1, 1, 1};
+};
+
+// One piece of text a frame shows and where (pixels, origin top-left): what
+// the video's text log records (issue 39) so that tests and tools can read
+// a frame's words without OCR.
+struct DrawnText {
+  std::string kind; // "panel", "banner", "caption", "card"
+  int x = 0, y = 0, width = 0, height = 0;
+  std::string text;
 };
 
 // What changes per frame besides the physics state.
@@ -67,6 +80,9 @@ struct SceneState {
   // Text in the top-right corner (the time scale: shown here once, not as
   // an overlay row too); big font from 720 px high, normal font below.
   std::string banner;
+  // A scenario's `comment:` step while it applies (issue 39): drawn in the
+  // overlay's column below the panel, wrapped to the panel's width.
+  std::string caption;
   // Set: the frame is the title card (the overlay and banner are not drawn).
   std::optional<TitleCard> title;
   // The degree scale on the housing top and the labels on the flange
@@ -120,6 +136,8 @@ class OffscreenRenderer {
   int height() const;
   // The panel `state.overlay` is drawn in (empty: zero size).
   OverlayPanel overlay_panel(const SceneState& state) const;
+  // The text the last render drew, in drawing order.
+  const std::vector<DrawnText>& drawn_text() const;
 
  private:
   struct Impl;

@@ -67,9 +67,11 @@ mjrRect FrameText::banner_rect(const std::string& banner) const {
 // Text at pixel (x, y_top) of the frame (origin top-left): mjr_text
 // places relative to the last viewport, set here by an empty rectangle
 // the size of the text (the raster position must lie inside it).
-void FrameText::text_at(int font, const std::string& txt, int x, int y_top, const float rgb[3]) const {
+void FrameText::text_at(const char* kind, int font, const std::string& txt, int x, int y_top, const float rgb[3]) const {
+  if (txt.empty()) return;
   const bool big = font == mjFONT_BIG;
   const int h = big ? con_.charHeightBig : con_.charHeight;
+  drawn_.push_back({kind, x, y_top, text_width(txt, big), h, txt});
   mjr_rectangle(mjrRect{x, height_px_ - y_top - h, text_width(txt, big) + 1, h}, 0, 0, 0, 0);
   // The raster position is the glyphs' baseline: a fifth of the height up.
   mjr_text(font, txt.c_str(), &con_, 0.0f, 0.2f, rgb[0], rgb[1], rgb[2]);
@@ -87,10 +89,10 @@ void FrameText::draw_panel(const SceneState& state) const {
   int y = p.y + pad;
   for (const auto& [l, v] : state.overlay) {
     if (l.empty()) {
-      text_at(mjFONT_NORMAL, v, p.x + pad, y, value_rgb);
+      text_at("panel", mjFONT_NORMAL, v, p.x + pad, y, value_rgb);
     } else {
-      text_at(mjFONT_NORMAL, l, p.x + pad, y, label_rgb);
-      text_at(mjFONT_NORMAL, v, p.x + pad + labels + ch / 3, y, value_rgb);
+      text_at("panel", mjFONT_NORMAL, l, p.x + pad, y, label_rgb);
+      text_at("panel", mjFONT_NORMAL, v, p.x + pad + labels + ch / 3, y, value_rgb);
     }
     y += row_pitch();
   }
@@ -104,51 +106,115 @@ void FrameText::draw_banner(const std::string& banner) const {
   const int w = text_width(banner, big) + 2 * (ch / 3), x = width_px_ - w - ch / 3, y = ch / 3;
   mjr_rectangle(mjrRect{x, height_px_ - y - h - 2 * (ch / 4), w, h + 2 * (ch / 4)}, 0.22f, 0.23f, 0.25f, 1.0f);
   const float rgb[3] = {1, 1, 1};
-  text_at(font, banner, x + ch / 3, y + ch / 4, rgb);
+  text_at("banner", font, banner, x + ch / 3, y + ch / 4, rgb);
 }
 
-// The title card: the frame dimmed, the heading in the big font, the
-// lines as two centred columns; text too wide for the frame is cut.
+std::vector<std::string> FrameText::wrap(const std::string& text, bool big, int max_w) const {
+  std::vector<std::string> lines;
+  std::string line;
+  auto fits = [&](const std::string& t) { return text_width(t, big) <= max_w; };
+  std::size_t i = 0;
+  while (i < text.size()) {
+    std::size_t end = text.find(' ', i);
+    if (end == std::string::npos) end = text.size();
+    std::string word = text.substr(i, end - i);
+    i = end + 1;
+    if (word.empty()) continue;
+    if (fits(line.empty() ? word : line + " " + word)) {
+      line = line.empty() ? word : line + " " + word;
+      continue;
+    }
+    if (!line.empty()) lines.push_back(line);
+    line.clear();
+    // A word wider than the line: broken between characters.
+    while (!fits(word) && word.size() > 1) {
+      std::size_t n = 1;
+      while (n < word.size() && fits(word.substr(0, n + 1))) ++n;
+      lines.push_back(word.substr(0, n));
+      word.erase(0, n);
+    }
+    line = word;
+  }
+  if (!line.empty() || lines.empty()) lines.push_back(line);
+  return lines;
+}
+
+// The caption (issue 39): in the overlay's column right below the panel,
+// wrapped to the panel's width; the module keeps right of that column.
+std::vector<std::string> FrameText::caption_lines(const SceneState& state) const {
+  if (state.caption.empty()) return {};
+  const OverlayPanel p = panel(state);
+  const int ch = con_.charHeight;
+  const int inner = (p.width > 0 ? p.width : width_px_ / 4) - 2 * (ch / 3);
+  return wrap(state.caption, false, inner);
+}
+mjrRect FrameText::caption_rect(const SceneState& state) const {
+  const std::vector<std::string> lines = caption_lines(state);
+  if (lines.empty()) return {0, 0, 0, 0};
+  const OverlayPanel p = panel(state);
+  const int ch = con_.charHeight;
+  const int w = p.width > 0 ? p.width : width_px_ / 4; // the module keeps right of the panel (fit_box)
+  const int top = p.y + p.height + ch / 4;
+  const int h = 2 * (ch / 3) + static_cast<int>(lines.size()) * row_pitch();
+  return {p.x, height_px_ - top - h, w, h};
+}
+void FrameText::draw_caption(const SceneState& state) const {
+  const std::vector<std::string> lines = caption_lines(state);
+  if (lines.empty()) return;
+  const mjrRect r = caption_rect(state);
+  mjr_rectangle(r, 0.16f, 0.20f, 0.30f, 1.0f);
+  const int ch = con_.charHeight;
+  const float rgb[3] = {1.0f, 0.93f, 0.6f};
+  int y = height_px_ - r.bottom - r.height + ch / 3;
+  for (const std::string& line : lines) {
+    text_at("caption", mjFONT_NORMAL, line, r.left + ch / 3, y, rgb);
+    y += row_pitch();
+  }
+}
+
+// A card (the title card, the closing card): the frame dimmed, the heading
+// in the big font (the normal one where the card would not fit the frame
+// otherwise), the lines as two centred columns; every text wrapped at
+// spaces, never cut (issue 39).
 void FrameText::draw_title(const TitleCard& card) const {
   const int w = width_px_, h = height_px_, ch = con_.charHeight;
   mjr_rectangle(mjrRect{0, 0, w, h}, 0.05f, 0.06f, 0.07f, 0.78f);
-  const bool big = con_.charHeightBig <= 0.12 * h;
   const int max_w = w - 2 * ch;
-  auto fit = [&](const std::string& t, bool in_big, int room) {
-    if (text_width(t, in_big) <= room) return t;
-    std::string cut = t;
-    while (!cut.empty() && text_width(cut + "...", in_big) > room) cut.pop_back();
-    return cut + "...";
-  };
   int labels = 0, values = 0;
   for (const auto& [l, v] : card.lines) {
     labels = std::max(labels, text_width(l, false));
     values = std::max(values, text_width(v, false));
   }
-  values = std::min(values, max_w - labels - ch);
-  // The heading on up to two lines, broken at a space.
-  std::vector<std::string> heading{card.heading};
-  if (text_width(card.heading, big) > max_w) {
-    std::size_t cut = card.heading.size();
-    while ((cut = card.heading.rfind(' ', cut - 1)) != std::string::npos && cut > 0 &&
-           text_width(card.heading.substr(0, cut), big) > max_w) {
+  values = std::max(ch, std::min(values, max_w - labels - ch));
+  std::vector<std::pair<std::string, std::string>> rows; // the lines, values wrapped
+  for (const auto& [l, v] : card.lines) {
+    bool first = true;
+    for (const std::string& part : wrap(v, false, values)) {
+      rows.emplace_back(first ? l : std::string(), part);
+      first = false;
     }
-    if (cut != std::string::npos && cut > 0) heading = {card.heading.substr(0, cut), card.heading.substr(cut + 1)};
+  }
+  const int rows_h = ch + static_cast<int>(rows.size()) * row_pitch();
+  bool big = con_.charHeightBig <= 0.12 * h;
+  std::vector<std::string> heading = wrap(card.heading, big, max_w);
+  if (big && static_cast<int>(heading.size()) * con_.charHeightBig + rows_h > h - ch) {
+    big = false;
+    heading = wrap(card.heading, false, max_w);
   }
   const int heading_h = big ? con_.charHeightBig : con_.charHeight;
-  const int block_h = static_cast<int>(heading.size()) * heading_h + ch + static_cast<int>(card.lines.size()) * row_pitch();
+  const int block_h = static_cast<int>(heading.size()) * heading_h + rows_h;
   int y = std::max(ch / 2, (h - block_h) / 2);
-  const float white[3] = {1, 1, 1}, grey[3] = {0.72f, 0.75f, 0.78f};
+  const float grey[3] = {0.72f, 0.75f, 0.78f}, white[3] = {1, 1, 1};
+  const float heading_rgb[3] = {card.heading_rgb[0], card.heading_rgb[1], card.heading_rgb[2]};
   for (const std::string& line : heading) {
-    const std::string shown = fit(line, big, max_w);
-    text_at(big ? mjFONT_BIG : mjFONT_NORMAL, shown, (w - text_width(shown, big)) / 2, y, white);
+    text_at("card", big ? mjFONT_BIG : mjFONT_NORMAL, line, (w - text_width(line, big)) / 2, y, heading_rgb);
     y += heading_h;
   }
   y += ch;
   const int x0 = std::max(ch, (w - labels - ch - values) / 2);
-  for (const auto& [l, v] : card.lines) {
-    text_at(mjFONT_NORMAL, l, x0, y, grey);
-    text_at(mjFONT_NORMAL, fit(v, false, values), x0 + labels + ch, y, white);
+  for (const auto& [l, v] : rows) {
+    if (!l.empty()) text_at("card", mjFONT_NORMAL, l, x0, y, grey);
+    text_at("card", mjFONT_NORMAL, v, x0 + labels + ch, y, white);
     y += row_pitch();
   }
 }

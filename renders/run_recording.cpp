@@ -21,7 +21,8 @@ constexpr double kTurningDps = 1.0; // the flange counts as turning above this s
 struct Sample {
   TraceRow row;
   double ghost_joint_rad = 0;
-  uint32_t step = 0; // index into Impl::steps
+  uint32_t step = 0;    // index into Impl::steps
+  uint32_t caption = 0; // index into Impl::steps too
   bool has_ghost = false;
 };
 static_assert(std::is_trivially_copyable_v<Sample>);
@@ -34,7 +35,7 @@ struct RunRecording::Impl {
   std::size_t record_bytes = 0;
   std::size_t samples = 0;
   double first_t_s = 0, last_t_s = 0;
-  // Step labels are few (one per scenario step): stored once each.
+  // Step labels and captions are few (one per scenario step): stored once each.
   std::vector<std::string> steps;
   std::unordered_map<std::string, uint32_t> step_ids;
   std::vector<std::pair<double, double>> motion;
@@ -65,6 +66,7 @@ class RunRecording::Reader {
     f.row = smp.row;
     if (smp.has_ghost) f.ghost_joint_rad = smp.ghost_joint_rad;
     f.step = s_.steps[smp.step];
+    f.caption = s_.steps[smp.caption];
     return f;
   }
 
@@ -105,9 +107,13 @@ void RunRecording::add(const mjData* d, const FrameInfo& info) {
   smp.row = r;
   smp.has_ghost = info.ghost_joint_rad.has_value();
   smp.ghost_joint_rad = info.ghost_joint_rad.value_or(0.0);
-  const auto [it, added] = s.step_ids.try_emplace(info.step, static_cast<uint32_t>(s.steps.size()));
-  if (added) s.steps.push_back(info.step);
-  smp.step = it->second;
+  auto id_of = [&s](const std::string& text) {
+    const auto [it, added] = s.step_ids.try_emplace(text, static_cast<uint32_t>(s.steps.size()));
+    if (added) s.steps.push_back(text);
+    return it->second;
+  };
+  smp.step = id_of(info.step);
+  smp.caption = id_of(info.caption);
   s.spool.stream().write(reinterpret_cast<const char*>(&smp), sizeof smp);
   s.spool.stream().write(reinterpret_cast<const char*>(d->qpos), static_cast<std::streamsize>(m->nq * sizeof(double)));
   // A cycle's sample closes the cycle that led to it: motion from the one before.
@@ -179,6 +185,7 @@ VideoSummary RunRecording::render(VideoOptions o, bool fixed_slowmo, const TimeS
     FrameInfo last = samples.frame(s.samples - 1, nullptr);
     const double tail_s = std::max(0.0, scale.end_hold_video_s);
     rec.hold(m, d, last, static_cast<uint64_t>(std::llround(tail_s * o.fps)));
+    rec.close(m, d, last); // the closing card, when given (issue 39)
     rec.finish();
   } catch (...) {
     mj_deleteData(d);

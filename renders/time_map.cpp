@@ -11,7 +11,9 @@ namespace sreh {
 std::string TimeSegment::label() const {
   switch (kind) {
     case Kind::RealTime: return "real time";
-    case Kind::SlowMotion: return fmt::format("slow motion {:g}x", rate);
+    case Kind::SlowMotion:
+      return previous_slowmo > 0 ? fmt::format("slow motion {:g}x (was {:g}x)", rate, previous_slowmo)
+                                 : fmt::format("slow motion {:g}x", rate);
     case Kind::FastForward: return fmt::format("fast forward {:.0f}x (idle)", 1.0 / rate);
   }
   return "";
@@ -67,12 +69,30 @@ TimeMap TimeMap::automatic(std::vector<std::pair<double, double>> motion, double
       merged.push_back(r);
     }
   }
-  // Each stretch with its padding at its own rate; gaps in between.
+  // The factor each stretch would want on its own (min_move_video_s on
+  // screen), then one factor for all: the largest, which every stretch
+  // within max_factor_ratio of it shares; the rest likewise among
+  // themselves (issue 39, A-RENDERS-19).
+  std::vector<double> want; // unrounded: a long move wants less than 1
+  for (const auto& [a, b] : merged) want.push_back(std::min(o.max_slowmo, o.min_move_video_s / std::max(b - a, 1e-6)));
+  std::vector<double> factor(want.size(), 0.0);
+  for (;;) {
+    double top = 0;
+    for (std::size_t i = 0; i < want.size(); ++i) {
+      if (factor[i] == 0) top = std::max(top, want[i]);
+    }
+    if (top == 0) break;
+    const double rate = std::min(o.max_slowmo, nice_factor_up(top));
+    for (std::size_t i = 0; i < want.size(); ++i) {
+      if (factor[i] == 0 && want[i] * std::max(1.0, o.max_factor_ratio) >= top * (1 - 1e-12)) factor[i] = rate;
+    }
+  }
+  // Each stretch with its padding at its factor; gaps in between.
   struct Slow { double a, b, rate; };
   std::vector<Slow> slow;
-  for (const auto& [a, b] : merged) {
-    const double span = std::max(b - a, 1e-6);
-    const double rate = std::min(o.max_slowmo, nice_factor_up(o.min_move_video_s / span));
+  for (std::size_t i = 0; i < merged.size(); ++i) {
+    const auto& [a, b] = merged[i];
+    const double rate = factor[i];
     const double pad = o.pad_video_s / rate;
     double lo = std::max(0.0, a - pad), hi = std::min(T, b + pad);
     if (!slow.empty() && lo < slow.back().b) {
@@ -98,8 +118,39 @@ TimeMap TimeMap::automatic(std::vector<std::pair<double, double>> motion, double
     t = std::max(t, s.b);
   }
   gap(t, T);
+  double last_slowmo = 0;
+  for (TimeSegment& seg : m.segments_) {
+    if (seg.kind != TimeSegment::Kind::SlowMotion) continue;
+    if (last_slowmo > 0 && seg.rate != last_slowmo) seg.previous_slowmo = last_slowmo;
+    last_slowmo = seg.rate;
+  }
   if (m.segments_.empty()) m.segments_.push_back({0.0, std::max(T, 1e-9), 0.0, 1.0, TimeSegment::Kind::RealTime});
   return m;
+}
+
+std::vector<double> TimeMap::slowmo_factors() const {
+  std::vector<double> out;
+  for (const TimeSegment& seg : segments_) {
+    if (seg.kind == TimeSegment::Kind::SlowMotion && std::find(out.begin(), out.end(), seg.rate) == out.end()) out.push_back(seg.rate);
+  }
+  return out;
+}
+
+std::string TimeMap::describe(const TimeScaleOptions& o) const {
+  const std::vector<double> f = slowmo_factors();
+  bool idle = false;
+  for (const TimeSegment& seg : segments_) idle = idle || seg.kind == TimeSegment::Kind::FastForward;
+  std::string out;
+  if (f.empty()) {
+    out = "real time";
+  } else if (f.size() == 1) {
+    out = fmt::format("slow motion {:g}x for every move", f[0]);
+  } else {
+    std::string list;
+    for (std::size_t i = 0; i < f.size(); ++i) list += fmt::format("{}{:g}x", i == 0 ? "" : i + 1 == f.size() ? " and " : ", ", f[i]);
+    out = fmt::format("slow motion {} (moves differ more than {:g}x in length)", list, o.max_factor_ratio);
+  }
+  return idle ? out + ", idle sped up" : out;
 }
 
 const TimeSegment& TimeMap::segment_at(double t_s) const {

@@ -18,7 +18,10 @@ struct TimeSegment {
   double v0_s = 0;     // video time at t0_s
   double rate = 1;     // video seconds per simulated second (> 1: slow motion)
   Kind kind = Kind::RealTime;
-  // "real time", "slow motion 20x", "fast forward 37x (idle)"
+  // Slow motion after slow motion at another factor: that factor (issue 39:
+  // the banner names the change); else 0.
+  double previous_slowmo = 0;
+  // "real time", "slow motion 20x", "slow motion 40x (was 20x)", "fast forward 37x (idle)"
   std::string label() const;
 };
 
@@ -29,6 +32,12 @@ struct TimeScaleOptions {
   double idle_threshold_s = 2.0;   // idle stretches longer than this (simulated) ...
   double idle_video_s = 1.0;       // ... play in this many video seconds
   double merge_gap_s = 0.0;        // motion separated by at most this is one stretch
+  // One slow-motion factor for every move (issue 39), so that moves compare
+  // on screen: the one that gives the shortest move min_move_video_s; moves
+  // that would get a factor more than this many times smaller on their own
+  // (a move this much longer) get their own factor, which the banner names
+  // (docs/assumptions/renders.md A-RENDERS-20).
+  double max_factor_ratio = 5.0;
   double end_hold_video_s = 0.5;   // the final state stays this long (RunRecording)
 };
 
@@ -47,6 +56,12 @@ class TimeMap {
   double sim_time(double video_s) const;
   const TimeSegment& segment_at(double t_s) const;
   const std::vector<TimeSegment>& segments() const { return segments_; }
+  // The slow-motion factors the moves play at, in order of first use.
+  std::vector<double> slowmo_factors() const;
+  // How the video plays the run, for the title card: "slow motion 20x for
+  // every move, idle sped up" / "slow motion 40x and 8x (moves differ
+  // more than 5x in length), ..." / "real time".
+  std::string describe(const TimeScaleOptions& options = {}) const;
 
  private:
   void push(double t0, double t1, double rate, TimeSegment::Kind kind);

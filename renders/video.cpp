@@ -2,10 +2,12 @@
 
 #include <mujoco/mujoco.h>
 
+#include <algorithm>
 #include <cmath>
 #include <condition_variable>
 #include <deque>
 #include <exception>
+#include <fstream>
 #include <memory>
 #include <mutex>
 #include <numbers>
@@ -63,6 +65,7 @@ struct VideoRecorder::Impl {
   std::unique_ptr<io::AtomicFile> video_file; // ffmpeg writes its temporary
   std::unique_ptr<io::AtomicDir> frames_out;
   fs::path frames_tmp;
+  std::ofstream text_log; // frames_tmp / text.tsv
   int flange_qpos = -1;
   uint64_t next_frame = 0;    // of the run: the title card's frames come before
   uint64_t title_frames = 0;
@@ -128,6 +131,13 @@ struct VideoRecorder::Impl {
       free_buffers.pop_front();
     }
     renderer->render_into(m, d, scene, buffers[buffer].data(), false);
+    if (text_log.is_open()) {
+      for (const DrawnText& t : renderer->drawn_text()) {
+        text_log << first << '\t' << first + count - 1 << '\t' << t.kind << '\t' << t.x << '\t' << t.y << '\t' << t.width
+                 << '\t' << t.height << '\t' << t.text << '\n';
+      }
+      if (!text_log) throw std::runtime_error("video: cannot write " + (frames_tmp / "text.tsv").string());
+    }
     const Job job{buffer, first, count};
     if (!options.threaded) {
       emit(job);
@@ -153,6 +163,7 @@ struct VideoRecorder::Impl {
 
   void discard_output() {
     encoder.reset();
+    if (text_log.is_open()) text_log.close();
     video_file.reset(); // removes the temporaries
     frames_out.reset();
   }
@@ -183,6 +194,8 @@ VideoRecorder::VideoRecorder(const mjModel* m, const VideoOptions& o) : impl_(st
     }
     s.frames_out = std::make_unique<io::AtomicDir>(o.frames_dir.string());
     s.frames_tmp = s.frames_out->temp_path();
+    s.text_log.open(s.frames_tmp / "text.tsv");
+    s.text_log << kTextLogHeader << '\n';
   }
 
   RenderOptions ro;
@@ -280,6 +293,7 @@ void VideoRecorder::hold(const mjModel* m, const mjData* d, const FrameInfo& inf
       scene.banner = fmt::format("slow motion {:g}x", s.options.slowmo);
     }
     scene.overlay = overlay_lines(info);
+    scene.caption = info.caption;
   }
 
   // The title card goes before the run's first frame (issue 29): the
@@ -294,6 +308,20 @@ void VideoRecorder::hold(const mjModel* m, const mjData* d, const FrameInfo& inf
   s.queue(m, d, scene, s.title_frames + first, count);
 }
 
+void VideoRecorder::close(const mjModel* m, const mjData* d, const FrameInfo& info) {
+  Impl& s = *impl_;
+  if (!s.options.closing) return;
+  if (s.finished) throw std::logic_error("VideoRecorder: close after finish");
+  const auto count = static_cast<uint64_t>(std::llround(std::max(0.0, s.options.closing_s) * s.options.fps));
+  SceneState card;
+  card.led = info.row.led;
+  card.ghost_joint_rad = info.ghost_joint_rad;
+  card.title = s.options.closing;
+  card.pointer_labels = card.degree_scale = false;
+  s.queue(m, d, card, s.title_frames + s.next_frame, count);
+  s.next_frame += count;
+}
+
 void VideoRecorder::finish() {
   Impl& s = *impl_;
   if (s.finished) throw std::logic_error("VideoRecorder: finish twice");
@@ -305,6 +333,10 @@ void VideoRecorder::finish() {
       s.encoder->finish();
       s.encoder.reset();
       s.video_file->commit(); // ffmpeg wrote the temporary; rename it
+    }
+    if (s.text_log.is_open()) {
+      s.text_log.close();
+      if (!s.text_log) throw std::runtime_error("video: cannot write " + (s.frames_tmp / "text.tsv").string());
     }
     if (s.frames_out) s.frames_out->commit(); // replaces an empty folder, checked at start
   } catch (...) {

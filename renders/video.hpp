@@ -32,7 +32,8 @@ struct VideoOptions {
   double slowmo = 1.0;              // video plays this many times slower than simulated time ...
   std::optional<TimeMap> time_map;  // ... unless a time map is given
   CameraSpec camera;
-  std::filesystem::path frames_dir; // non-empty: PNG frames frame_000000.png ... here
+  std::filesystem::path frames_dir; // non-empty: PNG frames frame_000000.png ... here, and
+                                    // text.tsv: the words each frame shows and where (kTextLogHeader)
   // Quality/speed (A-RENDERS-3, A-RENDERS-5).
   int msaa_samples = 4;
   bool shadows = false;
@@ -47,6 +48,10 @@ struct VideoOptions {
   // (issue 29); run frame k is then video frame title_frames() + k.
   std::optional<TitleCard> title;
   double title_s = 1.5;
+  // Set: this card closes the video for closing_s after the run's last
+  // frame (issue 39: the verdict, the failed checks, the final state).
+  std::optional<TitleCard> closing;
+  double closing_s = 3.0;
   // Called as frames are made with the share of the run rendered (0..1):
   // the CLI's progress line (issue 29). Empty: nothing.
   std::function<void(double)> progress;
@@ -63,7 +68,12 @@ struct FrameInfo {
   // (A-RENDERS-7).
   std::optional<double> ghost_joint_rad;
   std::string step;                  // "4 wait_until"; empty: not shown
+  std::string caption;               // the scenario's `comment:` in force; empty: none
 };
+
+// The text log's columns (issue 39): one row per text per run of identical
+// frames, frames first..last, pixels from the top-left corner.
+inline constexpr const char* kTextLogHeader = "first_frame\tlast_frame\tkind\tx\ty\twidth\theight\ttext";
 
 class VideoRecorder {
  public:
@@ -85,6 +95,9 @@ class VideoRecorder {
   // Renders the state once and emits it as the next `count` frames,
   // whatever their due time (a still at the end of a run).
   void hold(const mjModel_* m, const mjData_* d, const FrameInfo& info, uint64_t count);
+  // The closing card over the state of `d`, as the next round(closing_s * fps)
+  // frames (nothing without options.closing).
+  void close(const mjModel_* m, const mjData_* d, const FrameInfo& info);
   // Flushes, waits for ffmpeg, renames F.tmp -> F and DIR.tmp -> DIR.
   // Throws std::runtime_error (and removes the partial output) on failure.
   void finish();

@@ -11,9 +11,7 @@ TitleCard make_title_card(const TitleFacts& f) {
   TitleCard card;
   card.heading = f.scenario_name.empty() ? std::filesystem::path(f.scenario_file).stem().string() : f.scenario_name;
   if (!f.scenario_file.empty()) card.lines.emplace_back("scenario", std::filesystem::path(f.scenario_file).filename().string());
-  // A load from a file names the file (and line), not the folders it came from.
-  const std::size_t slash = f.load.rfind('/');
-  card.lines.emplace_back("load", slash == std::string::npos ? f.load : f.load.substr(slash + 1));
+  card.lines.emplace_back("load", f.load);
   card.lines.emplace_back("load inertia", fmt::format("{:.1f} g cm^2 about the axis", std::max(0.0, f.load_inertia_gcm2)));
   if (f.sets.empty()) card.lines.emplace_back("parameter sets", "no move");
   for (const auto& [n, set] : f.sets) {

@@ -15,12 +15,12 @@ namespace sreh {
 struct TitleFacts {
   std::string scenario_name;
   std::string scenario_file;     // shown by its file name only
-  std::string load;              // describe_load(): "no load", "disk load (...)", a file
+  std::string load;              // load_title() (renders/run_media.hpp): the load's own name
   double load_inertia_gcm2 = 0;  // about the axis, as the plant computes it
   double mounting_tilt_deg = 0;  // 0: vertical axis
   double supply_V = 24.0;
   std::map<int, MotionParameterSet> sets; // every set a move latched, as it was then
-  std::string time_scale;        // how the video plays the run ("automatic ...", "slow motion 3x")
+  std::string time_scale;        // how the video plays the run (TimeMap::describe)
 };
 
 TitleCard make_title_card(const TitleFacts& facts);

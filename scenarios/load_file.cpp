@@ -17,7 +17,7 @@ LoadFileContents parse_load_text(const std::string& yaml_text, const std::string
   }
   if (root["steps"]) { // a whole scenario: its parser checks all of it
     const Scenario sc = parse_scenario_text(yaml_text, file, base_dir, limits);
-    return {sc.world.load, root["mounting"] ? std::optional<double>(sc.world.mounting_tilt_deg) : std::nullopt};
+    return {sc.world.load, root["mounting"] ? std::optional<double>(sc.world.mounting_tilt_deg) : std::nullopt, sc.name};
   }
   const detail::YamlReader reader(file);
   // `studio:`: a studio project's move and options (docs/studio.md), for `sreh-twin studio` only.
@@ -25,7 +25,8 @@ LoadFileContents parse_load_text(const std::string& yaml_text, const std::string
   for (const char* key : {"name", "description"}) {
     if (root[key]) (void)reader.text(root[key], key);
   }
-  LoadFileContents contents{parse_load_node(root["load"], file, base_dir), std::nullopt};
+  LoadFileContents contents{parse_load_node(root["load"], file, base_dir), std::nullopt, {}};
+  if (root["name"]) contents.name = reader.text(root["name"], "name");
   if (root["mounting"]) contents.mounting_tilt_deg = parse_mounting_node(root["mounting"], file);
   return contents;
 }

@@ -18,6 +18,7 @@ namespace sreh {
 struct LoadFileContents {
   LoadSpec load;
   std::optional<double> mounting_tilt_deg; // given only when the file has `mounting:`
+  std::string name;                        // the file's `name:` (a scenario's name), or empty
 };
 
 // Throws ScenarioError "FILE:LINE:COL: ...".
@@ -31,5 +32,11 @@ LoadFileContents parse_load_file(const std::string& path, const Limits& limits =
 // MJCF path. Implemented in world_parser.cpp.
 LoadSpec parse_load_node(const YAML::Node& node, const std::string& file, const std::string& base_dir);
 double parse_mounting_node(const YAML::Node& node, const std::string& file); // tilt from vertical, deg
+
+// The mounting tilt's range wherever a user gives it (a scenario's and a load
+// file's mounting:, size, calibrate --plan; issue 39: one range): the axis
+// vertical to upside down (A-TWIN-24).
+inline constexpr double kMinMountingTiltDeg = 0.0;
+inline constexpr double kMaxMountingTiltDeg = 180.0;
 
 } // namespace sreh

@@ -3,6 +3,8 @@
 // docs/assumptions/scenarios.md (A-SCN-*).
 #include "scenarios/scenario_parser.hpp"
 
+#include "io/text.hpp"
+
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -255,7 +257,18 @@ class Parser {
       const std::string kw = fmt::format("{}.{}", what, key);
       auto one = [&](const YAML::Node& x) {
         const auto parsed = from_name(r_.text(x, kw));
-        if (!parsed) r_.fail(x, fmt::format("{}: unknown '{}' (known: {})", kw, x.Scalar(), known));
+        if (!parsed) {
+          // Issue 39: "did you mean" ("ready" -> "Ready").
+          std::vector<std::string> choices;
+          for (std::string_view rest = known; !rest.empty();) {
+            const std::size_t comma = rest.find(", ");
+            choices.emplace_back(rest.substr(0, comma));
+            rest = comma == std::string_view::npos ? std::string_view() : rest.substr(comma + 2);
+          }
+          const std::string guess = io::closest_name(x.Scalar(), choices);
+          r_.fail(x, guess.empty() ? fmt::format("{}: unknown '{}' (known: {})", kw, x.Scalar(), known)
+                                   : fmt::format("{}: unknown '{}'; did you mean '{}'? (known: {})", kw, x.Scalar(), guess, known));
+        }
         out.push_back(*parsed);
       };
       if (v.IsSequence()) {

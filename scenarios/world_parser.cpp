@@ -91,7 +91,9 @@ LoadSpec WorldReader::load(const YAML::Node& n) const {
 double WorldReader::mounting(const YAML::Node& n) const {
   r_.check_map(n, "mounting", {"axis", "tilt_deg"});
   if (n["axis"] && n["tilt_deg"]) r_.fail(n, "mounting: give either axis or tilt_deg, not both");
-  if (n["tilt_deg"]) return r_.number(n["tilt_deg"], "mounting.tilt_deg", 0.0, 180.0);
+  if (n["tilt_deg"]) {
+    return r_.number(n["tilt_deg"], "mounting.tilt_deg", kMinMountingTiltDeg, kMaxMountingTiltDeg);
+  }
   if (n["axis"]) {
     const std::string axis = r_.text(n["axis"], "mounting.axis");
     if (axis == "vertical") return 0.0;

@@ -1,5 +1,7 @@
 #include "scenarios/yaml_reader.hpp"
 
+#include "io/text.hpp"
+
 #include <charconv>
 #include <cmath>
 #include <set>
@@ -89,11 +91,16 @@ void YamlReader::check_map(const YAML::Node& node, std::string_view what,
     for (auto a : allowed) known = known || key == a;
     if (!known) {
       std::string list;
+      std::vector<std::string> names;
       for (auto a : allowed) {
         if (!list.empty()) list += ", ";
         list += a;
+        names.emplace_back(a);
       }
-      fail(kv.first, fmt::format("{}: unknown key '{}' (allowed: {})", what, key, list));
+      // Issue 39: "did you mean" by edit distance ("wait_untill" -> "wait_until").
+      const std::string guess = io::closest_name(key, names);
+      fail(kv.first, guess.empty() ? fmt::format("{}: unknown key '{}' (allowed: {})", what, key, list)
+                                   : fmt::format("{}: unknown key '{}'; did you mean '{}'? (allowed: {})", what, key, guess, list));
     }
     if (!seen.insert(key).second) fail(kv.first, fmt::format("{}: key '{}' given twice", what, key));
   }

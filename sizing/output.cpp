@@ -1,8 +1,12 @@
 #include "sizing/output.hpp"
 
 #include <cmath>
+#include <numbers>
+#include <stdexcept>
 
 #include <fmt/format.h>
+
+#include "twin/load_figures.hpp"
 
 namespace sreh::sizing {
 namespace {
@@ -93,6 +97,31 @@ std::string isdu_write_line(const IsduWrite& w) {
                      w.comment);
 }
 
+namespace {
+// The mounting and the gravity torque it gives the load (issue 39: the
+// answer depends on it, so the summary says it).
+std::string mounting_words(double tilt_deg) {
+  if (tilt_deg == 0) return "vertical axis";
+  if (tilt_deg == 90) return "horizontal axis (tilt 90 deg)";
+  return fmt::format("axis tilted {:g} deg from vertical", tilt_deg);
+}
+
+double gravity_torque_Nm(const SizingRequest& rq) {
+  if (std::sin(rq.world.mounting_tilt_deg * std::numbers::pi / 180.0) == 0) return 0;
+  try {
+    return gravity_torque_max_Nm(load_figures(rq.world.load), rq.world.mounting_tilt_deg);
+  } catch (const std::invalid_argument&) {
+    return 0; // a load the twin rejects has failed the run before this
+  }
+}
+
+std::string mounting_text(const SizingRequest& rq) {
+  const double g = gravity_torque_Nm(rq);
+  return fmt::format("Mounting: {}; gravity torque on the load {}\n", mounting_words(rq.world.mounting_tilt_deg),
+                     g > 0 ? fmt::format("up to {:.3f} N m", g) : std::string("none (centre of mass on the axis or axis vertical)"));
+}
+} // namespace
+
 nlohmann::json to_json(const SizingRequest& rq, const SizingResult& r) {
   const Evaluation& e = r.evaluation;
   nlohmann::json j;
@@ -102,9 +131,11 @@ nlohmann::json to_json(const SizingRequest& rq, const SizingResult& r) {
                   {"ambient_C", rq.world.thermal.ambient_C},   {"parameter_set", rq.parameter_set}, {"cycles", rq.cycles},
                   {"thermal_margin_K", rq.thermal_margin_K},
                   {"mounting_tilt_deg", rq.world.mounting_tilt_deg},
+                  {"load_name", rq.load_name},
                   {"handshake_cycles", rq.handshake_cycles},
                   {"max_positioning_ms", optional_number(rq.max_positioning_ms)},
                   {"max_cycle_ms", optional_number(rq.max_cycle_ms)}};
+  j["gravity_torque_max_Nm"] = gravity_torque_Nm(rq);
   j["travel_s"] = ns_rounded(e.travel_s);
   j["completed"] = e.completed;
   j["settling_s"] = time_if(e.completed, e.settling_s);
@@ -142,8 +173,10 @@ nlohmann::json to_json(const SizingRequest& rq, const SizingResult& r) {
 std::string summary_text(const SizingRequest& rq, const SizingResult& r) {
   const Evaluation& e = r.evaluation;
   std::string s;
-  s += fmt::format("Sizing: {} deg back and forth, load {:.1f} g cm^2, {:.1f} V, dwell {} s, ambient {} degC\n",
-                   rq.angle_deg, e.load_gcm2, rq.world.supply.voltage_V, rq.dwell_s, rq.world.thermal.ambient_C);
+  s += fmt::format("Sizing: {} deg back and forth, load {:.1f} g cm^2{}, {:.1f} V, dwell {} s, ambient {} degC\n",
+                   rq.angle_deg, e.load_gcm2, rq.load_name.empty() ? "" : " (" + rq.load_name + ")", rq.world.supply.voltage_V,
+                   rq.dwell_s, rq.world.thermal.ambient_C);
+  s += mounting_text(rq);
   s += fmt::format("{} parameter set {}: speed {:.1f} deg/s, acceleration {:.1f} %, jerk {:.1f} %\n",
                    r.recommended ? (r.feasible ? (r.objective == "gentlest" ? "Gentlest set meeting the target:"
                                                                              : "Fastest feasible set:")

@@ -8,6 +8,7 @@
 
 #include "device_logic/parameter_ids.hpp"
 #include "device_logic/units.hpp"
+#include "scenarios/load_file.hpp"
 #include "sizing/sizing.hpp"
 #include "twin/load_builder.hpp"
 #include "twin/model_card.hpp"
@@ -73,7 +74,8 @@ double validate(const SizingRequest& rq) {
   check_range("--source-resistance-ohm", rq.world.supply.source_resistance_ohm, 0.0, kMaxSourceResistance_ohm, " ohm",
               "A-SCN-32");
   check_range("--bus-capacitance-F", rq.world.supply.bus_capacitance_F, 0.0, kMaxBusCapacitance_F, " F", "A-SCN-32");
-  check_range("--mounting-tilt-deg", rq.world.mounting_tilt_deg, 0.0, 180.0, " deg", "0 vertical, 90 horizontal, A-TWIN-24");
+  check_range("--mounting-tilt-deg", rq.world.mounting_tilt_deg, kMinMountingTiltDeg, kMaxMountingTiltDeg,
+              " deg", "0 vertical, 90 horizontal, A-TWIN-24");
   check_range("--handshake-cycles", rq.handshake_cycles, 0, 100, "", "IO-Link cycles per move, A-SIZE-16");
   if (rq.max_cycle_ms) check_range("--max-cycle-ms", *rq.max_cycle_ms, 1.0, 600000.0, " ms", "A-SIZE-10");
   if (rq.setting) {

@@ -34,6 +34,9 @@ const std::string kSpeedHelp =
 const std::string kAccelHelp =
     fmt::format("Evaluate this acceleration, {} % [default: recommended]", row_range(kSet.acceleration));
 const std::string kJerkHelp = fmt::format("Evaluate this jerk, {} % [default: recommended]", row_range(kSet.jerk));
+const std::string kTiltHelp =
+    fmt::format("Axis tilt from vertical, {:g} .. {:g} deg (90 horizontal: gravity acts); default: the load file's mounting:, else 0",
+                kMinMountingTiltDeg, kMaxMountingTiltDeg);
 const std::string kSetHelp = fmt::format("Parameter set 0 .. {} (index 64 + n)", param::kMotionSets - 1);
 
 using S = SizeOptions;
@@ -58,7 +61,7 @@ const OptionSpec<S> kSizeOptions[] = {
     {"source-resistance-ohm", "Supply source resistance, ohm (0: ideal source)", &S::source_resistance_ohm, false, true},
     {"bus-capacitance-F", "Capacitance on the motor supply, F (with a source resistance)", &S::bus_capacitance_F, false, true},
     {"handshake-cycles", "IO-Link cycles per move for the PLC handshake (A-SIZE-16)", &S::handshake_cycles, false, true},
-    {"mounting-tilt-deg", "Axis tilt from vertical, 0 .. 180 deg (90 horizontal: gravity acts); default: the load file's mounting:, else 0", &S::mounting_tilt_deg},
+    {"mounting-tilt-deg", kTiltHelp, &S::mounting_tilt_deg},
     {"model", "Model card overrides (YAML as `sreh-twin model show` prints): the module's physical constants", &S::model},
     {"report", "Write an HTML sizing report into this folder", &S::report},
     {"uncertainty", "Also evaluate the set on models sampled over the model card's ranges (--model narrows them): *_range and feasible_worst_case", &S::uncertainty},
@@ -98,6 +101,8 @@ SizingRequest make_request(const SizeOptions& a) {
   else if (!a.load.empty()) {
     LoadFileContents f = read_load_file(a.load);
     rq.world.load = std::move(f.load);
+    const std::string file = std::filesystem::path(a.load).filename().string();
+    rq.load_name = f.name.empty() ? file : fmt::format("{} ({})", f.name, file);
     rq.world.mounting_tilt_deg = f.mounting_tilt_deg.value_or(0.0);
   }
   else throw SizingInputError("size: give the load with --load-gcm2 J or --load LOAD.yaml");
@@ -115,6 +120,7 @@ SizingRequest make_request(const SizeOptions& a) {
   rq.world.supply.source_resistance_ohm = a.source_resistance_ohm;
   rq.world.supply.bus_capacitance_F = a.bus_capacitance_F;
   rq.handshake_cycles = a.handshake_cycles;
+  rq.on_simulation = a.on_simulation;
   if (a.mounting_tilt_deg) rq.world.mounting_tilt_deg = *a.mounting_tilt_deg;
   if (a.speed_dps || a.accel_pct || a.jerk_pct) {
     // Options left out keep the factory value of sets 1..7 (manual 6.2).

@@ -1,6 +1,7 @@
 // `sreh-twin size` and `sreh_twin.size()`: the options (interfaces.md), how
 // they become a SizingRequest, and the command itself up to its JSON object.
 #pragma once
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -42,6 +43,7 @@ struct SizeOptions {
   bool uncertainty = false;  // --uncertainty: bands over the model card's ranges (issue 26)
   int samples = 32;          // --samples: models sampled (Latin hypercube)
   int seed = 1;              // --seed: of the sampling
+  std::function<void()> on_simulation; // not an option: SizingRequest::on_simulation
 };
 
 // Every option of `size` except the CLI's own --json.

@@ -7,6 +7,7 @@
 // Constants the manual does not give: docs/assumptions/sizing.md (A-SIZE-*).
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -50,6 +51,7 @@ struct SizingRequest {
   // model, A-SIZE-15), ambient, mounting (A-TWIN-24) and the model card
   // (`--model FILE`, issue 25): the same world a scenario runs in.
   WorldSetup world;
+  std::string load_name;         // shown with the load (issue 39): a load file's name: and file; empty: --load-gcm2
   double dwell_s = 0.0;          // pause after each move (after Done)
   SettlingSpec settling;
   int parameter_set = 1;         // which of 64..71 the writes and moves use
@@ -67,6 +69,9 @@ struct SizingRequest {
   // Move reaches the device (1), Done comes back (1), the PLC reacts (1),
   // Move stays low one cycle before the next command (manual 3.2 T7) (1).
   int handshake_cycles = 4;
+  // Called as each simulation starts (the CLI's progress line, issue 39);
+  // from several threads at once with --uncertainty. Empty: nothing.
+  std::function<void()> on_simulation;
 };
 
 // What the motor supply sees (issue 17, A-SIZE-15), from the trace.

@@ -19,6 +19,7 @@
 #include "io/atomic_file.hpp"
 #include "io/cpus.hpp"
 #include "io/output_path.hpp"
+#include "scenarios/load_file.hpp"
 #include "tools/command.hpp"
 #include "tools/progress.hpp"
 
@@ -71,6 +72,8 @@ int plan_command(const CalibrateArgs& a) {
     throw InputError(e.what());
   }
   io::write_file_atomic(a.plan, [&](std::ostream& out) { out << text; });
+  std::cout << "wrote " << a.plan << " (the identification program: run it on the module with the master logging, "
+            << "then calibrate the logs with --setup " << a.plan << ")\n";
   return 0;
 }
 
@@ -163,8 +166,11 @@ SREH_REGISTER_COMMAND(57, [](CLI::App& app, int& exit_code) {
       ->check(CLI::Range(0.0, 1000.0));
   cmd->add_flag("--quiet", args->quiet, "No progress lines on stderr (they come for work over 2 s)");
   cmd->add_option("--plan", args->plan, "Write the identification program (a scenario to run on the module) here");
-  cmd->add_option("--mounting-tilt-deg", args->mounting_tilt_deg, "With --plan: tilt of the axis from vertical, deg")
-      ->check(CLI::Range(0.0, 90.0));
+  // The one range of the mounting tilt (issue 39): the world's, as in size and a scenario's mounting:.
+  cmd->add_option("--mounting-tilt-deg", args->mounting_tilt_deg,
+                  fmt::format("With --plan: tilt of the axis from vertical, {:g} .. {:g} deg (90 horizontal)",
+                              kMinMountingTiltDeg, kMaxMountingTiltDeg))
+      ->check(CLI::Range(kMinMountingTiltDeg, kMaxMountingTiltDeg));
   r.options.threads = io::usable_cpus();
   cmd->callback([args, &exit_code] { exit_code = calibrate_command(*args); });
 });

@@ -122,6 +122,7 @@ int show_command(const LoadArgs& a) {
   }
   if (a.json) std::cout << as_json(a.file, s).dump(2) << "\n";
   else print_text(a.file, s);
+  if (!a.json && !a.picture.empty()) std::cout << "wrote " << a.picture << "\n"; // issue 39: a success line per file written
   return 0;
 }
 

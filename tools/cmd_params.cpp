@@ -275,6 +275,7 @@ int show_command(const ParamsArgs& a) {
 int export_command(const ParamsArgs& a) {
   io::check_outputs({{"--iodd", a.iodd_path, io::OutputKind::File}}, {});
   io::write_file_atomic(a.iodd_path, [](std::ostream& os) { os << iodd_document(SREH_VERSION); });
+  std::cout << "wrote " << a.iodd_path << " (the parameter table as an IODD-like XML document)\n"; // issue 39
   return 0;
 }
 

@@ -24,15 +24,12 @@
 #include "tools/master_log_stream.hpp"
 #include "tools/run_folder.hpp"
 #include "tools/run_output.hpp"
+#include "twin/load_builder.hpp"
 #include "twin/plant.hpp"
 #include "twin/trace.hpp"
 #ifdef SREH_WITH_RENDER
 #include "renders/ffmpeg_encoder.hpp"
-#include "renders/report.hpp"
-#include "renders/run_recording.hpp"
-#include "renders/video.hpp"
-#include "renders/video_title.hpp"
-#include "twin/load_builder.hpp"
+#include "renders/run_media.hpp"
 #endif
 
 namespace sreh::tools {
@@ -98,92 +95,29 @@ void write_nvm(const RunArgs& a, const RunResult& r) {
 }
 
 #ifdef SREH_WITH_RENDER
-// The run is recorded once per IO-Link cycle and rendered after it, when the
-// moves are known: the time map slows every move down and compresses idle
-// stretches (issue 16), unless --slowmo fixes one factor.
-class VideoHook {
- public:
-  explicit VideoHook(const Scenario& s) {
-    title_.scenario_name = s.name;
-    title_.scenario_file = s.file;
-    title_.load = describe_load(s.world.load);
-    title_.mounting_tilt_deg = s.world.mounting_tilt_deg;
-    title_.supply_V = s.world.supply.voltage_V;
+// The video and the report (renders/run_media.hpp): the run is recorded once
+// per IO-Link cycle and rendered after it, when the moves are known: the
+// time map slows the moves down and compresses idle stretches (issue 16),
+// unless --slowmo fixes one factor.
+RunMediaOptions media_options(const RunArgs& a) {
+  RunMediaOptions m;
+  if (!a.video.empty() || !a.frames.empty()) {
+    VideoOptions v;
+    v.path = a.video;
+    v.frames_dir = a.frames;
+    v.fps = a.fps;
+    v.slowmo = a.slowmo > 0 ? a.slowmo : 1.0;
+    const auto x = a.size.find('x'); // checked by check_size
+    v.width_px = std::stoi(a.size.substr(0, x));
+    v.height_px = std::stoi(a.size.substr(x + 1));
+    if (a.camera == "top") v.camera = CameraSpec::top();
+    m.video = v;
   }
-  void on_step(const Step& step) { step_ = step.number + " " + step.kind; }
-  void on_cycle(const Twin& twin) {
-    const Plant& plant = twin.plant();
-    if (!recording_) {
-      recording_ = std::make_unique<RunRecording>(plant.model());
-      title_.load_inertia_gcm2 = twin.load_inertia_gcm2();
-    }
-    // The title card lists each parameter set a move latched, as it was then (issue 29).
-    if (const std::optional<MoveRecord> move = twin.device().pending_move(); move && move->number != last_move_) {
-      last_move_ = move->number;
-      if (!title_.sets.contains(move->parameter_set)) {
-        title_.sets.emplace(move->parameter_set, twin.device().snapshot().configuration.store.motion_set(move->parameter_set));
-      }
-    }
-    FrameInfo info;
-    info.row = twin.last_row();
-    info.ghost_joint_rad = plant.ghost_angle_rad();
-    info.step = step_;
-    recording_->add(plant.data(), info);
-  }
-  VideoSummary render(VideoOptions options, bool fixed_slowmo) {
-    if (!recording_) throw std::runtime_error("video: the run has no cycle to show");
-    title_.time_scale = fixed_slowmo ? fmt::format("slow motion {:g}x", options.slowmo)
-                                     : "each move slowed to >= 2 s, idle sped up";
-    options.title = make_title_card(title_);
-    return recording_->render(options, fixed_slowmo);
-  }
-
- private:
-  TitleFacts title_;
-  uint32_t last_move_ = 0;
-  std::string step_;
-  std::unique_ptr<RunRecording> recording_;
-};
-
-VideoOptions video_options(const RunArgs& a) {
-  VideoOptions v;
-  v.path = a.video;
-  v.frames_dir = a.frames;
-  v.fps = a.fps;
-  v.slowmo = a.slowmo > 0 ? a.slowmo : 1.0;
-  const auto x = a.size.find('x'); // checked by check_size
-  v.width_px = std::stoi(a.size.substr(0, x));
-  v.height_px = std::stoi(a.size.substr(x + 1));
-  if (a.camera == "top") v.camera = CameraSpec::top();
-  return v;
-}
-
-// --report: the recorder took the rows, checks and moves as the run made
-// them (memory flat with run length, issue 12); here the rest of the page.
-void write_report_dir(const RunArgs& a, const RunResult& r, ReportRecorder& recorded) {
-  ReportSummary summary;
-  summary.scenario_name = r.name;
-  summary.passed = r.passed;
-  summary.tracking_limit_deg = r.tracking_limit_deg;
-  summary.command_line = command_line();
-  summary.version = SREH_VERSION;
-  summary.sim_time_s = r.sim_time_s;
-  summary.max_tracking_error_deg = r.max_tracking_error_deg;
-  summary.hints = r.hints;
-  if (!a.video.empty()) summary.video_source = a.video; // copied in: the folder stays movable
-  for_option("--report", a.report, [&] { write_report(a.report, summary, recorded); });
-}
-
-// Hands the run's checks and moves to the report as well as to the output.
-void record_for_report(RunOptions& options, ReportRecorder& report) {
-  options.check_sink = [prev = std::move(options.check_sink), &report](const CheckRecord& c) {
-    if (prev) prev(c);
-    report.add_check({c.description, c.passed, c.step, c.line, c.t_s, c.actual});
-  };
-  options.move_sink = [prev = std::move(options.move_sink), &report](const MoveRecord& m) {
-    if (prev) prev(m);
-    report.add_move(m);
-  };
+  m.fixed_slowmo = a.slowmo > 0;
+  m.report_dir = a.report;
+  m.command_line = command_line();
+  m.version = SREH_VERSION;
+  return m;
 }
 #endif
 
@@ -334,13 +268,10 @@ int run_command(RunArgs a) {
   // report's as well.
   std::optional<RunOutput> output;
 #ifdef SREH_WITH_RENDER
-  std::optional<ReportRecorder> report;
+  std::optional<RunMedia> media;
 #endif
   try {
     output.emplace(a.json);
-#ifdef SREH_WITH_RENDER
-    if (!a.report.empty()) report.emplace();
-#endif
   } catch (const std::runtime_error& e) {
     throw InputError(e.what());
   }
@@ -353,41 +284,29 @@ int run_command(RunArgs a) {
     options.limits = a.limits;
     output->attach(options);
     if (!a.junit.empty()) junit.begin_case(a.scenario, scenario.name);
-#ifdef SREH_WITH_RENDER
-    if (trace || report) {
-      options.trace_sink = [&](const TraceRow& row) {
-        if (trace) trace->row(row);
-        if (report) report->add_row(row);
-      };
-    }
-    if (report) record_for_report(options, *report);
+    if (trace) options.trace_sink = [&](const TraceRow& row) { trace->row(row); };
+    options.on_cycle = [&](const Twin& twin) { progress.update(-1.0, twin.time_s()); };
     if (master_log) master_log->attach(options);
-    std::optional<VideoHook> video;
-    if (!a.video.empty() || !a.frames.empty()) video.emplace(scenario);
-    options.on_cycle = [&](const Twin& twin) {
-      if (video) video->on_cycle(twin);
-      progress.update(-1.0, twin.time_s());
-    };
-    if (video) options.on_step = [&](const Step& step) { video->on_step(step); };
     if (!a.junit.empty()) junit.chain(options);
-    result = timed_run(scenario, options, wall_s);
-    if (video) {
+#ifdef SREH_WITH_RENDER
+    if (!a.video.empty() || !a.frames.empty() || !a.report.empty()) {
       try {
-        progress.phase("rendering the video");
-        VideoOptions vo = video_options(a);
-        vo.progress = [&progress](double fraction) { progress.update(fraction); };
-        video->render(vo, a.slowmo > 0);
+        media.emplace(scenario, media_options(a));
+      } catch (const std::runtime_error& e) {
+        throw InputError(e.what());
+      }
+      media->attach(options);
+    }
+    result = timed_run(scenario, options, wall_s);
+    if (media) {
+      try {
+        if (!a.video.empty() || !a.frames.empty()) progress.phase("rendering the video");
+        media->render_video(result, [&progress](double fraction) { progress.update(fraction); });
       } catch (const std::invalid_argument& e) {
         throw InputError(e.what());
       }
     }
 #else
-    if (trace) options.trace_sink = [&](const TraceRow& row) { trace->row(row); };
-    options.on_cycle = [&](const Twin& twin) {
-      progress.update(-1.0, twin.time_s());
-    };
-    if (master_log) master_log->attach(options);
-    if (!a.junit.empty()) junit.chain(options);
     result = timed_run(scenario, options, wall_s);
 #endif
   } catch (const ScenarioError& e) {
@@ -395,7 +314,7 @@ int run_command(RunArgs a) {
   }
   commit_outputs(a, result, wall_s, trace, master_log, junit);
 #ifdef SREH_WITH_RENDER
-  if (report) write_report_dir(a, result, *report);
+  if (media && !a.report.empty()) for_option("--report", a.report, [&] { media->write_report(result); });
 #endif
   output->print(std::cout, result, wall_s);
   return result.passed ? 0 : 1;
@@ -429,7 +348,8 @@ SREH_REGISTER_COMMAND(10, [](CLI::App& app, int& exit_code) {
   cmd->add_option("--size", args->size, "Video size WIDTHxHEIGHT in pixels (even numbers, 16 .. 4096)")->capture_default_str();
   cmd->add_option("--slowmo", args->slowmo,
                   "Play the whole video this many times slower than simulated time, 0.01 .. 1000 [default: automatic: "
-                  "each move >= 2 s on screen, idle > 2 s sped up to 1 s]")
+                  "one factor for every move, the shortest >= 2 s on screen (a move over 5x longer gets its own, "
+                  "named in the banner); idle > 2 s sped up to 1 s]")
       ->check(CLI::Range(0.01, 1000.0));
   cmd->add_option("--frames", args->frames, "Also write PNG frames into this folder (new or empty)");
   cmd->add_option("--camera", args->camera, "Camera: default (fits module and load, 135 deg azimuth, 30 deg down) or top")

@@ -69,7 +69,8 @@ std::string command_problem(const CLI::App& app, int argc, char** argv) {
   for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) {
     if (sub->get_name() == first) return {};
   }
-  return "unknown command '" + first + "'; the commands are " + names;
+  const std::string guess = sreh::tools::command_hint(app, first);
+  return "unknown command '" + first + "'; " + (guess.empty() ? "" : "did you mean " + guess + "? ") + "the commands are " + names;
 }
 
 // Error messages echo user input: one line, control characters escaped.

@@ -30,15 +30,29 @@ void Progress::update(double fraction, double simulated_s) {
   print(fraction, simulated_s, false);
 }
 
+void Progress::update_count(uint64_t done, const std::string& unit) {
+  count_unit_ = unit;
+  count_ = done;
+  if (quiet_ || phase_.empty()) return;
+  const auto now = Clock::now();
+  if (now - start_ < kQuiet) return;
+  if (shown_ && now - last_ < (terminal_ ? kRedrawEvery : kLogEvery)) return;
+  last_ = now;
+  print(-1.0, 0, false);
+}
+
 void Progress::end_phase() {
-  if (!phase_.empty() && shown_ && !quiet_) print(1.0, 0, true);
+  if (!phase_.empty() && shown_ && !quiet_) print(count_unit_.empty() ? 1.0 : -1.0, 0, true);
   phase_.clear();
+  count_unit_.clear();
 }
 
 void Progress::print(double fraction, double simulated_s, bool final_line) {
   const double elapsed_s = std::chrono::duration<double>(Clock::now() - start_).count();
   char what[96];
-  if (fraction >= 0) {
+  if (!count_unit_.empty()) {
+    std::snprintf(what, sizeof what, "%llu %s (%.0f s)", static_cast<unsigned long long>(count_), count_unit_.c_str(), elapsed_s);
+  } else if (fraction >= 0) {
     const double eta_s = fraction > 0.01 && !final_line ? elapsed_s * (1.0 - fraction) / fraction : -1.0;
     if (eta_s >= 0) std::snprintf(what, sizeof what, "%3.0f %% (%.0f s, about %.0f s to go)", 100 * fraction, elapsed_s, eta_s);
     else std::snprintf(what, sizeof what, "%3.0f %% (%.0f s)", 100 * fraction, elapsed_s);

@@ -6,6 +6,7 @@
 // the simulation never reads it.
 #pragma once
 #include <chrono>
+#include <cstdint>
 #include <string>
 
 namespace sreh::tools {
@@ -22,11 +23,17 @@ class Progress {
   // `fraction` of the phase done (0..1), or < 0 when unknown: then the
   // simulated time stands for it ("12.5 s simulated").
   void update(double fraction, double simulated_s = 0);
+  // Work whose size is not known ahead: how many `unit` done so far
+  // ("14 simulations (3 s)").
+  void update_count(uint64_t done, const std::string& unit);
   void end_phase(); // prints the 100 % line if the phase printed any
 
  private:
   using Clock = std::chrono::steady_clock;
   void print(double fraction, double simulated_s, bool final_line);
+  void print_line(const std::string& what, bool final_line);
+  std::string count_unit_; // set: the phase counts, update_count
+  uint64_t count_ = 0;
   bool terminal_;
   bool quiet_;
   std::string phase_;

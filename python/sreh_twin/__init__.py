@@ -4,9 +4,12 @@ The device is reached as from a PLC: ``Twin.exchange()`` sends the 6-byte
 output process data and returns the 7-byte input frame (manual 2.2, 2.3),
 ``Twin.isdu_read()`` / ``isdu_write()`` are its parameters (manual 6).
 ``run_scenario``, ``size`` and ``sweep`` are the CLI's ``run --json``,
-``size --json`` and ``sweep`` on the same C++ code paths. ``sreh_twin.env``
+``size --json`` and ``sweep`` on the same C++ code paths, writing the same
+videos and reports (``run_scenario(..., video=, report=)``,
+``size(..., report=)``); ``Twin.render()`` draws the module as an RGB array. ``sreh_twin.env``
 holds a Gymnasium-shaped positioning environment.
 """
+import json as _json
 import os as _os
 import re as _re
 import warnings as _warnings
@@ -75,12 +78,34 @@ def _python_names(error):
     return InputError(text)
 
 
-def run_scenario(path):
-    """Run a scenario file (scenarios/README.md) and return the dict of
+def run_scenario(scenario, *, video=None, report=None, frames=None, size="1280x720", fps=30, slowmo=None):
+    """Run a scenario (scenarios/README.md) and return the dict of
     ``sreh-twin run --json``: name, passed, failures, stopped_early, moves,
-    final, checks, sim_time_s, cycles and the run's extremes. A failed check
-    gives ``passed == False``; a bad scenario raises InputError."""
-    return _core.run_scenario(_os.fspath(path))
+    final, checks, sim_time_s, cycles and the run's extremes.
+
+    ``scenario`` is a file path, the scenario's YAML text, or a dict of the
+    same keys (e.g. ``{"name": "one move", "steps": [{"pd": {"motor_on": 1}},
+    ...]}``); relative files in text or a dict resolve from the current
+    directory. ``video`` (.mp4, .webm or .gif), ``frames`` (a folder of PNG
+    frames with text.tsv) and ``report`` (an HTML report folder) write what
+    ``run --video``, ``--frames`` and ``--report`` write; ``size``
+    ("WIDTHxHEIGHT"), ``fps`` and ``slowmo`` (one factor for the whole
+    video; default automatic) as the CLI's options. A failed check gives
+    ``passed == False``; a bad scenario or option raises InputError."""
+    text = None
+    if isinstance(scenario, dict):
+        text = _json.dumps(scenario)  # JSON is YAML
+    elif isinstance(scenario, str) and not _os.path.exists(scenario) and ("\n" in scenario or ":" in scenario):
+        text = scenario
+    elif not isinstance(scenario, (str, _os.PathLike)):
+        raise TypeError(f"run_scenario: expected a path, YAML text or a dict, got {type(scenario).__name__}")
+    source = text if text is not None else _os.fspath(scenario)
+    paths = {k: None if v is None else _os.fspath(v) for k, v in {"video": video, "frames": frames, "report": report}.items()}
+    try:
+        return _core.run_scenario(source, is_text=text is not None, base_dir=_os.getcwd(), size=size, fps=fps,
+                                  slowmo=slowmo, **paths)
+    except InputError as e:
+        raise _python_names(e) from None
 
 
 def size(**options):

@@ -20,6 +20,9 @@ drives the module as a PLC would, through process data (manual 2.2):
   when far away), ``+1`` when the module reports Done within
   ``tolerance_deg`` of the goal (terminated, success), ``-1`` when it reports
   an error (terminated). Truncated after ``max_episode_s`` of simulated time.
+* ``render()`` (render_mode "rgb_array", the default): the module as a
+  video frame of ``sreh-twin run --video`` shows it, an RGB uint8 array of
+  shape (height, width, 3) for ``render_size=(width, height)``.
 """
 import numpy as np
 
@@ -83,10 +86,10 @@ class PositioningEnv(_Base):
     the trace is off unless twin_options says record_trace=True.
     """
 
-    metadata = {"render_modes": []}
+    metadata = {"render_modes": ["rgb_array"], "render_fps": 30}
 
     def __init__(self, goal_range_deg=(-180.0, 180.0), tolerance_deg=0.5, max_episode_s=2.0, cycles_per_step=5,
-                 twin_options=None):
+                 twin_options=None, render_mode="rgb_array", render_size=(640, 480)):
         if not goal_range_deg[0] <= goal_range_deg[1]:
             raise ValueError(f"goal_range_deg {goal_range_deg}: low must not exceed high")
         if cycles_per_step < 1:
@@ -95,6 +98,10 @@ class PositioningEnv(_Base):
         self.tolerance_deg = float(tolerance_deg)
         self.max_episode_s = float(max_episode_s)
         self.cycles_per_step = int(cycles_per_step)
+        if render_mode not in (None, "rgb_array"):
+            raise ValueError(f"render_mode {render_mode!r}: expected 'rgb_array' or None")
+        self.render_mode = render_mode
+        self.render_size = (int(render_size[0]), int(render_size[1]))
         self.twin_options = {"record_trace": False, **(twin_options or {})}
         self.action_space = _box([-360.0, 0.0, 0.0], [360.0, 7.0, 1.0])
         inf = np.inf
@@ -153,6 +160,16 @@ class PositioningEnv(_Base):
         terminated = success or bool(pd["error"])
         truncated = not terminated and self.twin.time_s >= self.max_episode_s
         return self._observation(), float(reward), terminated, truncated, self._info(success)
+
+    def render(self):
+        """The module now, as a video frame shows it (the overlay with time,
+        state, positions and codes): a numpy uint8 array (height, width, 3),
+        RGB, of render_size (width, height). None with render_mode=None."""
+        if self.render_mode is None:
+            return None
+        if self.twin is None:
+            raise RuntimeError("PositioningEnv.render before reset")
+        return self.twin.render(*self.render_size)
 
     def close(self):
         self.twin = None

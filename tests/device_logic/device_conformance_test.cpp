@@ -30,7 +30,7 @@ TEST(LinkWatchdog, SlowRegularCycleIsNoInterruption_A_LINK_1) {
   EXPECT_EQ(r.read_u(114, 6), 0);
 }
 
-TEST(LinkWatchdog, WithoutTheAnnouncedCycleA32msMasterTripsAfter20ms_A_LINK_1) {
+TEST(LinkWatchdog, Unannounced32msMasterTripsAfter20ms_A_LINK_1) {
   Rig r; // the master never announced its cycle: 2 ms assumed, watchdog 20 ms
   r.pd.motor_on = true;
   run_cycles(r, 20, 5);

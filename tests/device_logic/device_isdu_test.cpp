@@ -76,7 +76,7 @@ TEST(SystemCommand, IndexTwoIsWriteOnlyAndChecksLength_6_6) {
   EXPECT_EQ(r.command(128).error, kIsduFunctionUnavailable); // not in manual 6.6
 }
 
-TEST(SystemCommand, ApplicationReset129RestoresFactoryConfiguration_6_6) {
+TEST(SystemCommand, ApplicationReset129RestoresFactorySetup_6_6) {
   Rig r;
   ASSERT_TRUE(r.write_u(65, 1, 1234).ok());
   ASSERT_TRUE(r.write_u(83, 0, 2).ok());
@@ -184,7 +184,7 @@ TEST(Led, ColourPerState_3_1) {
   EXPECT_EQ(r.dev.led(), LedColor::Red); // ErrorOn
 }
 
-TEST(Led, WarningOrangeBlinkInReadyOrangeSteadyInMotorOffHiddenInError_3_1) {
+TEST(Led, WarningBlinksInReadySteadyInMotorOffHiddenInError_3_1) {
   Rig r;
   r.temperature_C = 71;
   r.cycle();

@@ -45,7 +45,7 @@ TEST(VoltageMonitorAlone, DebouncedOnOneSide_A_MON_1_7_2_114_4) {
   EXPECT_EQ(v.step(31.0, 18.0, 30.0, kStep_ns), cause::kVoltageHigh);
 }
 
-TEST(TemperatureMonitorAlone, WarningHysteresisAndError_7_2_7_3_A_MON_2) {
+TEST(TemperatureMonitorAlone, HysteresisWarningError_7_2_7_3_A_MON_2) {
   EXPECT_FALSE(TemperatureMonitor::step(69.9, false).warning);
   EXPECT_TRUE(TemperatureMonitor::step(70.0, false).warning);
   EXPECT_TRUE(TemperatureMonitor::step(69.5, true).warning);  // inside the 1 C band: kept

@@ -86,7 +86,7 @@ TEST(Temperature, ErrorAt75SwitchesMotorOff_7_2_114_3) {
   EXPECT_EQ(r.read_u(112, 0), 150); // 0.5 C raw
 }
 
-TEST(TrackingError, WrongLoadConfigurationLeadsToTrackingError_7_2_114_5) {
+TEST(TrackingError, WrongLoadConfigurationTripsIt_7_2_114_5) {
   Rig r;
   r.load_kgm2 = gcm2_to_kgm2(15000); // heavy load, parameter set 1 thinks 0 g cm^2
   r.switch_on();

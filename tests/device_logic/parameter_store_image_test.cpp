@@ -171,7 +171,7 @@ TEST(DataStorageIndex3, StatePropertyFollowsCommands) {
 
 // Manual 8 device exchange: a master backs up the DS set of the installed
 // module and restores it into a factory-new replacement.
-TEST(DataStorageIndex3, ReplacementDeviceEndsUpWithIdenticalConfiguration) {
+TEST(DataStorageIndex3, ReplacementDeviceGetsIdenticalConfiguration) {
   ParameterStore old_device;
   for (int n = 0; n < 8; ++n) {
     const auto i = static_cast<uint16_t>(64 + n);

@@ -179,7 +179,7 @@ TEST(ProcessDataLayout, EachRowsMemberAndBitsAgree_2_2_2_3) {
 
 // The decoded views read each field through its row: the value the codec
 // wrote comes back, the position sign-extended (manual 2.2, 2.3, 2.5).
-TEST(ProcessDataLayout, FieldValuesReadThroughTheTableAreTheCodecs_2_2_2_3) {
+TEST(ProcessDataLayout, TableFieldValuesAreTheCodecs_2_2_2_3) {
   ProcessDataOut out;
   out.target_raw = -123456;
   out.parameter_set = 5;

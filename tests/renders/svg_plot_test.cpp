@@ -70,7 +70,7 @@ TEST(Decimation, KeepsSpikesAndBoundsThePointCount) {
   EXPECT_TRUE(std::is_sorted(keep.begin(), keep.end()));
 }
 
-TEST(Decimation, ShortSeriesAreKeptWholeWithOneNeighbourOutsideTheRange) {
+TEST(Decimation, ShortSeriesKeptWholeWithOneNeighbourOutside) {
   const std::vector<double> x{0, 1, 2, 3, 4}, y{0, 1, 0, 1, 0};
   EXPECT_EQ(decimate_min_max(x, y, 1.5, 3.5, 100), (std::vector<std::size_t>{1, 2, 3, 4}));
 }

@@ -70,5 +70,33 @@ TEST(TimeMap, SlowMotionIsCapped) {
   EXPECT_EQ(m.segment_at(0.1).rate, 100.0);
 }
 
+// Issue 39 (A-RENDERS-20): moves share one factor, so that their on-screen
+// durations compare: a 0.1 s swivel wants 20x, a 0.3 s move alone 6.67x
+// (within 5x): both play at 20x.
+TEST(TimeMap, MovesShareOneFactor) {
+  const TimeMap m = TimeMap::automatic({{0.1, 0.2}, {1.0, 1.3}}, 1.5);
+  EXPECT_EQ(m.segment_at(0.15).rate, 20.0);
+  EXPECT_EQ(m.segment_at(1.15).rate, 20.0);
+  EXPECT_EQ(m.slowmo_factors(), std::vector<double>{20.0});
+  EXPECT_NEAR((m.video_time(1.3) - m.video_time(1.0)) / (m.video_time(0.2) - m.video_time(0.1)), 3.0, 1e-9);
+  EXPECT_EQ(m.describe(), "slow motion 20x for every move");
+  for (const TimeSegment& s : m.segments()) EXPECT_EQ(s.label().find("was"), std::string::npos) << s.label();
+}
+
+// A move over 5x longer than the shortest gets its own factor, which the
+// banner names where it changes, and the title card lists.
+TEST(TimeMap, MuchLongerMoveGetsItsOwnNamedFactor) {
+  const TimeMap m = TimeMap::automatic({{0.1, 0.15}, {1.0, 2.0}}, 2.5);
+  EXPECT_EQ(m.segment_at(0.12).rate, 40.0);
+  EXPECT_EQ(m.segment_at(1.5).rate, 2.0);
+  EXPECT_EQ(m.segment_at(1.5).label(), "slow motion 2x (was 40x)");
+  EXPECT_EQ(m.segment_at(0.12).label(), "slow motion 40x");
+  EXPECT_EQ(m.slowmo_factors(), (std::vector<double>{40.0, 2.0}));
+  EXPECT_EQ(m.describe(), "slow motion 40x and 2x (moves differ more than 5x in length)");
+  TimeScaleOptions wide;
+  wide.max_factor_ratio = 100; // within the ratio: one factor again
+  EXPECT_EQ(TimeMap::automatic({{0.1, 0.15}, {1.0, 2.0}}, 2.5, wide).slowmo_factors(), std::vector<double>{40.0});
+}
+
 } // namespace
 } // namespace sreh

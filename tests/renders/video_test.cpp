@@ -270,5 +270,72 @@ TEST_F(VideoTest, RedrawingOnlyTheChangingPartGivesTheFullFrames) {
   mj_deleteModel(m);
 }
 
+// Issue 39: the closing card follows the run's last frame; every card text
+// is wrapped, never cut; the caption shows; frames/text.tsv records what each
+// frame shows and where.
+TEST_F(VideoTest, ClosingCardCaptionsAndTheTextLog) {
+  VideoOptions o = small({});
+  o.width_px = 320;
+  o.height_px = 240;
+  o.frames_dir = dir_ / "log";
+  o.fps = 10;
+  o.title_s = 0.5;
+  o.closing_s = 1.0;
+  const std::string name = "a scenario with a name much too long for one line of a small frame, said in full";
+  o.title = TitleCard{name, {{"load", "gripper with jaws and a part on an adapter (gripper_with_part.yaml)"}}};
+  o.closing = TitleCard{"PASS: all 3 checks held", {{"final state", "Ready at 90.00 deg, LED green"}}};
+  VideoRecorder rec(md_.m, o);
+  for (int c = 0; c <= 100; ++c) {
+    const double t_s = c * 0.002;
+    md_.set_flange(t_s * 3.0);
+    if (!rec.wants_frame(t_s)) continue;
+    FrameInfo f;
+    f.row.t_s = t_s;
+    f.row.state = State::Busy;
+    f.caption = "pick at 0 deg, swivel to the place position at 180 deg";
+    rec.add_frame(md_.m, md_.d, f);
+  }
+  FrameInfo last;
+  last.row.t_s = 0.2;
+  rec.close(md_.m, md_.d, last);
+  const uint64_t n = rec.frames_emitted();
+  EXPECT_EQ(n, 5u + 3u + 10u); // title 0.5 s, run frames 0..2 (0.2 s at 10 fps), closing 1 s
+  rec.finish();
+  std::ifstream log(dir_ / "log" / "text.tsv");
+  std::string line;
+  std::getline(log, line);
+  EXPECT_EQ(line, kTextLogHeader);
+  std::string title, closing, caption;
+  while (std::getline(log, line)) {
+    // first_frame, last_frame, kind, x, y, width, height, then the text.
+    std::vector<std::string> col;
+    std::size_t at = 0;
+    for (int i = 0; i < 7; ++i) {
+      const std::size_t tab = line.find('\t', at);
+      ASSERT_NE(tab, std::string::npos) << line;
+      col.push_back(line.substr(at, tab - at));
+      at = tab + 1;
+    }
+    const std::string text = line.substr(at);
+    const uint64_t first = std::stoull(col[0]), last_frame = std::stoull(col[1]);
+    EXPECT_GT(std::stoi(col[5]), 0) << line;
+    EXPECT_LT(std::stoi(col[3]) + std::stoi(col[5]), 320 + 1) << "inside the frame: " << line;
+    EXPECT_EQ(text.find("..."), std::string::npos) << "cut: " << line;
+    if (col[2] == "card" && first == 0) title += (title.empty() ? "" : " ") + text;
+    if (col[2] == "card" && last_frame == n - 1) closing += (closing.empty() ? "" : " ") + text;
+    if (col[2] == "caption" && first == 5) caption += (caption.empty() ? "" : " ") + text;
+  }
+  EXPECT_NE(title.find(name), std::string::npos) << title;
+  EXPECT_NE(title.find("gripper with jaws and a part on an adapter (gripper_with_part.yaml)"), std::string::npos) << title;
+  EXPECT_EQ(closing.rfind("PASS: all 3 checks held", 0), 0u) << closing;
+  EXPECT_NE(closing.find("Ready at 90.00 deg, LED green"), std::string::npos) << closing;
+  EXPECT_EQ(caption, "pick at 0 deg, swivel to the place position at 180 deg");
+  // The closing card is one image over its frames, unlike the run's last frame.
+  const std::vector<uint8_t> card = gray_frame(dir_ / "log", n - 1), run = gray_frame(dir_ / "log", 7);
+  ASSERT_EQ(card.size(), 320u * 240u);
+  EXPECT_EQ(gray_frame(dir_ / "log", n - 10), card);
+  EXPECT_NE(run, card);
+}
+
 } // namespace
 } // namespace sreh

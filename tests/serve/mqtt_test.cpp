@@ -227,7 +227,7 @@ TEST(MqttBridge, ProcessDataCommandsAndIsduOverABroker) {
 
 // Issue 27: the token never comes back from serve, refusals carry the
 // request id, availability says online/offline, retained data is cleared.
-TEST(MqttBridge, TokenNeverPublishedIdOnRefusalsAvailabilityAndCleanStop) {
+TEST(MqttBridge, NoTokenOutIdOnRefusalAvailabilityCleanStop) {
   if (access(kBroker, X_OK) != 0) GTEST_SKIP() << "mosquitto not installed";
   Broker broker;
   ASSERT_TRUE(broker.start()) << "mosquitto did not start";

@@ -17,7 +17,7 @@ double temperature_after(double loss_W, double ambient_C, double t_s) {
   return th.sensor_C();
 }
 
-TEST(ThermalEstimate, TripFollowsWarningWhenTheSteadyStateIsAbove75_7_2) {
+TEST(ThermalEstimate, TripFollowsWarningWhenSteadyStateAbove75_7_2) {
   const ThermalEstimate e = estimate_thermal(1.2, 25.0, default_module_model().thermal); // steady 25 + 1.2 x 58 K/W = 94.6 degC
   EXPECT_NEAR(e.steady_C, 25.0 + 1.2 * 58.0, 1e-9);
   ASSERT_TRUE(e.time_to_warning_s);
@@ -39,7 +39,7 @@ TEST(ThermalEstimate, NoTripWhenTheSteadyStateStaysBelow75) {
   EXPECT_FALSE(cool.time_to_trip_s);
 }
 
-TEST(ThermalEstimate, CurveStartsAtAmbientAndRisesTowardsTheSteadyState) {
+TEST(ThermalEstimate, CurveRisesFromAmbientTowardsSteadyState) {
   const std::vector<TemperaturePoint> c = temperature_curve(0.5, 30.0, 600.0, 1.0, default_module_model().thermal);
   ASSERT_EQ(c.size(), 601u);
   EXPECT_EQ(c.front().C, 30.0);

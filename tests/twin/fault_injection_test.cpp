@@ -35,7 +35,7 @@ void motor_on(Twin& twin, ProcessDataOut& pd) {
 // A jammed flange does not move although the device commands a move and the
 // motor pushes: the device sees the setpoint run away from the encoder and
 // trips its tracking-error monitor (manual 2.4 bit 3, 114.5), from physics.
-TEST(FaultInjection, BlockedFlangeHoldsPositionAndTripsTrackingError_2_4) {
+TEST(FaultInjection, BlockedFlangeHoldsAndTripsTrackingError_2_4) {
   Twin twin(config_2000());
   ProcessDataOut pd;
   motor_on(twin, pd);

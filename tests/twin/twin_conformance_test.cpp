@@ -12,7 +12,7 @@
 namespace sreh {
 namespace {
 
-TEST(TwinConformance, MasterCycleChangesTimeStepAndRefusesBadValues_1_A_LINK_2) {
+TEST(TwinConformance, MasterCycleSetsStepRefusesBad_1_A_LINK_2) {
   Twin twin(TwinConfig{});
   twin.run_cycle();
   EXPECT_NEAR(twin.time_s(), 0.002, 1e-12);
@@ -50,7 +50,7 @@ TEST(TwinConformance, TurnIsSpreadOverTheOffTime_4_1) {
   EXPECT_NEAR(rad_to_deg(twin.plant().angle_rad()), 90.0, 1e-9);
 }
 
-TEST(TwinConformance, ProcessDataResumeOnlyInOperateAfterPowerOn_A_LINK_3) {
+TEST(TwinConformance, PdResumesOnlyInOperateAfterPowerOn_A_LINK_3) {
   Twin twin(TwinConfig{});
   ProcessDataOut pd;
   pd.motor_on = true;

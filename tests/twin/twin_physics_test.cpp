@@ -180,7 +180,7 @@ TEST(TwinPhysics, MoveRecordsFollowFig3_3_5_2) {
 }
 
 // Issue 14: a tighter window takes at least as long, a heavier load longer.
-TEST(TwinPhysics, SettlingGrowsWithTighterToleranceAndHeavierLoad_3_5_7) {
+TEST(TwinPhysics, SettlingGrowsWithTighterWindowAndLoad_3_5_7) {
   auto settling = [](double load_gcm2, uint16_t tolerance_counts) {
     TwinConfig c;
     c.load = InertiaLoad{load_gcm2};
@@ -220,7 +220,7 @@ double settling_without_wait(double load_gcm2, double tolerance_deg) {
   return twin.moves()[0].settling_s.value_or(-1.0);
 }
 
-TEST(TwinPhysics, SettlingWithoutWaitGrowsWithLoadAndTighterWindow_3_5_7) {
+TEST(TwinPhysics, SettlingNoWaitGrowsWithLoadAndTighterWindow_3_5_7) {
   const std::vector<double> loads{0, 1000, 5000, 10000, 15000};
   const std::vector<double> tolerances{1.0, 0.2, 0.05, 0.01}; // loosest first
   const double noise_s = 0.001;
@@ -258,7 +258,7 @@ TEST(TwinPhysics, HeavyTightSettlesTwiceAsLongAsLightLoose_3_5_7) {
 // 0.05 deg window at the end of the trajectory, the flange's swing pulls
 // the rotor out of it and 115.3 follows; in_window_s records when it
 // entered the window for good (servo.md).
-TEST(TwinPhysics, HeavyLoadLeavesWindowAfterDoneWithoutWaitingTime_3_5_7) {
+TEST(TwinPhysics, HeavyLoadLeavesWindowAfterDoneNoWait_3_5_7) {
   TwinConfig c;
   c.load = InertiaLoad{15000};
   c.record_trace = false;
