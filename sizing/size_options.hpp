@@ -41,6 +41,7 @@ struct SizeOptions {
   bool uncertainty = false;  // --uncertainty: bands over the model card's ranges (issue 26)
   int samples = 32;          // --samples: models sampled (Latin hypercube)
   int seed = 1;              // --seed: of the sampling
+  int settling_spread_counts = 4; // --settling-spread-counts: targets +-N counts around the answer (issue 35); 0 off
 };
 
 // Every option of `size` except the CLI's own --json.
