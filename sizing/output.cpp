@@ -87,8 +87,8 @@ std::string verdict_text(const TraceFigures& f, double required_thermal_margin_K
   s += "  supply            " + supply_text(f.supply) + "\n";
   s += fmt::format("  binding limit     {}\n", binding_limit);
   if (u) { // one verdict (issue 35): over the nominal and every sample
-    s += fmt::format("  feasible          {}: {}{}\n", u->feasible_worst_case ? "yes, in every sample" : "NO", u->sentence(),
-                     f.feasible ? "" : "; on the nominal model: " + f.reason);
+    s += fmt::format("  feasible          {}: {}{}\n", u->feasible_worst_case ? "yes, in every sample" : "NO",
+                     u->verdict.sentence(), f.feasible ? "" : "; on the nominal model: " + f.reason);
   } else {
     s += fmt::format("  feasible          {}{}\n", feasible ? "yes" : "NO", feasible ? "" : ": " + f.reason);
   }

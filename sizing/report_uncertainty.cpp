@@ -93,7 +93,7 @@ std::string settling_spread_section(const SettlingSpread& s) {
     };
     band_row("settling time (worst move)", s.settling_s);
     band_row("positioning time (worst move)", s.positioning_s);
-    band_row("into the window for good (moves held)", s.in_window_s);
+    band_row("into the window for good (worst move)", s.in_window_s);
     o += "</table>\n";
   }
   if (s.never_held > 0) {

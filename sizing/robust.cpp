@@ -23,7 +23,9 @@ using namespace uncertainty_parts;
 
 // Samples run in fixed batches: the failure recorded (the first in the
 // order within the first failing batch) is the same on any thread count.
+// The sample that failed last runs alone first: it usually fails again.
 constexpr std::size_t kBatch = 4;
+std::size_t batch_at(std::size_t from) { return from == 0 ? 1 : kBatch; }
 
 class RobustJudge {
  public:
@@ -44,8 +46,8 @@ class RobustJudge {
     Evaluation nominal = evaluate(rq, set, false);
     if (!nominal.feasible) return nominal;
     std::vector<std::optional<Evaluation>> done(models_.size());
-    for (std::size_t from = 0; from < order_.size(); from += kBatch) {
-      const std::size_t n = std::min(kBatch, order_.size() - from);
+    for (std::size_t from = 0, n = 0; from < order_.size(); from += n) {
+      n = std::min(batch_at(from), order_.size() - from);
       io::parallel_for(n, threads_, [&](std::size_t b) {
         const std::size_t k = order_[from + b];
         SizingRequest s = rq;
@@ -87,6 +89,43 @@ class RobustJudge {
   int runs_ = 0;
 };
 
+// The slowest grid point, without the targets, on the samples where the
+// nominal optimum failed other than on torque, heat or a target (those a
+// slower set relieves): if it fails in one, every grid point does
+// (A-SIZE-10's monotonicity, per model) and no search is needed. That is
+// where a sampled tuning cannot hold the load at any speed (a limit cycle,
+// a settling timeout). Its reason, or "" (then the search decides); adds
+// its twin runs to `runs_made`.
+std::string slowest_failure(const SizingRequest& rq, const std::vector<ModelCard>& cards, const SampleVerdict& nominal,
+                            int threads, int& runs_made) {
+  std::vector<std::size_t> suspects;
+  for (const FailureGroup& g : nominal.failures) {
+    if (g.limit == "torque_at_speed" || g.limit == "temperature" || g.limit == "max_positioning" || g.limit == "max_cycle") continue;
+    for (int k : g.samples) suspects.push_back(static_cast<std::size_t>(k - 1));
+  }
+  std::sort(suspects.begin(), suspects.end());
+  if (suspects.empty()) return {};
+  SizingRequest slow = rq;
+  slow.max_positioning_ms.reset();
+  slow.max_cycle_ms.reset();
+  const ParameterSetValues set = make_parameter_set(slow, slowest_setting(slow), validate(slow));
+  std::vector<Evaluation> runs(suspects.size());
+  runs_made += static_cast<int>(suspects.size());
+  io::parallel_for(suspects.size(), threads, [&](std::size_t i) {
+    SizingRequest s = slow;
+    s.world.module = cards[suspects[i]].module_model();
+    runs[i] = evaluate(s, set, false);
+  });
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    if (!runs[i].feasible) {
+      return fmt::format("{} in sampled model {}: {}", fmt::format("{:.1f} deg/s, {:.0f} %, {:.0f} %", set.tidy.speed_dps,
+                                                                   set.tidy.accel_pct, set.tidy.jerk_pct),
+                         suspects[i] + 1, runs[i].reason);
+    }
+  }
+  return {};
+}
+
 } // namespace
 
 UncertainSizing size_with_uncertainty(const SizingRequest& request, const ModelCard& card, int samples, uint64_t seed,
@@ -108,8 +147,13 @@ UncertainSizing size_with_uncertainty(const SizingRequest& request, const ModelC
     robust.nominal_cycle_s = out.result.evaluation.cycle_s;
     robust.nominal = out.uncertainty.verdict;
     RobustJudge judge(cards, threads, robust.nominal);
-    SizingResult r = size(rq, [&judge](const SizingRequest& q, const ParameterSetValues& s) { return judge(q, s); });
-    const int simulations = out.result.simulations + judge.runs(); // every twin run goes through the judge
+    int slow_runs = 0;
+    robust.slowest_fails = slowest_failure(rq, cards, robust.nominal, threads, slow_runs);
+    SizingResult r;
+    if (robust.slowest_fails.empty()) {
+      r = size(rq, [&judge](const SizingRequest& q, const ParameterSetValues& s) { return judge(q, s); });
+    }
+    const int simulations = out.result.simulations + slow_runs + judge.runs(); // the search's runs all go through the judge
     if (r.feasible) {
       const std::vector<Outcome>* passed = judge.passed(r.evaluation.set);
       std::vector<Outcome> outcomes = passed ? *passed : run_samples(rq, cards, r.evaluation.set, threads);

@@ -209,6 +209,11 @@ std::optional<Evaluation> fastest(const SizingRequest& rq_in, double load_gcm2, 
 
 } // namespace
 
+MotionSetting slowest_setting(const SizingRequest& rq) {
+  const double lowest = kLevels_pct[std::size(kLevels_pct) - 1];
+  return {std::max(0.1, round_tenth(voltage_speed_limit_dps(rq.world.supply.voltage_V) * lowest / 100.0)), lowest, lowest};
+}
+
 SizingResult search_fastest(const SizingRequest& rq, double load_gcm2, const SetJudge& judge) {
   SizingResult result;
   result.recommended = true;

@@ -25,7 +25,7 @@ struct SettlingSpread {
   int simulations = 0;  // twin runs made (the perturbed ones, and the wider windows tried)
   int incomplete = 0;   // runs with a move that did not complete (left out of the bands)
   std::optional<Band> settling_s, positioning_s; // worst move per completed run
-  std::optional<Band> in_window_s;               // over the moves held in the window for good
+  std::optional<Band> in_window_s;               // worst move per run whose moves all held the window for good
   int moves = 0;        // moves of all runs
   int never_held = 0;   // moves not in the window for good when the next move started
   double tolerance_deg = 0;

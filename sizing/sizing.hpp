@@ -232,6 +232,9 @@ SizingResult size(const SizingRequest& request, const SetJudge& judge = {});
 // The searches behind size() (search.cpp, A-SIZE-10); load from validate().
 SizingResult search_fastest(const SizingRequest& request, double load_gcm2, const SetJudge& judge = {});
 SizingResult search_gentlest(const SizingRequest& request, double load_gcm2, const SetJudge& judge = {});
+// The slowest point of the searches' grid (every limit at its lowest
+// level): every grid point is at least as fast in all three limits.
+MotionSetting slowest_setting(const SizingRequest& request);
 
 // Torque the module holds continuously at this ambient without reaching the
 // 70 degC warning minus the margin (A-SIZE-14), N m.

@@ -59,6 +59,7 @@ struct RobustAnswer {
   double nominal_cycle_s = 0;
   SampleVerdict nominal;       // the nominal optimum over the samples
   double slower_pct = 0;       // recommended positioning / nominal optimum's - 1, %
+  std::string slowest_fails;   // not found because even the slowest grid point failed: why (else "")
   std::string sentence() const; // the recommendation in words
 };
 

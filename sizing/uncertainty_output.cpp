@@ -46,7 +46,7 @@ nlohmann::json failures_json(const std::vector<FailureGroup>& groups) {
 }
 
 std::string band_line(const char* name, const Band& b, const char* unit, int decimals) {
-  return fmt::format("  {:<18}median {:.{}f} {}, p5 .. p95 {:.{}f} .. {:.{}f}, min .. max {:.{}f} .. {:.{}f}\n", name,
+  return fmt::format("  {:<20}median {:.{}f} {}, p5 .. p95 {:.{}f} .. {:.{}f}, min .. max {:.{}f} .. {:.{}f}\n", name,
                      b.median, decimals, unit, b.p5, decimals, b.p95, decimals, b.lo, decimals, b.hi, decimals);
 }
 
@@ -75,7 +75,10 @@ std::string SampleVerdict::sentence() const {
 std::string RobustAnswer::sentence() const {
   const std::string nominal_text = fmt::format("the nominal optimum ({}; positioning {:.1f} ms) is {}",
                                                setting_text(nominal_setting), nominal_positioning_s * 1e3, nominal.sentence());
-  if (!found) return "no set on the search grid is feasible in every sample; " + nominal_text;
+  if (!found) {
+    return "no set on the search grid is feasible in every sample" +
+           (slowest_fails.empty() ? std::string() : " (not even the slowest: " + slowest_fails + ")") + "; " + nominal_text;
+  }
   return fmt::format("the {} set feasible in every sample is recommended, {:.1f} % slower than the nominal optimum; {}",
                      objective == "gentlest" ? "gentlest" : "fastest", slower_pct, nominal_text);
 }
@@ -107,6 +110,7 @@ void add_uncertainty_json(nlohmann::json& json, const UncertaintyResult& u) {
     robust["found"] = u.robust.found;
     robust["objective"] = u.robust.objective;
     robust["slower_pct"] = u.robust.found ? nlohmann::json(u.robust.slower_pct) : nlohmann::json();
+    robust["slowest_fails"] = u.robust.slowest_fails.empty() ? nlohmann::json() : nlohmann::json(u.robust.slowest_fails);
     robust["nominal_optimum"] = {{"speed_dps", u.robust.nominal_setting.speed_dps},
                                  {"accel_pct", u.robust.nominal_setting.accel_pct},
                                  {"jerk_pct", u.robust.nominal_setting.jerk_pct},
