@@ -106,8 +106,12 @@ TEST(Uncertainty, SamplesEveryConstantWithARangeAndListsTheRest) {
       EXPECT_GE(s.constants[c].value, k.range_lo) << k.name;
       EXPECT_LE(s.constants[c].value, k.range_hi) << k.name;
     }
-    if (ranged && !model_constant_is_whole(k.name)) EXPECT_LT(lo, hi) << k.name << " is not sampled";
-    if (!ranged) EXPECT_EQ(lo, hi) << k.name << " has no range but varies";
+    if (ranged && !model_constant_is_whole(k.name)) {
+      EXPECT_LT(lo, hi) << k.name << " is not sampled";
+    }
+    if (!ranged) {
+      EXPECT_EQ(lo, hi) << k.name << " has no range but varies";
+    }
   }
 }
 
