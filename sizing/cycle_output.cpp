@@ -5,6 +5,8 @@
 #include <fmt/format.h>
 
 #include "sizing/cycle_output.hpp"
+
+#include "sizing/uncertainty.hpp"
 #include "sizing/output.hpp"
 
 namespace sreh::sizing {
@@ -40,7 +42,7 @@ nlohmann::json segment_json(const SegmentResult& s) {
 
 } // namespace
 
-nlohmann::json cycle_to_json(const CycleRequest& rq, const CycleResult& r) {
+nlohmann::json cycle_to_json(const CycleRequest& rq, const CycleResult& r, const UncertaintyResult* u) {
   const CycleEvaluation& e = r.evaluation;
   nlohmann::json j;
   j["mode"] = r.recommended ? "recommend" : "evaluate";
@@ -65,12 +67,14 @@ nlohmann::json cycle_to_json(const CycleRequest& rq, const CycleResult& r) {
   j["handshake_s"] = e.handshake_s;
   put_figures_json(j, e, rq.thermal_margin_K);
   j["binding_limit"] = e.binding_limit;
-  j["feasible"] = e.feasible;
+  j["feasible"] = u ? u->feasible_worst_case : e.feasible;
+  if (u) j["feasible_nominal"] = e.feasible;
   j["simulations"] = r.simulations;
   j["backoffs"] = r.backoffs;
   nlohmann::json sets = nlohmann::json::array();
   for (const ParameterSetValues& s : e.sets) sets.push_back(json_parameter_set(s));
   j["sets"] = sets;
+  if (u) add_uncertainty_json(j, *u);
   return j;
 }
 
@@ -87,7 +91,7 @@ std::vector<IsduWrite> all_writes(const CycleEvaluation& e) {
   return out;
 }
 
-std::string cycle_summary_text(const CycleRequest& rq, const CycleResult& r) {
+std::string cycle_summary_text(const CycleRequest& rq, const CycleResult& r, const UncertaintyResult* u) {
   const CycleEvaluation& e = r.evaluation;
   std::string s;
   s += fmt::format("Cycle {}: {} segments, {:.1f} V, ambient {} degC, mounting tilt {} deg, {} repetitions simulated\n",
@@ -123,7 +127,8 @@ std::string cycle_summary_text(const CycleRequest& rq, const CycleResult& r) {
   s += fmt::format("  temperature       {:8.1f} degC steady ({:.2f} W), 70 degC warning: {}, 75 degC trip: {}\n",
                    e.steady_temperature_C, e.mean_loss_W, duration_text(e.time_to_warning_s),
                    duration_text(e.time_to_trip_s));
-  s += verdict_text(e, rq.thermal_margin_K, e.binding_limit, e.feasible);
+  s += verdict_text(e, rq.thermal_margin_K, e.binding_limit, e.feasible, u);
+  if (u) s += uncertainty_text(*u);
   s += "ISDU writes of every set, as scenario steps:\n";
   for (const IsduWrite& w : all_writes(e)) s += "  " + isdu_write_line(w) + "\n";
   return s;

@@ -10,11 +10,15 @@
 
 namespace sreh::sizing {
 
+struct UncertaintyResult; // sizing/uncertainty.hpp
+
 // Every ISDU write of every set, each (index, subindex) once.
 std::vector<IsduWrite> all_writes(const CycleEvaluation& evaluation);
 
-nlohmann::json cycle_to_json(const CycleRequest& request, const CycleResult& result);
-std::string cycle_summary_text(const CycleRequest& request, const CycleResult& result);
+// With `u` (--uncertainty): `feasible` is the verdict over every sample
+// (A-SIZE-UNC-2), `feasible_nominal` the nominal run's, and the bands follow.
+nlohmann::json cycle_to_json(const CycleRequest& request, const CycleResult& result, const UncertaintyResult* u = nullptr);
+std::string cycle_summary_text(const CycleRequest& request, const CycleResult& result, const UncertaintyResult* u = nullptr);
 
 // A scenario (scenarios/README.md) replaying the cycle: the sets written at
 // start-up (device.isdu), load, mounting, supply, ambient; Motor On; the

@@ -150,7 +150,7 @@ std::string cycle_report_html(const CycleRequest& rq, const CycleResult& r, cons
   for (const SegmentResult& s : e.segments) {
     if (s.kind == "move") load_gcm2 = std::max(load_gcm2, s.load_gcm2);
   }
-  o += report_parts::verdict_block({&e, e.feasible, e.binding_limit, rq.thermal_margin_K, rq.world.thermal.ambient_C, speed_dps, load_gcm2});
+  o += report_parts::verdict_block({&e, e.feasible, e.binding_limit, rq.thermal_margin_K, rq.world.thermal.ambient_C, speed_dps, load_gcm2, u});
   if (u) {
     const WorstMove w = worst_move(e);
     o += report_parts::uncertainty_section(*u, {w.positioning_s, w.settling_s, e.peak_torque_Nm, e.steady_temperature_C, e.cycle_s});

@@ -7,6 +7,8 @@
 #include <fmt/format.h>
 
 #include "twin/load_figures.hpp"
+#include "sizing/settling_spread.hpp"
+#include "sizing/uncertainty.hpp"
 
 namespace sreh::sizing {
 namespace {
@@ -79,7 +81,7 @@ std::string supply_text(const SupplyFigures& s) {
 }
 
 std::string verdict_text(const TraceFigures& f, double required_thermal_margin_K, const std::string& binding_limit,
-                         bool feasible) {
+                         bool feasible, const UncertaintyResult* u) {
   std::string s;
   s += fmt::format("  utilisation       peak torque {:.0f} % at speed, RMS {:.0f} % of continuous {:.3f} N m, "
                    "thermal margin {:.1f} K (required {:.1f} K)\n",
@@ -87,7 +89,12 @@ std::string verdict_text(const TraceFigures& f, double required_thermal_margin_K
                    f.utilisation.thermal_margin_K, required_thermal_margin_K);
   s += "  supply            " + supply_text(f.supply) + "\n";
   s += fmt::format("  binding limit     {}\n", binding_limit);
-  s += fmt::format("  feasible          {}{}\n", feasible ? "yes" : "NO", feasible ? "" : ": " + f.reason);
+  if (u) { // one verdict (issue 35): over the nominal and every sample
+    s += fmt::format("  feasible          {}: {}{}\n", u->feasible_worst_case ? "yes, in every sample" : "NO",
+                     u->verdict.sentence(), f.feasible ? "" : "; on the nominal model: " + f.reason);
+  } else {
+    s += fmt::format("  feasible          {}{}\n", feasible ? "yes" : "NO", feasible ? "" : ": " + f.reason);
+  }
   return s;
 }
 
@@ -122,7 +129,8 @@ std::string mounting_text(const SizingRequest& rq) {
 }
 } // namespace
 
-nlohmann::json to_json(const SizingRequest& rq, const SizingResult& r) {
+nlohmann::json to_json(const SizingRequest& rq, const SizingResult& r, const AnswerExtras& x) {
+
   const Evaluation& e = r.evaluation;
   nlohmann::json j;
   j["mode"] = r.recommended ? "recommend" : "evaluate";
@@ -146,7 +154,9 @@ nlohmann::json to_json(const SizingRequest& rq, const SizingResult& r) {
   j["min_torque_headroom"] = e.min_torque_headroom;
   // The answer (issue 17): for a search, whether the target (or, without
   // one, any set) is met with every margin; for a given set, its own check.
-  j["feasible"] = r.feasible;
+  // With --uncertainty: the verdict over every sample (A-SIZE-UNC-2).
+  j["feasible"] = x.uncertainty ? x.uncertainty->feasible_worst_case : r.feasible;
+  if (x.uncertainty) j["feasible_nominal"] = r.feasible;
   j["objective"] = r.objective.empty() ? "evaluate" : r.objective;
   j["binding_limit"] = r.binding_limit;
   j["best_positioning_s"] = time_if(r.best_positioning_s >= 0, r.best_positioning_s);
@@ -167,10 +177,27 @@ nlohmann::json to_json(const SizingRequest& rq, const SizingResult& r) {
                      {"completed", m.completed}});
   }
   j["moves"] = moves;
+  if (x.spread) j["settling_spread"] = settling_spread_json(*x.spread);
+  if (x.uncertainty) add_uncertainty_json(j, *x.uncertainty);
   return j;
 }
 
-std::string summary_text(const SizingRequest& rq, const SizingResult& r) {
+namespace {
+
+// The answer's first line: what the set is.
+std::string answer_label(const SizingResult& r, const UncertaintyResult* u) {
+  if (!r.recommended) return "Given";
+  if (u && u->robust.searched) {
+    if (!u->robust.found) return "No set feasible in every sample; the nominal optimum:";
+    return r.objective == "gentlest" ? "Gentlest set meeting the target in every sample:" : "Fastest set feasible in every sample:";
+  }
+  if (!r.feasible) return "Target not reachable; fastest feasible";
+  return r.objective == "gentlest" ? "Gentlest set meeting the target:" : "Fastest feasible set:";
+}
+
+} // namespace
+
+std::string summary_text(const SizingRequest& rq, const SizingResult& r, const AnswerExtras& x) {
   const Evaluation& e = r.evaluation;
   std::string s;
   s += fmt::format("Sizing: {} deg back and forth, load {:.1f} g cm^2{}, {:.1f} V, dwell {} s, ambient {} degC\n",
@@ -178,15 +205,13 @@ std::string summary_text(const SizingRequest& rq, const SizingResult& r) {
                    rq.dwell_s, rq.world.thermal.ambient_C);
   s += mounting_text(rq);
   s += fmt::format("{} parameter set {}: speed {:.1f} deg/s, acceleration {:.1f} %, jerk {:.1f} %\n",
-                   r.recommended ? (r.feasible ? (r.objective == "gentlest" ? "Gentlest set meeting the target:"
-                                                                             : "Fastest feasible set:")
-                                               : "Target not reachable; fastest feasible") : "Given",
-                   e.set.set, e.set.setting.speed_dps, e.set.setting.accel_pct, e.set.setting.jerk_pct);
+                   answer_label(r, x.uncertainty), e.set.set, e.set.setting.speed_dps, e.set.setting.accel_pct, e.set.setting.jerk_pct);
   s += fmt::format("  travel time       {:8.4f} s   (planned S-curve, manual 3.5.2 (1))\n", e.travel_s);
   s += fmt::format("  settling time     {}   (incl. waiting time {:.1f} ms, simulated)\n",
                    time_text(e.completed, e.settling_s, "s"), e.set.wait_ms);
   s += fmt::format("  positioning time  {}   (worst of {} moves{})\n", time_text(e.completed, e.positioning_s, "s"),
                    e.moves.size(), e.completed ? "" : "; not all completed");
+  if (x.spread) s += settling_spread_text(*x.spread);
   s += fmt::format("  cycle             {}   = 2 moves + 2 handshakes + 2 dwells{}\n", time_text(e.completed, e.cycle_s, "s"),
                    e.completed ? fmt::format(": {:.1f} cycles/min", e.cycles_per_min) : "");
   s += fmt::format("  torque peak / rms {:8.3f} / {:.3f} N m of {:.3f} N m ({:.0f} %)\n", e.peak_torque_Nm,
@@ -197,7 +222,8 @@ std::string summary_text(const SizingRequest& rq, const SizingResult& r) {
                    "75 degC trip: {}\n",
                    e.steady_temperature_C, e.mean_loss_W, duration_text(e.time_to_warning_s),
                    duration_text(e.time_to_trip_s));
-  s += verdict_text(e, rq.thermal_margin_K, r.binding_limit, r.feasible);
+  s += verdict_text(e, rq.thermal_margin_K, r.binding_limit, r.feasible, x.uncertainty);
+  if (x.uncertainty) s += uncertainty_text(*x.uncertainty);
   s += fmt::format("ISDU writes, as scenario steps ({} simulation{}):\n", r.simulations, r.simulations == 1 ? "" : "s");
   for (const IsduWrite& w : e.set.writes) s += "  " + isdu_write_line(w) + "\n";
   return s;

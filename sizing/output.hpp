@@ -10,6 +10,18 @@
 
 namespace sreh::sizing {
 
+struct UncertaintyResult; // sizing/uncertainty.hpp
+struct SettlingSpread;    // sizing/settling_spread.hpp
+
+// What `size` adds to its answer when asked (issue 35): the verdict over
+// the sampled models (--uncertainty) and the settling over targets a few
+// counts apart. With an uncertainty result the answer's `feasible`, its
+// text and the exit code are the verdict over every sample.
+struct AnswerExtras {
+  const UncertaintyResult* uncertainty = nullptr;
+  const SettlingSpread* spread = nullptr;
+};
+
 // "isdu_write index 65 sub 1 value 30000  # speed 3000.0 deg/s"
 std::string isdu_write_line(const IsduWrite& w);
 
@@ -35,17 +47,20 @@ std::string tracking_text(const TraceFigures& f);
 // "peak 1.20 A, RMS 0.80 A, regenerated ...": the supply line of the text
 // and of the pages' verdict block (one wording, issue 29).
 std::string supply_text(const SupplyFigures& s);
-// Utilisation, supply, binding limit, feasible (with the reason).
+// Utilisation, supply, binding limit, feasible (with the reason); with
+// `u` the feasible line is the verdict over the samples.
 std::string verdict_text(const TraceFigures& f, double required_thermal_margin_K, const std::string& binding_limit,
-                         bool feasible);
+                         bool feasible, const UncertaintyResult* u = nullptr);
 
 // The JSON object of interfaces.md (`size --json`): travel_s, settling_s,
 // positioning_s, cycle_s, cycles_per_min, peak_torque_Nm, rms_torque_Nm,
 // torque_capability_Nm, steady_temperature_C, time_to_warning_s (null if
 // never), feasible, reason, recommended{...}, moves[...], request{...}.
-nlohmann::json to_json(const SizingRequest& request, const SizingResult& result);
+// With extras also `feasible_nominal`, the uncertainty keys
+// (add_uncertainty_json) and `settling_spread`.
+nlohmann::json to_json(const SizingRequest& request, const SizingResult& result, const AnswerExtras& extras = {});
 
 // The human summary, several lines ending in a newline.
-std::string summary_text(const SizingRequest& request, const SizingResult& result);
+std::string summary_text(const SizingRequest& request, const SizingResult& result, const AnswerExtras& extras = {});
 
 } // namespace sreh::sizing

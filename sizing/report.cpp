@@ -178,12 +178,15 @@ void add_rms_point(svg::Plot& p, double rms_speed_dps, double rms_torque_Nm, dou
 
 bool reports_available() { return true; }
 
-std::string size_report_html(const SizingRequest& rq, const SizingResult& r, const UncertaintyResult* u) {
+std::string size_report_html(const SizingRequest& rq, const SizingResult& r, const UncertaintyResult* u,
+                             const SettlingSpread* spread) {
   const Evaluation& e = r.evaluation;
   std::string o = page_head(fmt::format("Sizing: {} deg, {:.0f} g cm^2, {:.1f} V", rq.angle_deg, e.load_gcm2, rq.world.supply.voltage_V));
-  // The verdict first (issue 29), from the figures the text and JSON print.
+  // The verdict first (issue 29), from the figures the text and JSON print;
+  // with --uncertainty the verdict over every sample (issue 35).
   o += report_parts::verdict_block({&e, r.feasible, r.binding_limit, rq.thermal_margin_K, rq.world.thermal.ambient_C, e.set.setting.speed_dps,
-                                    e.load_gcm2});
+                                    e.load_gcm2, u});
+  if (spread) o += report_parts::settling_spread_section(*spread);
   if (u) {
     o += report_parts::uncertainty_section(
         *u, {e.positioning_s, e.settling_s, e.peak_torque_Nm, e.steady_temperature_C, std::nullopt});
@@ -254,8 +257,8 @@ std::string size_report_html(const SizingRequest& rq, const SizingResult& r, con
 }
 
 std::filesystem::path write_size_report(const std::filesystem::path& dir, const SizingRequest& rq,
-                                        const SizingResult& r, const UncertaintyResult* u) {
-  return write_index(dir, size_report_html(rq, r, u));
+                                        const SizingResult& r, const UncertaintyResult* u, const SettlingSpread* spread) {
+  return write_index(dir, size_report_html(rq, r, u, spread));
 }
 
 std::string sweep_report_html(const SweepRequest& rq, const SweepResult& result, const std::vector<double>& targets) {
@@ -271,7 +274,7 @@ std::string sweep_report_html(const SweepRequest& rq, const SweepResult& result,
   for (const SweepPoint& pt : result.points) {
     const Evaluation& e = pt.result.evaluation;
     verdicts.push_back({fmt::format("{} deg, {} g cm^2, {:.1f} V, {:.1f} deg/s", pt.angle_deg, pt.load_gcm2, pt.voltage_V, e.set.tidy.speed_dps),
-                        {&e, e.feasible, e.binding_limit, rq.base.thermal_margin_K, rq.base.world.thermal.ambient_C, e.set.tidy.speed_dps, e.load_gcm2}});
+                        {&e, e.feasible, e.binding_limit, rq.base.thermal_margin_K, rq.base.world.thermal.ambient_C, e.set.tidy.speed_dps, e.load_gcm2, nullptr}});
   }
   o += "<h2>Verdict per point</h2>\n" + report_parts::verdict_table(verdicts, 200);
   const std::vector<SweepGroup> groups = sweep_groups(result);
@@ -355,9 +358,11 @@ bool reports_available() { return false; }
 namespace {
 [[noreturn]] void no_reports() { throw std::runtime_error("this build has no reports (SREH_WITH_RENDER=OFF)"); }
 } // namespace
-std::string size_report_html(const SizingRequest&, const SizingResult&, const UncertaintyResult*) { no_reports(); }
+std::string size_report_html(const SizingRequest&, const SizingResult&, const UncertaintyResult*, const SettlingSpread*) {
+  no_reports();
+}
 std::filesystem::path write_size_report(const std::filesystem::path&, const SizingRequest&, const SizingResult&,
-                                        const UncertaintyResult*) {
+                                        const UncertaintyResult*, const SettlingSpread*) {
   no_reports();
 }
 std::string sweep_report_html(const SweepRequest&, const SweepResult&, const std::vector<double>&) { no_reports(); }

@@ -16,17 +16,21 @@
 namespace sreh::sizing {
 
 struct UncertaintyResult; // sizing/uncertainty.hpp
+struct SettlingSpread;    // sizing/settling_spread.hpp
 
 bool reports_available();
 
 // The result's evaluation should carry its trace (SizingRequest::keep_trace)
 // for the position / velocity / torque plots.
 // With `uncertainty` (size --uncertainty, issue 26) the page also shows the
-// bands: a table, and shaded bands in the torque and temperature plots.
+// bands: a table, and shaded bands in the torque and temperature plots;
+// the verdict block's badge is then the verdict over every sample (issue
+// 35). With `spread` the settling over targets a few counts apart.
 std::string size_report_html(const SizingRequest& request, const SizingResult& result,
-                             const UncertaintyResult* uncertainty = nullptr);
+                             const UncertaintyResult* uncertainty = nullptr, const SettlingSpread* spread = nullptr);
 std::filesystem::path write_size_report(const std::filesystem::path& dir, const SizingRequest& request,
-                                        const SizingResult& result, const UncertaintyResult* uncertainty = nullptr);
+                                        const SizingResult& result, const UncertaintyResult* uncertainty = nullptr,
+                                        const SettlingSpread* spread = nullptr);
 
 // The cycle's report (cycle_report.cpp): numbers, sets, segments, the
 // speed-torque plane with the envelope, time per segment, temperature.

@@ -49,6 +49,9 @@ struct VerdictInput {
   double ambient_C = 25;
   double speed_dps = 0;  // the fastest set's speed (index 64+n.1)
   double load_gcm2 = 0;  // the heaviest load moved
+  // size --uncertainty (issue 35): the badge is the verdict over every
+  // sample ("FEASIBLE IN EVERY SAMPLE" or not), its sentence beside it.
+  const UncertaintyResult* uncertainty = nullptr;
 };
 
 // The block every sizing page opens with (single move, cycle): feasible or
@@ -71,6 +74,11 @@ struct UncertainFigures {
 };
 std::string uncertainty_section(const UncertaintyResult& u, const UncertainFigures& nominal);
 svg::Band peak_torque_band(const UncertaintyResult& u);
+
+// The settling over targets a few counts apart (issue 35,
+// report_uncertainty.cpp): median and p95 where it is chaotic, and why a
+// window is not held for good.
+std::string settling_spread_section(const SettlingSpread& spread);
 
 } // namespace sreh::sizing::report_parts
 #endif

@@ -12,6 +12,7 @@
 #include "device_logic/units.hpp"
 #include "io/html_page.hpp"
 #include "sizing/output.hpp"
+#include "sizing/uncertainty.hpp"
 
 namespace sreh::sizing::report_parts {
 namespace {
@@ -64,9 +65,18 @@ std::string verdict_block(const VerdictInput& in) {
   const TraceFigures& f = *in.figures;
   const Utilisation& u = f.utilisation;
   std::string o = "<section class=\"verdict\" id=\"verdict\">\n";
-  o += fmt::format("<p><span class=\"result {}\" id=\"verdict-answer\">{}</span> binding limit: <b id=\"binding-limit\">{}</b>{}</p>\n",
-                   in.feasible ? "ok" : "bad", in.feasible ? "FEASIBLE" : "NOT FEASIBLE", html_escape(in.binding_limit),
-                   in.feasible || f.reason.empty() ? std::string() : " &mdash; " + html_escape(f.reason));
+  if (const UncertaintyResult* over = in.uncertainty) { // one verdict over every sample (issue 35)
+    o += fmt::format("<p><span class=\"result {}\" id=\"verdict-answer\">{}</span> <span id=\"verdict-sentence\">{}</span></p>\n",
+                     over->feasible_worst_case ? "ok" : "bad",
+                     over->feasible_worst_case ? "FEASIBLE IN EVERY SAMPLE" : "NOT FEASIBLE IN EVERY SAMPLE",
+                     html_escape(over->sentence()));
+    o += fmt::format("<p>On the nominal model: binding limit <b id=\"binding-limit\">{}</b>{}</p>\n", html_escape(in.binding_limit),
+                     f.feasible || f.reason.empty() ? std::string() : " &mdash; " + html_escape(f.reason));
+  } else {
+    o += fmt::format("<p><span class=\"result {}\" id=\"verdict-answer\">{}</span> binding limit: <b id=\"binding-limit\">{}</b>{}</p>\n",
+                     in.feasible ? "ok" : "bad", in.feasible ? "FEASIBLE" : "NOT FEASIBLE", html_escape(in.binding_limit),
+                     in.feasible || f.reason.empty() ? std::string() : " &mdash; " + html_escape(f.reason));
+  }
   const Bars b = bars(in);
   o += "<table class=\"bars\">\n";
   o += bar("bar-peak", "peak torque", b.peak, 100 * kTorqueMargin, fmt::format("{:.0f} %", u.peak_torque_pct),

@@ -130,6 +130,7 @@ struct Runner {
   const SizingRequest& rq;
   double load_gcm2;
   SizingResult& result;
+  const SetJudge& judge;
   struct Failure {
     double proxy, used; // used > 1: how far over the limit
   };
@@ -147,7 +148,8 @@ struct Runner {
                        [&](const MotionSetting& f) { return dominates(c.setting, f); });
   }
   Evaluation run(const Candidate& c) {
-    Evaluation ev = evaluate(rq, make_parameter_set(rq, c.setting, load_gcm2), false);
+    const ParameterSetValues set = make_parameter_set(rq, c.setting, load_gcm2);
+    Evaluation ev = judge ? judge(rq, set) : evaluate(rq, set, false);
     ++result.simulations;
     const bool limit_failed =
         !ev.feasible && ev.binding_limit != "max_positioning" && ev.binding_limit != "max_cycle";
@@ -172,7 +174,7 @@ struct Runner {
 // Fastest over the grid, judged without the targets (they only decide
 // whether the answer is good enough).
 std::optional<Evaluation> fastest(const SizingRequest& rq_in, double load_gcm2, SizingResult& result,
-                                  std::string& binding) {
+                                  std::string& binding, const SetJudge& judge) {
   SizingRequest rq = rq_in;
   rq.max_positioning_ms.reset();
   rq.max_cycle_ms.reset();
@@ -187,7 +189,7 @@ std::optional<Evaluation> fastest(const SizingRequest& rq_in, double load_gcm2, 
            std::tie(b.setting.accel_pct, b.setting.jerk_pct, b.setting.speed_dps);
   };
   std::make_heap(cs.begin(), cs.end(), later);
-  Runner runner{rq, load_gcm2, result, {}, {}, {}, {}};
+  Runner runner{rq, load_gcm2, result, judge, {}, {}, {}, {}};
   std::optional<Evaluation> best;
   const double wait_s = make_parameter_set(rq, MotionSetting{}, load_gcm2).wait_ms * 1e-3;
   const double fixed_s = fixed_per_move_s(rq, load_gcm2);
@@ -207,12 +209,17 @@ std::optional<Evaluation> fastest(const SizingRequest& rq_in, double load_gcm2, 
 
 } // namespace
 
-SizingResult search_fastest(const SizingRequest& rq, double load_gcm2) {
+MotionSetting slowest_setting(const SizingRequest& rq) {
+  const double lowest = kLevels_pct[std::size(kLevels_pct) - 1];
+  return {std::max(0.1, round_tenth(voltage_speed_limit_dps(rq.world.supply.voltage_V) * lowest / 100.0)), lowest, lowest};
+}
+
+SizingResult search_fastest(const SizingRequest& rq, double load_gcm2, const SetJudge& judge) {
   SizingResult result;
   result.recommended = true;
   result.objective = "fastest";
   std::string binding;
-  std::optional<Evaluation> best = fastest(rq, load_gcm2, result, binding);
+  std::optional<Evaluation> best = fastest(rq, load_gcm2, result, binding, judge);
   result.binding_limit = binding;
   if (!best) {
     result.evaluation = result.tried.back();
@@ -228,7 +235,7 @@ SizingResult search_fastest(const SizingRequest& rq, double load_gcm2) {
   return result;
 }
 
-SizingResult search_gentlest(const SizingRequest& rq, double load_gcm2) {
+SizingResult search_gentlest(const SizingRequest& rq, double load_gcm2, const SetJudge& judge) {
   SizingResult result;
   result.recommended = true;
   result.objective = "gentlest";
@@ -254,7 +261,7 @@ SizingResult search_gentlest(const SizingRequest& rq, double load_gcm2) {
     if (pa != pb) return pa < pb;
     return a.travel_s < b.travel_s;
   });
-  Runner runner{rq, load_gcm2, result, {}, {}, {}, {}};
+  Runner runner{rq, load_gcm2, result, judge, {}, {}, {}, {}};
   std::optional<Evaluation> best;
   double best_proxy = 0;
   for (const Candidate& c : cs) {
@@ -277,13 +284,13 @@ SizingResult search_gentlest(const SizingRequest& rq, double load_gcm2) {
   }
   // Not reachable: the fastest feasible set, and what stops it.
   std::string binding;
-  std::optional<Evaluation> quick = fastest(rq, load_gcm2, result, binding);
+  std::optional<Evaluation> quick = fastest(rq, load_gcm2, result, binding, judge);
   result.feasible = false;
   result.binding_limit = binding;
   if (quick) {
     result.best_positioning_s = quick->positioning_s;
     result.best_cycle_s = quick->cycle_s;
-    result.evaluation = evaluate(rq, quick->set, false); // judged with the target: names it
+    result.evaluation = judge ? judge(rq, quick->set) : evaluate(rq, quick->set, false); // judged with the target: names it
     ++result.simulations;
     result.evaluation.reason = fmt::format("the target cannot be met: the fastest feasible set positions in "
                                            "{:.1f} ms (cycle {:.1f} ms), limited by {}; {}",

@@ -107,7 +107,7 @@ double validate(const SizingRequest& rq) {
   return std::max(0.0, load); // no load reads -1e-12
 }
 
-SizingResult size(const SizingRequest& rq) {
+SizingResult size(const SizingRequest& rq, const SetJudge& judge) {
   const double load_gcm2 = validate(rq);
   SizingResult result;
   if (rq.setting) {
@@ -119,7 +119,8 @@ SizingResult size(const SizingRequest& rq) {
     result.best_cycle_s = result.evaluation.cycle_s;
     return result;
   }
-  result = (rq.max_positioning_ms || rq.max_cycle_ms) ? search_gentlest(rq, load_gcm2) : search_fastest(rq, load_gcm2);
+  result = (rq.max_positioning_ms || rq.max_cycle_ms) ? search_gentlest(rq, load_gcm2, judge)
+                                                           : search_fastest(rq, load_gcm2, judge);
   if (rq.keep_trace) {
     result.evaluation = evaluate(rq, result.evaluation.set, true); // deterministic: the same run again, with its trace
     ++result.simulations;

@@ -15,6 +15,7 @@
 #include "sizing/report.hpp"
 #include "sizing/report_provenance.hpp"
 #include "sizing/size_csv.hpp"
+#include "sizing/settling_spread.hpp"
 #include "sizing/uncertainty.hpp"
 #include "io/cpus.hpp"
 #include "io/figures.hpp"
@@ -64,9 +65,14 @@ const OptionSpec<S> kSizeOptions[] = {
     {"mounting-tilt-deg", kTiltHelp, &S::mounting_tilt_deg},
     {"model", "Model card overrides (YAML as `sreh-twin model show` prints): the module's physical constants", &S::model},
     {"report", "Write an HTML sizing report into this folder", &S::report},
-    {"uncertainty", "Also evaluate the set on models sampled over the model card's ranges (--model narrows them): *_range and feasible_worst_case", &S::uncertainty},
+    {"uncertainty", "Also judge the answer on models sampled over the model card's ranges (--model narrows them), loop tuning "
+                    "included: a searched set must be feasible in every sample; exit 0 only if the answer is feasible on the "
+                    "nominal model and in every sample (a sample that does not complete is infeasible), else 1", &S::uncertainty},
     {"samples", "With --uncertainty: models sampled, 2 .. 1000 (Latin hypercube)", &S::samples, false, true},
     {"seed", "With --uncertainty: seed of the sampling (same seed, same answer)", &S::seed, false, true},
+    {"settling-spread-counts", "Also run the answer with targets up to N position counts either side: median and p95 of the "
+                               "settling where it changes by more than 1 ms, and whether the window is held; 0 .. 20, 0 off (not with --cycle)",
+     &S::settling_spread_counts, false, true},
     {"cycle", "Size a multi-segment cycle from this YAML file (moves, dwells, load changes; docs/sizing.md)", &S::cycle},
     {"emit-scenario", "Write a scenario replaying the sized cycle in the twin to this file", &S::emit_scenario},
     {"csv", "Write the figures (those of --json) to this CSV file, one figure a row", &S::csv},
@@ -152,7 +158,8 @@ void refuse_with_cycle(const SizeOptions& a) {
       {a.thermal_margin_K != d.thermal_margin_K, "--thermal-margin-K"},
       {a.source_resistance_ohm != d.source_resistance_ohm, "--source-resistance-ohm"},
       {a.bus_capacitance_F != d.bus_capacitance_F, "--bus-capacitance-F"},
-      {a.handshake_cycles != d.handshake_cycles, "--handshake-cycles"}};
+      {a.handshake_cycles != d.handshake_cycles, "--handshake-cycles"},
+      {a.settling_spread_counts != d.settling_spread_counts, "--settling-spread-counts"}};
   for (const auto& [set, name] : given) {
     if (set) throw SizingInputError(fmt::format("{} with --cycle: give it in the cycle file (docs/sizing.md)", name));
   }
@@ -198,11 +205,11 @@ SizeOutcome run_cycle(const SizeOptions& a) {
                         scenario_yaml(rq, out.cycle_result.evaluation.sets, set_of_segment,
                                       "sized cycle " + std::filesystem::path(a.cycle).filename().string()));
   }
-  out.feasible = out.cycle_result.evaluation.feasible;
-  out.json = cycle_to_json(rq, out.cycle_result);
-  if (u) add_uncertainty_json(out.json, *u);
+  // With --uncertainty the verdict over every sample (A-SIZE-UNC-2).
+  out.feasible = u ? u->feasible_worst_case : out.cycle_result.evaluation.feasible;
+  out.json = cycle_to_json(rq, out.cycle_result, u ? &*u : nullptr);
   io::round_figures(out.json); // issue 29: no float noise
-  out.text = cycle_summary_text(rq, out.cycle_result);
+  out.text = cycle_summary_text(rq, out.cycle_result, u ? &*u : nullptr);
   out.cycle = std::move(rq);
   return out;
 }
@@ -224,18 +231,31 @@ SizeOutcome run_size_or_cycle(const SizeOptions& a) {
   if (a.uncertainty && (a.samples < 2 || a.samples > 1000)) {
     throw SizingInputError(fmt::format("--samples {}: expected 2 .. 1000", a.samples));
   }
+  if (a.settling_spread_counts < 0 || a.settling_spread_counts > 20) {
+    throw SizingInputError(fmt::format("--settling-spread-counts {}: expected 0 .. 20", a.settling_spread_counts));
+  }
   if (!a.cycle.empty()) return run_cycle(a);
   SizeOutcome out;
   out.request = make_request(a);
-  out.result = size(out.request);
   std::optional<UncertaintyResult> u;
-  if (a.uncertainty) {
-    u = size_uncertainty(out.request, card_of(out.request.world), out.result.evaluation, a.samples, static_cast<uint64_t>(a.seed),
-                         io::usable_cpus());
+  if (a.uncertainty) { // the answer must hold in every sample (A-SIZE-UNC-3)
+    UncertainSizing us = size_with_uncertainty(out.request, card_of(out.request.world), a.samples,
+                                               static_cast<uint64_t>(a.seed), io::usable_cpus());
+    out.result = std::move(us.result);
+    u = std::move(us.uncertainty);
+  } else {
+    out.result = size(out.request);
   }
+  std::optional<SettlingSpread> spread;
+  if (a.settling_spread_counts > 0) {
+    spread = settling_spread(out.request, out.result.evaluation.set, out.result.evaluation, a.settling_spread_counts,
+                             io::usable_cpus());
+    out.result.simulations += spread->simulations;
+  }
+  const AnswerExtras extras{u ? &*u : nullptr, spread ? &*spread : nullptr};
   if (!a.report.empty()) {
     try {
-      write_report_page(a.report, size_report_html(out.request, out.result, u ? &*u : nullptr),
+      write_report_page(a.report, size_report_html(out.request, out.result, extras.uncertainty, extras.spread),
                         size_provenance(out.request, out.result.evaluation.load_gcm2));
     } catch (const std::runtime_error& e) {
       throw SizingInputError(fmt::format("--report {}: {}", a.report, e.what()));
@@ -247,11 +267,12 @@ SizeOutcome run_size_or_cycle(const SizeOptions& a) {
                         scenario_yaml(c, {out.result.evaluation.set}, {out.request.parameter_set, -1, out.request.parameter_set, -1},
                                       fmt::format("sized move {} deg back and forth", out.request.angle_deg)));
   }
-  out.feasible = out.result.feasible;
-  out.json = to_json(out.request, out.result);
-  if (u) add_uncertainty_json(out.json, *u);
+  // With --uncertainty the verdict over every sample (A-SIZE-UNC-2): the
+  // exit code, JSON `feasible`, the text and the report's badge.
+  out.feasible = u ? u->feasible_worst_case : out.result.feasible;
+  out.json = to_json(out.request, out.result, extras);
   io::round_figures(out.json); // issue 29: no float noise
-  out.text = summary_text(out.request, out.result);
+  out.text = summary_text(out.request, out.result, extras);
   return out;
 }
 

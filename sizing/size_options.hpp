@@ -44,6 +44,7 @@ struct SizeOptions {
   int samples = 32;          // --samples: models sampled (Latin hypercube)
   int seed = 1;              // --seed: of the sampling
   std::function<void()> on_simulation; // not an option: SizingRequest::on_simulation
+  int settling_spread_counts = 4; // --settling-spread-counts: targets +-N counts around the answer (issue 35); 0 off
 };
 
 // Every option of `size` except the CLI's own --json.

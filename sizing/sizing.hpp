@@ -222,13 +222,23 @@ ParameterSetValues make_parameter_set(const SizingRequest& request, const Motion
 // Runs the twin for one parameter set (no validation).
 Evaluation evaluate(const SizingRequest& request, const ParameterSetValues& set, bool keep_trace);
 
+// How a search judges one parameter set: empty, evaluate() on the
+// request's model; size --uncertainty (A-SIZE-UNC-3) judges it on the
+// nominal and every sampled model (infeasible: the failing model's evaluation).
+// The request is the search's (the fastest search judges without the targets).
+using SetJudge = std::function<Evaluation(const SizingRequest&, const ParameterSetValues&)>;
+
 // validate + evaluate the given set, or search the fastest feasible one, or
-// (with a target) the gentlest one meeting it.
-SizingResult size(const SizingRequest& request);
+// (with a target) the gentlest one meeting it; a search judges its sets
+// with `judge` when given.
+SizingResult size(const SizingRequest& request, const SetJudge& judge = {});
 
 // The searches behind size() (search.cpp, A-SIZE-10); load from validate().
-SizingResult search_fastest(const SizingRequest& request, double load_gcm2);
-SizingResult search_gentlest(const SizingRequest& request, double load_gcm2);
+SizingResult search_fastest(const SizingRequest& request, double load_gcm2, const SetJudge& judge = {});
+SizingResult search_gentlest(const SizingRequest& request, double load_gcm2, const SetJudge& judge = {});
+// The slowest point of the searches' grid (every limit at its lowest
+// level): every grid point is at least as fast in all three limits.
+MotionSetting slowest_setting(const SizingRequest& request);
 
 // Torque the module holds continuously at this ambient without reaching the
 // 70 degC warning minus the margin (A-SIZE-14), N m.

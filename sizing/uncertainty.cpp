@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <random>
 
 #include "io/parallel.hpp"
+#include "sizing/uncertainty_parts.hpp"
 
 namespace sreh::sizing {
 namespace {
@@ -13,28 +15,24 @@ namespace {
 // standard library (std::uniform_real_distribution is not specified bit for bit).
 double unit(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
 
-void widen(Band& b, double v, bool first) {
-  if (first) b = {v, v};
-  b.lo = std::min(b.lo, v);
-  b.hi = std::max(b.hi, v);
-}
-
-// The firmware's loop tuning: the card's ranges for these say what a
-// calibration may try, not how production modules spread
-// (docs/model-card.md), so uncertainty sizing keeps them (A-SIZE-UNC-1).
-bool firmware_tuning(const std::string& name) {
-  static const char* const kNames[] = {"control_period",  "loop_delay",     "current_loop_bandwidth",
-                                       "velocity_bandwidth", "velocity_schedule_exponent", "position_ratio",
-                                       "integral_ratio",  "velocity_filter", "speed_filter"};
-  for (const char* n : kNames) {
-    if (name == n) return true;
-  }
-  return false;
-}
-
-bool sampled(const ModelConstant& k) { return k.range_hi > k.range_lo && !firmware_tuning(k.name); }
+// Every constant whose range on the card (or the --model file) is wider
+// than one value: what the card says production modules spread over,
+// the loop tuning included (A-SIZE-UNC-1). No list of names here: a
+// constant the card fixes has a range of one value.
+bool sampled(const ModelConstant& k) { return k.range_hi > k.range_lo; }
 
 } // namespace
+
+Band band_of(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const auto at = [&](double p) {
+    const double pos = p * static_cast<double>(v.size() - 1);
+    const auto i = static_cast<std::size_t>(std::floor(pos));
+    const std::size_t j = std::min(i + 1, v.size() - 1);
+    return v[i] + (pos - static_cast<double>(i)) * (v[j] - v[i]);
+  };
+  return {v.front(), v.back(), at(0.05), at(0.5), at(0.95)};
+}
 
 std::vector<ModelCard> latin_hypercube_cards(const ModelCard& card, int samples, uint64_t seed) {
   std::mt19937_64 rng(seed);
@@ -56,23 +54,46 @@ std::vector<ModelCard> latin_hypercube_cards(const ModelCard& card, int samples,
   return cards;
 }
 
-namespace {
-
-// What the bands are made of, for one move or one cycle.
-struct Outcome {
-  bool completed = false;
-  bool feasible = false;
-  double positioning_s = 0, settling_s = 0, peak_torque_Nm = 0, temperature_C = 0;
-  std::optional<double> cycle_s;
-};
+namespace uncertainty_parts {
 
 Outcome outcome_of(const Evaluation& e) {
-  return {e.completed, e.feasible, e.positioning_s, e.settling_s, e.peak_torque_Nm, e.steady_temperature_C, {}};
+  return {e.completed, e.feasible, e.positioning_s, e.settling_s, e.peak_torque_Nm, e.steady_temperature_C, {},
+          e.binding_limit, e.reason};
 }
 
 Outcome outcome_of(const CycleEvaluation& e) {
   const WorstMove w = worst_move(e);
-  return {e.completed, e.feasible, w.positioning_s, w.settling_s, e.peak_torque_Nm, e.steady_temperature_C, e.cycle_s};
+  return {e.completed, e.feasible, w.positioning_s, w.settling_s, e.peak_torque_Nm, e.steady_temperature_C, e.cycle_s,
+          e.binding_limit, e.reason};
+}
+
+SampleVerdict verdict_of(const Outcome& nominal, const std::vector<Outcome>& outcomes) {
+  SampleVerdict v;
+  v.samples = static_cast<int>(outcomes.size());
+  v.nominal_feasible = nominal.completed && nominal.feasible;
+  std::map<std::string, FailureGroup> groups;
+  for (std::size_t i = 0; i < outcomes.size(); ++i) {
+    const Outcome& e = outcomes[i];
+    if (!e.completed) ++v.incomplete;
+    if (e.completed && e.feasible) {
+      ++v.feasible;
+      continue;
+    }
+    // A run that failed without naming a limit still failed: never left out.
+    const std::string limit = e.binding_limit.empty() ? "device_error" : e.binding_limit;
+    FailureGroup& g = groups[limit];
+    if (g.samples.empty()) {
+      g.limit = limit;
+      g.words = limit_words(limit);
+      g.example = e.reason;
+    }
+    g.samples.push_back(static_cast<int>(i) + 1);
+    if (!e.completed) ++g.incomplete;
+  }
+  for (auto& [limit, g] : groups) v.failures.push_back(std::move(g));
+  std::stable_sort(v.failures.begin(), v.failures.end(),
+                   [](const FailureGroup& a, const FailureGroup& b) { return a.samples.size() > b.samples.size(); });
+  return v;
 }
 
 UncertaintyResult bands(const ModelCard& card, int samples, uint64_t seed, const Outcome& nominal,
@@ -80,37 +101,50 @@ UncertaintyResult bands(const ModelCard& card, int samples, uint64_t seed, const
   UncertaintyResult u;
   u.samples = samples;
   u.seed = seed;
-  for (const ModelConstant& k : card.constants) {
-    if (sampled(k)) u.sampled.push_back(k.name);
-  }
-  u.feasible_worst_case = nominal.feasible && nominal.completed;
-  // An unfinished move has no times to band: only completed evaluations count.
+  for (const ModelConstant& k : card.constants) (sampled(k) ? u.sampled : u.fixed).push_back(k.name);
+  // An unfinished move has no times to band: only completed evaluations
+  // are in the bands; the verdict counts the others as infeasible.
+  std::vector<double> pos, settle, torque, temp, cycle;
   auto add = [&](const Outcome& e) {
     if (!e.completed) return;
-    const bool first = u.banded == 0;
-    widen(u.positioning_s, e.positioning_s, first);
-    widen(u.settling_s, e.settling_s, first);
-    widen(u.peak_torque_Nm, e.peak_torque_Nm, first);
-    widen(u.max_temperature_C, e.temperature_C, first);
-    if (e.cycle_s) {
-      if (!u.cycle_s) u.cycle_s = Band{};
-      widen(*u.cycle_s, *e.cycle_s, first);
-    }
+    pos.push_back(e.positioning_s);
+    settle.push_back(e.settling_s);
+    torque.push_back(e.peak_torque_Nm);
+    temp.push_back(e.temperature_C);
+    if (e.cycle_s) cycle.push_back(*e.cycle_s);
     ++u.banded;
   };
   add(nominal);
-  for (const Outcome& e : outcomes) {
-    add(e);
-    if (!e.feasible || !e.completed) {
-      u.feasible_worst_case = false;
-      ++u.infeasible_samples;
-    }
-    if (!e.completed) ++u.incomplete_samples;
+  for (const Outcome& e : outcomes) add(e);
+  if (u.banded > 0) {
+    u.positioning_s = band_of(pos);
+    u.settling_s = band_of(settle);
+    u.peak_torque_Nm = band_of(torque);
+    u.max_temperature_C = band_of(temp);
+    if (!cycle.empty()) u.cycle_s = band_of(cycle);
   }
+  u.verdict = verdict_of(nominal, outcomes);
+  u.feasible_worst_case = u.verdict.all();
+  u.infeasible_samples = u.verdict.samples - u.verdict.feasible;
+  u.incomplete_samples = u.verdict.incomplete;
   return u;
 }
 
-} // namespace
+std::vector<Outcome> run_samples(const SizingRequest& request, const std::vector<ModelCard>& cards,
+                                 const ParameterSetValues& set, int threads) {
+  std::vector<Outcome> outcomes(cards.size());
+  io::parallel_for(cards.size(), threads, [&](std::size_t i) {
+    SizingRequest rq = request;
+    rq.world.module = cards[i].module_model();
+    rq.keep_trace = false;
+    outcomes[i] = outcome_of(evaluate(rq, set, false));
+  });
+  return outcomes;
+}
+
+} // namespace uncertainty_parts
+
+using namespace uncertainty_parts;
 
 WorstMove worst_move(const CycleEvaluation& e) {
   WorstMove w;
@@ -125,13 +159,7 @@ WorstMove worst_move(const CycleEvaluation& e) {
 UncertaintyResult size_uncertainty(const SizingRequest& request, const ModelCard& card, const Evaluation& nominal,
                                    int samples, uint64_t seed, int threads) {
   const std::vector<ModelCard> cards = latin_hypercube_cards(card, samples, seed);
-  std::vector<Outcome> outcomes(cards.size());
-  io::parallel_for(cards.size(), threads, [&](std::size_t i) {
-    SizingRequest rq = request;
-    rq.world.module = cards[i].module_model();
-    outcomes[i] = outcome_of(evaluate(rq, nominal.set, false));
-  });
-  return bands(card, samples, seed, outcome_of(nominal), outcomes);
+  return bands(card, samples, seed, outcome_of(nominal), run_samples(request, cards, nominal.set, threads));
 }
 
 UncertaintyResult cycle_uncertainty(const CycleRequest& request, const CyclePlan& plan,
@@ -142,28 +170,10 @@ UncertaintyResult cycle_uncertainty(const CycleRequest& request, const CyclePlan
   io::parallel_for(cards.size(), threads, [&](std::size_t i) {
     CycleRequest rq = request;
     rq.world.module = cards[i].module_model();
+    rq.keep_trace = false;
     outcomes[i] = outcome_of(evaluate_cycle(rq, plan, settings, false));
   });
   return bands(card, samples, seed, outcome_of(nominal), outcomes);
-}
-
-void add_uncertainty_json(nlohmann::json& json, const UncertaintyResult& u) {
-  auto band = [&](const Band& b) { return u.banded ? nlohmann::json::array({b.lo, b.hi}) : nlohmann::json(); };
-  // Times on the nanosecond grid, as `size --json` writes them (output.cpp).
-  auto ns = [](double v) { return std::round(v * 1e9) / 1e9; };
-  auto time_band = [&](const Band& b) { return u.banded ? nlohmann::json::array({ns(b.lo), ns(b.hi)}) : nlohmann::json(); };
-  json["positioning_s_range"] = time_band(u.positioning_s);
-  json["settling_s_range"] = time_band(u.settling_s);
-  json["peak_torque_Nm_range"] = band(u.peak_torque_Nm);
-  json["max_temperature_C_range"] = band(u.max_temperature_C);
-  if (u.cycle_s) json["cycle_s_range"] = time_band(*u.cycle_s);
-  json["feasible_worst_case"] = u.feasible_worst_case;
-  json["uncertainty"] = {{"samples", u.samples},
-                         {"seed", u.seed},
-                         {"sampling", "latin_hypercube"},
-                         {"sampled", u.sampled},
-                         {"infeasible_samples", u.infeasible_samples},
-                         {"incomplete_samples", u.incomplete_samples}};
 }
 
 } // namespace sreh::sizing

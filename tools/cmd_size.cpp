@@ -3,7 +3,8 @@
 // Evaluates the set given with --speed-dps / --accel-pct / --jerk-pct, or
 // recommends the fastest feasible one.
 // Exit 0 feasible, 1 infeasible, 2 bad input (a value outside the module's
-// limits, an unreadable load file).
+// limits, an unreadable load file); with --uncertainty 0 only when feasible
+// on the nominal model and in every sample (A-SIZE-UNC-2).
 #include <unistd.h>
 
 #include <atomic>
@@ -62,7 +63,8 @@ SREH_REGISTER_COMMAND(30, [](CLI::App& app, int& exit_code) {
   auto a = std::make_shared<SizeArgs>();
   CLI::App* cmd = app.add_subcommand(
       "size", "Size one move back and forth (or a multi-segment cycle, --cycle) like Afag's PerfectCycle: times, "
-              "torque, temperature, a recommended parameter set (exit 0 feasible, 1 infeasible, 2 bad input)");
+              "torque, temperature, a recommended parameter set (exit 0 feasible, 1 infeasible, 2 bad input; with "
+              "--uncertainty 0 only when feasible on the nominal model and in every sample)");
   add_table_options(cmd, sizing::size_option_table(), a->options);
   cmd->get_option("--load-gcm2")->excludes("--load");
   cmd->get_option("--load")->excludes("--load-gcm2");

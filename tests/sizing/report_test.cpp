@@ -112,8 +112,15 @@ TEST(Report, SizeReportShowsTheUncertaintyBands) {
   ASSERT_GT(u.banded, 0);
   const std::string html = size_report_html(rq, r, &u);
   EXPECT_NE(html.find("Over the model's uncertainty"), std::string::npos);
-  EXPECT_NE(html.find(fmt::format("<td>{:.3f}</td><td>{:.3f}</td>", u.peak_torque_Nm.lo, u.peak_torque_Nm.hi)),
+  const Band& b = u.peak_torque_Nm;
+  EXPECT_NE(html.find(fmt::format("<td>{:.3f}</td><td>{:.3f}</td><td>{:.3f}</td><td>{:.3f}</td><td>{:.3f}</td>", b.lo, b.p5,
+                                  b.median, b.p95, b.hi)),
             std::string::npos);
+  // Issue 35: the badge is the verdict over every sample, never a plain FEASIBLE above it.
+  EXPECT_NE(html.find(u.feasible_worst_case ? ">FEASIBLE IN EVERY SAMPLE<" : ">NOT FEASIBLE IN EVERY SAMPLE<"), std::string::npos);
+  EXPECT_EQ(html.find(">FEASIBLE<"), std::string::npos);
+  EXPECT_EQ(html.find(">NOT FEASIBLE<"), std::string::npos);
+  for (const std::string& name : u.sampled) EXPECT_NE(html.find(name), std::string::npos) << name;
   EXPECT_NE(html.find("peak torque over the sampled models"), std::string::npos);
   EXPECT_NE(html.find("steady temperature over the sampled models"), std::string::npos);
   const std::string plain = size_report_html(rq, r);

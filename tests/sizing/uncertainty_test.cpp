@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "sizing/uncertainty.hpp"
+#include "sizing/uncertainty_parts.hpp"
 
 namespace sreh::sizing {
 namespace {
@@ -80,7 +81,38 @@ TEST(Uncertainty, LatinHypercubeHasOneSampleInEveryStratum) {
     ++hits[static_cast<std::size_t>(std::min(7.0, u * 8))];
   }
   for (int h : hits) EXPECT_EQ(h, 1);
-  for (const ModelCard& s : cards) EXPECT_EQ(s.find("velocity_bandwidth")->value, card.find("velocity_bandwidth")->value); // firmware: kept
+}
+
+// Issue 35: every constant the card gives a range wider than one value is
+// sampled, the loop tuning included (no list of names in the code); those
+// with a range of one value are held and listed as held.
+TEST(Uncertainty, SamplesEveryConstantWithARangeAndListsTheRest) {
+  const ModelCard& card = default_model_card();
+  const auto cards = latin_hypercube_cards(card, 6, 3);
+  SizingRequest rq = request();
+  rq.cycles = 1;
+  const SizingResult nominal = size(rq);
+  const UncertaintyResult u = size_uncertainty(rq, card, nominal.evaluation, 2, 3, 2);
+  EXPECT_EQ(u.sampled.size() + u.fixed.size(), card.constants.size());
+  for (std::size_t c = 0; c < card.constants.size(); ++c) {
+    const ModelConstant& k = card.constants[c];
+    const bool ranged = k.range_hi > k.range_lo;
+    const auto& list = ranged ? u.sampled : u.fixed;
+    EXPECT_NE(std::find(list.begin(), list.end(), k.name), list.end()) << k.name;
+    double lo = INFINITY, hi = -INFINITY;
+    for (const ModelCard& s : cards) {
+      lo = std::min(lo, s.constants[c].value);
+      hi = std::max(hi, s.constants[c].value);
+      EXPECT_GE(s.constants[c].value, k.range_lo) << k.name;
+      EXPECT_LE(s.constants[c].value, k.range_hi) << k.name;
+    }
+    if (ranged && !model_constant_is_whole(k.name)) {
+      EXPECT_LT(lo, hi) << k.name << " is not sampled";
+    }
+    if (!ranged) {
+      EXPECT_EQ(lo, hi) << k.name << " has no range but varies";
+    }
+  }
 }
 
 TEST(Uncertainty, NarrowerRangesGiveANarrowerBand) {
@@ -95,6 +127,53 @@ TEST(Uncertainty, NarrowerRangesGiveANarrowerBand) {
   const UncertaintyResult narrow = bands(calibrated, 7, 2);
   EXPECT_LT(narrow.peak_torque_Nm.hi - narrow.peak_torque_Nm.lo, wide.peak_torque_Nm.hi - wide.peak_torque_Nm.lo);
   EXPECT_LT(narrow.max_temperature_C.hi - narrow.max_temperature_C.lo, wide.max_temperature_C.hi - wide.max_temperature_C.lo);
+}
+
+// Issue 35: a sample that does not complete is infeasible, never left out;
+// every sample is in the count or a failure group, named in words; the
+// sentence says how many of how many.
+TEST(Uncertainty, VerdictCountsEverySampleAndNamesTheLimitInWords) {
+  using uncertainty_parts::Outcome;
+  Outcome ok;
+  ok.completed = ok.feasible = true;
+  Outcome torque = ok;
+  torque.feasible = false;
+  torque.binding_limit = "torque_at_speed";
+  torque.reason = "peak torque 0.560 N m is above 90 % of the motor's 0.600 N m";
+  Outcome stuck;
+  stuck.binding_limit = "settling";
+  stuck.reason = "move 1 to 90 deg failed: error 0x01: settling timeout (114.8)";
+  const std::vector<Outcome> samples = {ok, torque, ok, stuck, torque, ok};
+  const SampleVerdict v = uncertainty_parts::verdict_of(ok, samples);
+  EXPECT_EQ(v.samples, 6);
+  EXPECT_EQ(v.feasible, 3);
+  EXPECT_EQ(v.incomplete, 1);
+  EXPECT_FALSE(v.all());
+  ASSERT_EQ(v.failures.size(), 2u);
+  EXPECT_EQ(v.failures[0].limit, "torque_at_speed"); // most samples first
+  EXPECT_EQ(v.failures[0].samples, (std::vector<int>{2, 5}));
+  EXPECT_EQ(v.failures[1].incomplete, 1);
+  const std::string s = v.sentence();
+  EXPECT_NE(s.find("feasible in 3 of 6 samples: at risk"), std::string::npos) << s;
+  EXPECT_NE(s.find(limit_words("torque_at_speed") + " in 2"), std::string::npos) << s;
+  EXPECT_EQ(s.find("torque_at_speed"), std::string::npos) << s;
+  EXPECT_NE(s.find("1 of them not completed"), std::string::npos) << s;
+  const UncertaintyResult u = uncertainty_parts::bands(default_model_card(), 6, 1, ok, samples);
+  EXPECT_FALSE(u.feasible_worst_case);
+  EXPECT_EQ(u.infeasible_samples, 3);
+  EXPECT_EQ(u.banded, 6); // the nominal and the 5 completed samples
+  EXPECT_TRUE(uncertainty_parts::verdict_of(ok, {ok, ok}).all());
+  EXPECT_FALSE(uncertainty_parts::verdict_of(torque, {ok, ok}).all()); // the nominal counts too
+}
+
+TEST(Uncertainty, BandPercentilesLieBetweenTheExtremes) {
+  const Band b = band_of({5, 1, 4, 2, 3});
+  EXPECT_EQ(b.lo, 1);
+  EXPECT_EQ(b.hi, 5);
+  EXPECT_EQ(b.median, 3);
+  EXPECT_GT(b.p95, b.median);
+  EXPECT_LT(b.p95, b.hi);
+  EXPECT_GT(b.p5, b.lo);
 }
 
 } // namespace
