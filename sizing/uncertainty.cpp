@@ -18,8 +18,10 @@ double unit(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x
 // Every constant whose range on the card (or the --model file) is wider
 // than one value: what the card says production modules spread over,
 // the loop tuning included (A-SIZE-UNC-1). No list of names here: a
-// constant the card fixes has a range of one value.
-bool sampled(const ModelConstant& k) { return k.range_hi > k.range_lo; }
+// constant the card fixes has a range of one value. Where a calibration
+// wrote an identified constant's 95 % interval (A-CAL-5), that is sampled
+// instead of the range.
+bool sampled(const ModelConstant& k) { return k.sampling_hi() > k.sampling_lo(); }
 
 } // namespace
 
@@ -46,9 +48,9 @@ std::vector<ModelCard> latin_hypercube_cards(const ModelCard& card, int samples,
     for (std::size_t i = n; i > 1; --i) std::swap(strata[i - 1], strata[static_cast<std::size_t>(unit(rng) * static_cast<double>(i))]);
     for (std::size_t i = 0; i < n; ++i) {
       const double u = (static_cast<double>(strata[i]) + unit(rng)) / static_cast<double>(n);
-      double v = k.range_lo + u * (k.range_hi - k.range_lo);
+      double v = k.sampling_lo() + u * (k.sampling_hi() - k.sampling_lo());
       if (model_constant_is_whole(k.name)) v = std::round(v);
-      cards[i].constants[c].value = std::clamp(v, k.range_lo, k.range_hi);
+      cards[i].constants[c].value = std::clamp(v, k.sampling_lo(), k.sampling_hi());
     }
   }
   return cards;
