@@ -331,7 +331,11 @@ struct Front<OpcuaOptions>::Impl {
                       {"device_replacements", port.faults.device_replacements}};
         });
         std::string text = pd.dump();
-        if (text != last_pd[i] && ch->write_line(text)) last_pd[i] = std::move(text);
+        if (text != last_pd[i]) {
+          // When the master saw it: the front's SourceTimestamp (wall clock, ms since 1970).
+          pd["ts"] = std::chrono::duration<double, std::milli>(std::chrono::system_clock::now().time_since_epoch()).count();
+          if (ch->write_line(pd.dump())) last_pd[i] = std::move(text);
+        }
         if (port_due) {
           std::string s = st.dump();
           if (s != last_port[i] && ch->write_line(s)) last_port[i] = std::move(s);

@@ -132,7 +132,6 @@ function buildDevice(addressSpace, port, portNode, config, channel, canWrite) {
     optionals: ["SerialNumber", "HardwareRevision", "SoftwareRevision", "ProductID", "ProductText", "VendorText",
       "ProfileCharacteristic", "ParameterSet.ErrorCount", "ParameterSet.DetailedDeviceStatus"],
   });
-  portNode.addReference({ referenceType: "HasNotifier", nodeId: device });
   setIdentification(device, config.identity[port - 1], config);
   const ps = device.getComponentByName("ParameterSet");
   const pdIn = ps.getComponentByName("ProcessDataInput");
@@ -184,7 +183,6 @@ function buildPort(addressSpace, master, port, config, channel, canWrite) {
     eventNotifier: 1,
     optionals: ["ParameterSet.NumberOfCycles", "ParameterSet.NumberOfDeviceHasBeenExchanged"],
   });
-  master.addReference({ referenceType: "HasNotifier", nodeId: portNode });
   const ps = portNode.getComponentByName("ParameterSet");
   const set = (name, dataType, value) => setValue(ps.getComponentByName(name), dataType, value);
   set("CycleTime", DataType.Double, config.cycle_ms);
@@ -228,7 +226,6 @@ function buildMaster(addressSpace, config, channel, canWrite) {
   });
   const deviceSet = addressSpace.findNode(resolveNodeId(`ns=${di};i=5001`)); // DI DeviceSet
   if (deviceSet) deviceSet.addReference({ referenceType: "Organizes", nodeId: master });
-  addressSpace.rootFolder.objects.server.addReference({ referenceType: "HasNotifier", nodeId: master });
   setValue(master.getPropertyByName("DeviceID"), DataType.UInt32, 0);
   setValue(master.getPropertyByName("ProductID"), DataType.String, "sreh-twin serve");
   setValue(master.getPropertyByName("ProductText"), DataType.String, "Virtual IO-Link master of the sreh-twin digital twin");
@@ -249,8 +246,9 @@ function buildMaster(addressSpace, config, channel, canWrite) {
 // Process data of one master cycle (serve sends it when it changed).
 function updateProcessData(port, m) {
   const inStatus = m.in_valid ? StatusCodes.Good : StatusCodes.BadNoCommunication;
-  port.pdIn.setValueFromSource(byteArray(bytes(m.in)), inStatus);
-  port.pdOut.setValueFromSource(byteArray(bytes(m.out)), m.out_valid ? StatusCodes.Good : StatusCodes.UncertainLastUsableValue);
+  const when = m.ts ? new Date(m.ts) : undefined; // when serve read it from the master cycle
+  port.pdIn.setValueFromSource(byteArray(bytes(m.in)), inStatus, when);
+  port.pdOut.setValueFromSource(byteArray(bytes(m.out)), m.out_valid ? StatusCodes.Good : StatusCodes.UncertainLastUsableValue, when);
   const quality = (m.in_valid ? 0 : 1) | (m.out_valid ? 0 : 2); // OptionSet: PDIn invalid, PDOut invalid
   setValue(port.ps.getComponentByName("Quality"), DataType.Byte, quality);
 }

@@ -20,8 +20,8 @@ const kUnits = {
   "degC": ["CEL", "°C", "degree Celsius"],
   "h": ["HUR", "h", "hour"],
   "octet": ["AD", "B", "byte"],
-  "gcm2": ["F85", "g·cm²", "gram centimetre squared"], // no UNECE code for g cm2: the nearest is kg m2 (B32); see docs/opcua.md
-  "min": ["MIN", "min", "minute [unit of time]"],
+  "g cm^2": ["B32", "g·cm²", "gram centimetre squared (UNECE has no code for it: kg m² used, A-OPCUA-4)"],
+  "1": ["C62", "1", "one (a count)"],
 };
 
 // Indices the 30120 model already shows as standard nodes of the Device or
