@@ -1,12 +1,16 @@
 #include "serve/opcua_front.hpp"
 
+#include <netdb.h>
+#include <sys/socket.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <mutex>
@@ -71,11 +75,33 @@ Json params_json() {
 // Identification (manual 6.5) as the device answers it: index -> hex.
 Json identity_json(Hub::Port& port) {
   Json j = Json::object();
-  for (uint16_t index : {13, 16, 17, 18, 19, 20, 21, 22, 23}) {
-    const IsduResult r = port.twin.isdu_read(index, 0);
+  for (const int index : {13, 16, 17, 18, 19, 20, 21, 22, 23}) {
+    const IsduResult r = port.twin.isdu_read(static_cast<uint16_t>(index), 0);
     if (r.ok()) j[std::to_string(index)] = hex_bytes(r.data);
   }
   return j;
+}
+
+// A used address fails here, at once, not after the front has loaded its nodesets.
+void check_address_free(const std::string& host, int port) {
+  if (port == 0) return;
+  addrinfo hints{};
+  hints.ai_family = AF_UNSPEC;
+  hints.ai_socktype = SOCK_STREAM;
+  hints.ai_flags = AI_PASSIVE;
+  addrinfo* res = nullptr;
+  if (getaddrinfo(host.c_str(), std::to_string(port).c_str(), &hints, &res) != 0 || res == nullptr)
+    throw std::runtime_error(fmt::format("opcua {}:{}: cannot resolve the address", host, port));
+  const int fd = socket(res->ai_family, res->ai_socktype | SOCK_CLOEXEC, 0);
+  const int one = 1;
+  if (fd >= 0) setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one); // as node's listen
+  const bool ok = fd >= 0 && bind(fd, res->ai_addr, res->ai_addrlen) == 0;
+  const int err = errno;
+  if (fd >= 0) close(fd);
+  freeaddrinfo(res);
+  if (!ok)
+    throw std::runtime_error(fmt::format("opcua {}:{}: {}", host, port,
+                                         err == EADDRINUSE ? "address in use" : std::strerror(err)));
 }
 
 bool device_active(const Hub::Port& port) {
@@ -137,6 +163,7 @@ struct Front<OpcuaOptions>::Impl {
     if (!is_loopback_host(o.host) && o.state_dir.empty())
       throw std::runtime_error(fmt::format("--opcua {}: an address other than loopback needs --state-dir (the "
                                            "server certificate clients trust is kept there)", o.host));
+    check_address_free(o.host, o.port);
     dir = opcua_front_dir();
     if (!o.state_dir.empty()) {
       pki_dir = (fs::path(o.state_dir) / "opcua-pki").string();
