@@ -5,6 +5,7 @@
 // this client receiving it (same machine, same clock; 1 ms resolution).
 // Usage: node opcua_latency_client.js opc.tcp://HOST:PORT SAMPLING_MS PUBLISHING_MS SECONDS
 "use strict";
+for (const k of ["log", "info", "warn", "debug"]) console[k] = console.error; // stdout carries the result only
 const opcua = require("node-opcua");
 
 const [endpoint, samplingMs, publishingMs, seconds] = process.argv.slice(2);

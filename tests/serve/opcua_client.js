@@ -10,6 +10,7 @@
 // last, for opcua_test.py to compare with Modbus and HTTP.
 // Usage: node opcua_client.js opc.tcp://HOST:PORT http://HOST:PORT [--browse-only]
 "use strict";
+for (const k of ["log", "info", "warn", "debug"]) console[k] = console.error; // stdout carries the result only
 const opcua = require("node-opcua");
 const { OPCUAClient, AttributeIds, BrowseDirection, DataType, VariantArrayType, TimestampsToReturn, StatusCodes } = opcua;
 
@@ -264,11 +265,16 @@ async function main() {
     check(ev, `no IOLinkDeviceAlarmType event from Port1's device; events: ${JSON.stringify(events)}`);
     check(ev[3] === 700 && /^IO-Link EventCode: 0x[0-9A-F]{4}$/.test(ev[2].text), `event ${JSON.stringify(ev)}`);
     log(`blocked move: error 0x${err.error.toString(16)}, event ${ev[2].text} severity ${ev[3]}`);
-    // Release, reset the error (manual 3.3): the event disappears.
+    // Release; the tracking error switched the motor off (manual 2.4), so the
+    // error is reset with Motor On = 0 (3.3, transition 10.2), then the motor
+    // goes on again (T1); the event disappears.
+    check(err.bits & kMotorOff, `Port1: the motor is still on after the tracking error (${JSON.stringify(err)})`);
     await httpJson("POST", "/v1/ports/1/faults", { flange_blocked: false });
-    await d1.writePdOut(pdOut(16384, 1, kMotorOn | kResetError));
+    await d1.writePdOut(pdOut(16384, 1, kResetError));
     await d1.until((s) => !(s.bits & kError), "error reset");
+    await d1.writePdOut(pdOut(16384, 1, 0));
     await d1.writePdOut(pdOut(16384, 1, kMotorOn));
+    await d1.until((s) => s.bits & kReady, "Ready after the reset");
     const code = ev[5];
     const gone = () => events.find((e) => e[0].toString() === alarmType && e[5] === code && e[4] === false);
     while (!gone() && Date.now() < deadline + kTimeoutMs) await new Promise((r) => setTimeout(r, 50));

@@ -11,7 +11,7 @@ import shutil
 import subprocess
 import sys
 
-from harness import Serve, check, fail, pd_in_registers_to_hex
+from harness import Serve, check, pd_in_registers_to_hex
 
 exe, client_js, opcua_dir = sys.argv[1:4]
 node = os.environ.get("SREH_TWIN_NODE", "node")
@@ -21,7 +21,7 @@ if shutil.which(node) is None:
 check(os.path.isdir(os.path.join(opcua_dir, "node_modules", "node-opcua")),
       "%s/node_modules is missing: run `npm ci` there (./setup.sh does)" % opcua_dir)
 
-mb_map = json.loads(subprocess.run([exe, "serve", "--print-modbus-map", "--json"], capture_output=True,
+mb_map = json.loads(subprocess.run([exe, "serve", "--ports", "2", "--print-modbus-map", "--json"], capture_output=True,
                                    text=True, check=True).stdout)
 
 s = Serve(exe, "--ports", "2", "--opcua", "127.0.0.1:0")
@@ -49,7 +49,8 @@ try:
                   "port %d PD in: OPC UA %s, %s %s" % (p, opc["pd_in"], name, raw))
         check(http["in"]["state"] == "Ready", "port %d state %s after the client" % (p, http["in"]["state"]))
         check(s.get("/v1/ports/%d/parameters/65/1" % p)["value"] == opc["speed_65_1"], "port %d 65.1" % p)
-        check(opc["changes"] >= 10, "port %d: only %d ProcessDataInput notifications" % (p, opc["changes"]))
+        # Motor Off -> Ready -> Busy/Done -> Done -> Ready: each seen as a notification (how many more: load-dependent).
+        check(opc["changes"] >= 4, "port %d: only %d ProcessDataInput notifications" % (p, opc["changes"]))
     mb.close()
 finally:
     rc, err = s.stop(timeout=30)
