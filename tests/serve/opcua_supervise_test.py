@@ -61,7 +61,8 @@ r = subprocess.run(base + ["--opcua", "0.0.0.0:0"], capture_output=True, text=Tr
 check(r.returncode == 2 and "--token-file" in r.stderr, "non-loopback without a token: %d %r" % (r.returncode, r.stderr))
 
 # 2. A killed front is reported and restarted on the same port.
-proc = subprocess.Popen(base + ["--opcua", "127.0.0.1:0"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+proc = subprocess.Popen(base + ["--ports", "2", "--opcua", "127.0.0.1:0"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                        text=True)
 lines = []
 threading.Thread(target=lambda: lines.extend(iter(proc.stderr.readline, "")), daemon=True).start()
 try:
