@@ -18,7 +18,12 @@ function quantile(sorted, q) {
   const client = opcua.OPCUAClient.create({ endpointMustExist: false });
   await client.connect(endpoint);
   const session = await client.createSession();
-  const nodeId = "ns=1;s=IOLinkMaster-Port1-Device-ParameterSet-ProcessDataInput";
+  const ns = await session.readNamespaceArray();
+  const iol = ns.indexOf("http://opcfoundation.org/UA/IOLink/"), di = ns.indexOf("http://opcfoundation.org/UA/DI/");
+  const path = opcua.makeBrowsePath("ns=1;s=IOLinkMaster", `/${iol}:Port1/${iol}:Device/${di}:ParameterSet/${iol}:ProcessDataInput`);
+  const found = await session.translateBrowsePath(path);
+  if (!found.targets || found.targets.length !== 1) throw new Error("Port1's ProcessDataInput not found");
+  const nodeId = found.targets[0].targetId;
   const sub = opcua.ClientSubscription.create(session, { requestedPublishingInterval: Number(publishingMs),
     requestedMaxKeepAliveCount: 100, requestedLifetimeCount: 1000, publishingEnabled: true, priority: 1 });
   const item = opcua.ClientMonitoredItem.create(sub, { nodeId, attributeId: opcua.AttributeIds.Value },
