@@ -207,6 +207,8 @@ async function checkIsdu(d, speedRaw) {
   // The same parameter as a variable in engineering units (deg/s, AnalogItemType).
   const record = await child(d.session, d.parameterSet, "Motion parameter set 1");
   const speedNode = await child(d.session, record, "Maximum speed");
+  check(speedNode === `ns=1;s=Port${d.port}.65.1`, `parameter node id ${speedNode} (docs/opcua.md)`);
+  check(d.device === `ns=1;s=IOLinkMaster-Port${d.port}-Device`, `device node id ${d.device} (docs/opcua.md)`);
   const dv = await read(d.session, speedNode);
   check(Math.abs(dv.value.value - speedRaw / 10) < 1e-9, `Maximum speed variable ${dv.value.value} deg/s`);
   const bad = await d.session.write({ nodeId: speedNode, attributeId: AttributeIds.Value,
