@@ -5,7 +5,8 @@ thread (manual 3.2 handshake, polling every 4 ms) while a second Modbus
 client measures FC 3 round trips; once with --opcua and an OPC UA client
 subscribed to ProcessDataInput (sampling 10 ms), once without. Prints the
 ProcessDataInput latency, Modbus round trips and the master cycle jitter of
-both runs. Usage: bench/opcua_latency.py BUILD/sreh-twin [SECONDS=60] [PUBLISHING_MS=5]"""
+both runs. $SERVE_ARGS adds options to both serve runs (e.g. "--rt-priority 20").
+Usage: bench/opcua_latency.py BUILD/sreh-twin [SECONDS=60] [PUBLISHING_MS=5]"""
 import json
 import os
 import subprocess
@@ -31,7 +32,7 @@ def quantiles(xs):
 
 
 def run(with_opcua):
-    args = ["--ports", "1"] + (["--opcua", "127.0.0.1:0"] if with_opcua else [])
+    args = ["--ports", "1"] + os.environ.get("SERVE_ARGS", "").split() + (["--opcua", "127.0.0.1:0"] if with_opcua else [])
     s = Serve(exe, *args)
     stop = threading.Event()
     plc, probe = s.pymodbus(), s.pymodbus()
@@ -85,7 +86,8 @@ def run(with_opcua):
 load = os.getloadavg()[0]
 for with_opcua in (True, False):
     latency, rtt, stats = run(with_opcua)
-    print(json.dumps({"opcua": with_opcua, "seconds": seconds, "load_avg_1min_at_start": round(load, 1),
+    print(json.dumps({"opcua": with_opcua, "seconds": seconds, "serve_args": os.environ.get("SERVE_ARGS", ""),
+                      "nice": os.nice(0), "load_avg_1min_at_start": round(load, 1),
                       "pd_in_latency": latency, "modbus_rtt": rtt,
                       "jitter": {k: stats[k] for k in ("cycles", "late_cycles", "jitter_p50_us", "jitter_p99_us",
                                                        "jitter_max_us", "busy_fraction")}}), flush=True)
