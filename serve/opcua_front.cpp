@@ -2,6 +2,7 @@
 
 #include <netdb.h>
 #include <sys/socket.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -235,14 +236,17 @@ struct Front<OpcuaOptions>::Impl {
     reader = std::thread([this, ch] { read_loop(ch); });
     ch->write_line(c.dump());
     std::unique_lock lock(mutex);
-    const bool done = cv.wait_for(lock, std::chrono::seconds(options.startup_timeout_s), [&] { return ready || ended || stopping.load(); });
+    const bool done = cv.wait_for(lock, std::chrono::seconds(options.startup_timeout_s),
+                                  [&] { return ready || ended || stopping.load(); });
     if (ready) {
       resync = true;
       return;
     }
-    const std::string why = !fatal.empty() ? fatal : done ? "it ended before listening" : "no answer in time";
+    std::string why = !fatal.empty() ? fatal : done ? "it ended before listening" : "no answer in time";
     lock.unlock();
     const int status = ch->stop(2000);
+    if (fatal.empty() && WIFEXITED(status) && WEXITSTATUS(status) == 127)
+      why = fmt::format("cannot run '{}' (Node.js; ./setup.sh installs it, $SREH_TWIN_NODE names another)", node_program());
     if (reader.joinable()) reader.join();
     throw std::runtime_error(fmt::format("opcua {}:{}: {} ({})", options.host, port_number, why,
                                          describe_wait_status(status)));
