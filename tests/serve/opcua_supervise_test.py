@@ -91,12 +91,15 @@ finally:
     if proc.poll() is None:
         proc.kill()
 
-# 4. SIGKILL of serve: the front goes too (parent-death signal).
-proc = subprocess.Popen(base + ["--opcua", "127.0.0.1:0"], stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
+# 4. SIGKILL of serve: the front goes too (parent-death signal), even while it is still starting.
+proc = subprocess.Popen(base + ["--opcua", "127.0.0.1:0"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
 try:
-    json.loads(proc.stdout.readline())
-    front = children(proc.pid)
-    check(len(front) == 1, "no front")
+    end = time.monotonic() + 60
+    front = []
+    while not front and time.monotonic() < end:
+        front = children(proc.pid)
+        time.sleep(0.05)
+    check(len(front) == 1, "no front started")
     proc.kill()
     proc.wait(timeout=10)
     wait_gone(front[0], "the front outlived a SIGKILLed serve")
