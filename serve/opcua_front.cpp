@@ -209,7 +209,6 @@ struct Front<OpcuaOptions>::Impl {
                 {"device_id", 0},
                 {"iolink_revision", "1.1"},
                 {"min_cycle_time_ms", 2.0}, // manual 1
-                {"max_power_supply_mA", nullptr},
                 {"pd_in_bytes", kPdInBytes},
                 {"pd_out_bytes", kPdOutBytes},
                 {"min_sampling_ms", 1},

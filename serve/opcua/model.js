@@ -197,7 +197,6 @@ function buildPort(addressSpace, master, port, config, channel, canWrite) {
   set("UseIODD", DataType.Boolean, false);
   set("DeviceID", DataType.UInt32, config.device_id);
   set("VendorID", DataType.UInt16, config.vendor_id);
-  set("MaxPowerSupply", DataType.Double, config.max_power_supply_mA);
   setValue(portNode.getPropertyByName("DeviceConfigurationDisabled"), DataType.Boolean, true);
   portNode.getComponentByName("MethodSet").getMethodByName("UpdateConfiguration")
     .bindMethod(async (_args, _context) => ({ statusCode: StatusCodes.BadNotSupported }));
@@ -232,7 +231,6 @@ function buildMaster(addressSpace, config, channel, canWrite) {
   setValue(master.getPropertyByName("MasterConfigurationDisabled"), DataType.Boolean, true);
   const mps = master.getComponentByName("ParameterSet");
   setValue(mps.getComponentByName("MaxNumberOfPorts"), DataType.Byte, config.ports);
-  setValue(mps.getComponentByName("MaxPowerSupply"), DataType.Double, config.max_power_supply_mA);
   setValue(mps.getComponentByName("MasterType"), DataType.Byte, enumIndex(mps.getComponentByName("MasterType"), "Master acc. V1.1"));
   for (const tag of ["ApplicationSpecificTag", "FunctionTag", "LocationTag"])
     setValue(mps.getComponentByName(tag), DataType.String, "");
