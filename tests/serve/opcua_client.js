@@ -5,8 +5,8 @@
 // a parameter variable in engineering units, motor on and a move through
 // ProcessDataOutput watched on ProcessDataInput through a subscription
 // (manual 3.2 handshake, 2.2/2.3 layout), on both ports at once; then a
-// blocked move on port 1 (serve's fault injection) and its IO-Link event as
-// an IOLinkDeviceAlarmType (30120 9.8). Prints one JSON line with what it saw
+// blocked move on both ports at once (serve's fault injection) and its IO-Link
+// event as an IOLinkDeviceAlarmType (30120 9.8). Prints one JSON line with what it saw
 // last, for opcua_test.py to compare with Modbus and HTTP.
 // Usage: node opcua_client.js opc.tcp://HOST:PORT http://HOST:PORT [--browse-only]
 "use strict";
@@ -216,6 +216,41 @@ async function checkIsdu(d, speedRaw) {
   check(bad.isNotGood(), `writing 5000 deg/s was accepted: ${bad.toString()}`);
 }
 
+// A blocked move (docs/serve.md faults: flange_blocked) half a turn from
+// `at`: a tracking error, its event from this device (30120 9.8, ActiveState
+// true), then release and reset; the event disappears (ActiveState false).
+async function blockedMove(d, at, events, alarmType) {
+  const until = (pred, what) => {
+    const deadline = Date.now() + kTimeoutMs;
+    return (async () => {
+      let e;
+      while (!(e = events.find(pred)) && Date.now() < deadline) await new Promise((r) => setTimeout(r, 50));
+      check(e, `Port${d.port}: ${what}; events: ${JSON.stringify(events)}`);
+      return e;
+    })();
+  };
+  await httpJson("POST", `/v1/ports/${d.port}/faults`, { flange_blocked: true });
+  await d.writePdOut(pdOut(at + 32768, 1, kMotorOn | kMove));
+  const err = await d.until((s) => s.bits & kError, "Error after a blocked move");
+  const ev = await until((e) => e[0].toString() === alarmType && e[1].toString() === d.device && e[4] === true,
+    "no IOLinkDeviceAlarmType event from its device");
+  check(ev[3] === 700 && /^IO-Link EventCode: 0x[0-9A-F]{4}$/.test(ev[2].text), `event ${JSON.stringify(ev)}`);
+  log(`Port${d.port} blocked move: error 0x${err.error.toString(16)}, event ${ev[2].text} severity ${ev[3]}`);
+  // The tracking error switched the motor off (manual 2.4), so the error is
+  // reset with Motor On = 0 (3.3, transition 10.2), then the motor goes on (T1).
+  check(err.bits & kMotorOff, `Port${d.port}: the motor is still on after the tracking error (${JSON.stringify(err)})`);
+  await httpJson("POST", `/v1/ports/${d.port}/faults`, { flange_blocked: false });
+  await d.writePdOut(pdOut(at, 1, kResetError));
+  await d.until((s) => !(s.bits & kError), "error reset");
+  await d.writePdOut(pdOut(at, 1, 0));
+  await d.writePdOut(pdOut(at, 1, kMotorOn));
+  await d.until((s) => s.bits & kReady, "Ready after the reset");
+  const code = ev[5];
+  await until((e) => e[0].toString() === alarmType && e[1].toString() === d.device && e[5] === code && e[4] === false,
+    `event 0x${code.toString(16)} did not disappear`);
+  log(`Port${d.port}: the event disappeared after the reset`);
+}
+
 async function main() {
   const client = OPCUAClient.create({ endpointMustExist: false, connectionStrategy: { maxRetry: 2, initialDelay: 200 } });
   await client.connect(endpoint);
@@ -255,33 +290,8 @@ async function main() {
       { samplingInterval: 0, discardOldest: true, queueSize: 100, filter }, TimestampsToReturn.Neither);
     eventItem.on("changed", (fields) => events.push(fields.map((f) => f.value)));
     await new Promise((r) => setTimeout(r, 300));
-    const d1 = devices[0];
-    await httpJson("POST", "/v1/ports/1/faults", { flange_blocked: true });
-    await d1.writePdOut(pdOut(16384 + 32768, 1, kMotorOn | kMove)); // 180 deg
-    const err = await d1.until((s) => s.bits & kError, "Error after a blocked move");
-    const deadline = Date.now() + kTimeoutMs;
     const alarmType = `ns=${iol};i=1008`; // IOLinkDeviceAlarmType
-    const appeared = () => events.find((e) => e[0].toString() === alarmType && e[1].toString() === d1.device && e[4] === true);
-    while (!appeared() && Date.now() < deadline) await new Promise((r) => setTimeout(r, 50));
-    const ev = appeared();
-    check(ev, `no IOLinkDeviceAlarmType event from Port1's device; events: ${JSON.stringify(events)}`);
-    check(ev[3] === 700 && /^IO-Link EventCode: 0x[0-9A-F]{4}$/.test(ev[2].text), `event ${JSON.stringify(ev)}`);
-    log(`blocked move: error 0x${err.error.toString(16)}, event ${ev[2].text} severity ${ev[3]}`);
-    // Release; the tracking error switched the motor off (manual 2.4), so the
-    // error is reset with Motor On = 0 (3.3, transition 10.2), then the motor
-    // goes on again (T1); the event disappears.
-    check(err.bits & kMotorOff, `Port1: the motor is still on after the tracking error (${JSON.stringify(err)})`);
-    await httpJson("POST", "/v1/ports/1/faults", { flange_blocked: false });
-    await d1.writePdOut(pdOut(16384, 1, kResetError));
-    await d1.until((s) => !(s.bits & kError), "error reset");
-    await d1.writePdOut(pdOut(16384, 1, 0));
-    await d1.writePdOut(pdOut(16384, 1, kMotorOn));
-    await d1.until((s) => s.bits & kReady, "Ready after the reset");
-    const code = ev[5];
-    const gone = () => events.find((e) => e[0].toString() === alarmType && e[5] === code && e[4] === false);
-    while (!gone() && Date.now() < deadline + kTimeoutMs) await new Promise((r) => setTimeout(r, 50));
-    check(gone(), `event 0x${code.toString(16)} did not disappear`);
-    log("the event disappeared after the reset");
+    await Promise.all(devices.map((d, i) => blockedMove(d, targets[i], events, alarmType)));
     // What the client sees now, for the comparison with Modbus and HTTP.
     const out = { ports: [] };
     for (const d of devices) {
