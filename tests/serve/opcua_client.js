@@ -118,19 +118,28 @@ class Device {
       { samplingInterval: 10, discardOldest: true, queueSize: 100 }, TimestampsToReturn.Both);
     item.on("changed", (dv) => {
       if (!dv.statusCode.isGood()) return;
-      this.last = pdIn(dv.value.value);
       ++this.changes;
-      this.waiters = this.waiters.filter((w) => !w.pred(this.last) || (w.resolve(this.last), false));
+      this.seen(pdIn(dv.value.value));
     });
+  }
+
+  seen(state) {
+    this.last = state;
+    this.waiters = this.waiters.filter((w) => !w.pred(this.last) || (w.resolve(this.last), false));
   }
 
   // Resolves when a ProcessDataInput notification satisfies pred.
   until(pred, what) {
     if (this.last && pred(this.last)) return Promise.resolve(this.last);
     return new Promise((resolve, reject) => {
-      const timer = setTimeout(() => reject(new Error(`Port${this.port}: ${what} not seen in ${kTimeoutMs} ms ` +
-        `(last PD in ${JSON.stringify(this.last)})`)), kTimeoutMs);
-      this.waiters.push({ pred, resolve: (v) => (clearTimeout(timer), resolve(v)) });
+      // The subscription delivers the states; a read every second as well, so that a
+      // notification lost to a publish timeout on a starved machine does not hang the test.
+      const poll = setInterval(() => read(this.session, this.pdInNode).then((dv) => {
+        if (dv.statusCode.isGood()) this.seen(pdIn(dv.value.value));
+      }).catch(() => {}), 1000);
+      const timer = setTimeout(() => (clearInterval(poll), reject(new Error(`Port${this.port}: ${what} not seen in ` +
+        `${kTimeoutMs} ms (last PD in ${JSON.stringify(this.last)})`))), kTimeoutMs);
+      this.waiters.push({ pred, resolve: (v) => (clearTimeout(timer), clearInterval(poll), resolve(v)) });
     });
   }
 
