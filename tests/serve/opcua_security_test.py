@@ -11,6 +11,7 @@ import shutil
 import subprocess
 import sys
 import tempfile
+import time
 
 from harness import Serve, check
 
@@ -47,6 +48,14 @@ try:
     check(len(rejected) == 1, "the client's certificate is not in rejected/: %s" % rejected)
     trusted = os.path.join(state, "opcua-pki", "trusted", "certs")
     shutil.move(rejected[0], os.path.join(trusted, os.path.basename(rejected[0])))
+    # The server notices the trusted folder's change on its own (a file watcher): up to 60 s.
+    end = time.monotonic() + 60
+    r = attempt("secure", client_pki, "sreh-twin", "s3cret-token")
+    while not r["ok"] and time.monotonic() < end:
+        time.sleep(1)
+        r = attempt("secure", client_pki, "sreh-twin", "s3cret-token")
+    check(r["ok"], "the trusted client cannot connect: %s" % r)
+    # Now the certificate is trusted: the refusals below are the user's.
     r = attempt("secure", client_pki)
     check(not r["ok"], "an anonymous session was accepted: %s" % r)
     r = attempt("secure", client_pki, "sreh-twin", "wrong")
