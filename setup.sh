@@ -36,6 +36,12 @@ fi
 if [ "${SREH_WITH_BROWSER:-0}" = 1 ]; then
   packages+=(chromium) # only for the report-in-a-browser test
 fi
+# serve --opcua (issue 38): the OPC UA front is Node.js with node-opcua (Debian 12 packages no C/C++
+# OPC UA stack). Debian's nodejs (18) and npm, unless a Node.js with npm is already there (e.g. nodesource's
+# nodejs, which replaces Debian's package and bundles its own npm).
+if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
+  packages+=(nodejs npm)
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")
@@ -43,4 +49,10 @@ done
 if [ ${#missing[@]} -gt 0 ]; then
   apt-get update -qq
   apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+# The OPC UA front's packages (serve/opcua): exactly the versions in its committed package-lock.json,
+# chosen to run on Node 18 (docs/opcua.md "Install"); no install scripts run, nothing is fetched later.
+front="$(cd "$(dirname "$0")" && pwd)/serve/opcua"
+if [ ! -d "$front/node_modules/node-opcua" ] || [ "$front/package-lock.json" -nt "$front/node_modules/.package-lock.json" ]; then
+  (cd "$front" && npm ci --ignore-scripts --no-audit --no-fund --loglevel=error)
 fi

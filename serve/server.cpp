@@ -18,6 +18,7 @@
 #include "serve/http_server.hpp"
 #include "serve/modbus_server.hpp"
 #include "serve/mqtt_bridge.hpp"
+#include "serve/opcua_front.hpp"
 #include "serve/port_api.hpp"
 #include "serve/shutdown.hpp"
 #include "serve/state_dir.hpp"
@@ -197,6 +198,7 @@ struct Fronts {
   std::unique_ptr<ModbusServer> modbus;
   std::unique_ptr<HttpServer> http;
   std::unique_ptr<MqttBridge> mqtt;
+  std::unique_ptr<OpcuaFront> opcua;
 };
 
 Fronts make_fronts(Hub& hub, const ServeOptions& o, const std::string& token) {
@@ -222,6 +224,14 @@ Fronts make_fronts(Hub& hub, const ServeOptions& o, const std::string& token) {
       mq.interval_ms = o.mqtt_interval_ms;
       mq.token = token;
       f.mqtt = std::make_unique<MqttBridge>(hub, mq);
+    }
+    if (o.opcua) {
+      OpcuaOptions op;
+      op.host = o.opcua->host;
+      op.port = o.opcua->port;
+      op.token = token;
+      op.state_dir = o.state_dir;
+      f.opcua = std::make_unique<OpcuaFront>(hub, op);
     }
   } catch (const std::runtime_error& e) {
     throw std::invalid_argument(e.what());
@@ -281,11 +291,13 @@ int run_serve(const ServeOptions& o, std::ostream& out, std::ostream& err) {
   fronts.modbus->start();
   fronts.http->start();
   if (fronts.mqtt) fronts.mqtt->start();
+  if (fronts.opcua) fronts.opcua->start();
 
   Json ready{{"ports", o.ports},
              {"modbus", endpoint_text(o.modbus.host, fronts.modbus->bound_port())},
              {"http", endpoint_text(o.http.host, fronts.http->bound_port())},
              {"mqtt", o.mqtt ? Json(endpoint_text(o.mqtt->host, o.mqtt->port)) : Json(nullptr)},
+             {"opcua", fronts.opcua ? Json(endpoint_text(o.opcua->host, fronts.opcua->bound_port())) : Json(nullptr)},
              {"speed", o.speed},
              {"master_cycle_ms", o.master_cycle_ms}};
   if (o.rt_priority > 0) {
@@ -304,6 +316,7 @@ int run_serve(const ServeOptions& o, std::ostream& out, std::ostream& err) {
 
   const std::optional<int> sig = wait_for_stop(o.duration_s);
   // Fronts first (no new requests), then the clock.
+  if (fronts.opcua) fronts.opcua->stop();
   if (fronts.mqtt) fronts.mqtt->stop();
   fronts.http->stop();
   fronts.modbus->stop();

@@ -24,6 +24,7 @@ struct ServeOptions {
   Endpoint modbus{"127.0.0.1", 5020};
   Endpoint http{"127.0.0.1", 8080};
   std::optional<Endpoint> mqtt;
+  std::optional<Endpoint> opcua;          // OPC UA (OPC 30120) front, a Node.js process (serve/opcua_front.hpp)
   std::string mqtt_prefix = "sreh-twin";
   int mqtt_interval_ms = 1000;
   std::map<int, std::string> port_config; // port -> scenario-style YAML (device, load, world, sim)

@@ -29,6 +29,7 @@ struct ServeArgs {
   std::string modbus = "127.0.0.1:5020";
   std::string http = "127.0.0.1:8080";
   std::string mqtt;
+  std::string opcua;
   std::vector<std::string> port_config;
   bool print_map = false;
   bool print_routes = false;
@@ -51,6 +52,7 @@ int serve_command(ServeArgs& a) {
     a.options.modbus = serve::parse_endpoint(a.modbus, "--modbus");
     a.options.http = serve::parse_endpoint(a.http, "--http");
     if (!a.mqtt.empty()) a.options.mqtt = serve::parse_endpoint(a.mqtt, "--mqtt");
+    if (!a.opcua.empty()) a.options.opcua = serve::parse_endpoint(a.opcua, "--opcua");
     static const std::regex pc(R"(^(\d{1,2})=(.+)$)");
     for (const auto& item : a.port_config) {
       std::smatch m;
@@ -77,6 +79,9 @@ SREH_REGISTER_COMMAND(70, [](CLI::App& app, int& exit_code) {
       ->default_val("127.0.0.1:5020");
   cmd->add_option("--http", a->http, "HTTP listen address HOST:PORT (PORT 0: any free port)")->default_val("127.0.0.1:8080");
   cmd->add_option("--mqtt", a->mqtt, "MQTT broker HOST:PORT to publish to and take commands from (optional)");
+  cmd->add_option("--opcua", a->opcua,
+                  "OPC UA (OPC 30120, IO-Link) listen address HOST:PORT, e.g. 127.0.0.1:4840 (PORT 0: any free "
+                  "port); other than loopback needs --token-file and --state-dir (docs/opcua.md)");
   cmd->add_option("--mqtt-prefix", a->options.mqtt_prefix, "MQTT topic prefix")->default_val("sreh-twin");
   cmd->add_option("--mqtt-interval-ms", a->options.mqtt_interval_ms, "MQTT republish interval (changes go at once)")
       ->default_val(1000)->check(CLI::Range(20, 3600000));
