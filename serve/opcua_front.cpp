@@ -293,32 +293,40 @@ struct Front<OpcuaOptions>::Impl {
       reply["error"] = fmt::format("no port {}", p);
       return reply;
     }
+    const auto body = [&](Hub::Port& port) {
+      if (op == "pd_out") {
+        apply_pd_out(port, Json{{"raw", m.at("raw").get<std::string>()}});
+        reply["ok"] = true;
+        return;
+      }
+      if (!device_active(port)) { // OPC 30120 7.1.4.1: Status -2
+        reply["ok"] = false;
+        reply["not_active"] = true;
+        return;
+      }
+      const auto index = m.at("index").get<uint16_t>();
+      const auto sub = m.at("sub").get<uint8_t>();
+      // The same ISDU access as every front (0x8020 while a Data Storage restore is owed).
+      const IsduResult r = op == "isdu_write"
+                               ? port_isdu_write(port, index, sub, parse_hex(m.at("data").get<std::string>(), "data"))
+                               : port_isdu_read(port, index, sub);
+      reply["ok"] = r.ok();
+      if (r.ok()) reply["data"] = hex_bytes(r.data);
+      else reply["iolink_error"] = r.error;
+    };
     try {
-      hub.with_port(p, [&](Hub::Port& port) {
-        if (op == "pd_out") {
-          apply_pd_out(port, Json{{"raw", m.at("raw").get<std::string>()}});
-          reply["ok"] = true;
-          return;
-        }
-        if (!device_active(port)) { // OPC 30120 7.1.4.1: Status -2
-          reply["ok"] = false;
-          reply["not_active"] = true;
-          return;
-        }
-        const auto index = m.at("index").get<uint16_t>();
-        const auto sub = m.at("sub").get<uint8_t>();
-        const IsduResult r = op == "isdu_write"
-                                 ? port.twin.isdu_write(index, sub, parse_hex(m.at("data").get<std::string>(), "data"))
-                                 : port.twin.isdu_read(index, sub);
-        reply["ok"] = r.ok();
-        if (r.ok()) reply["data"] = hex_bytes(r.data);
-        else reply["iolink_error"] = r.error;
-      });
+      // A write is on disk before its answer leaves, or refused with the
+      // device unchanged (issue 40: Hub::durable).
+      if (op == "isdu_write") hub.durable(p, body);
+      else hub.with_port(p, body);
+    } catch (const StateWriteFailed& e) {
+      reply["ok"] = false;
+      reply["iolink_error"] = e.code;
+      reply.erase("data");
     } catch (const std::exception& e) { // a malformed request (RequestError, JSON)
       reply["ok"] = false;
       reply["error"] = e.what();
     }
-    if (op != "isdu_read") hub.persist(p); // on disk before the answer leaves (docs/serve.md)
     return reply;
   }
 
