@@ -41,7 +41,7 @@ std::string page(const Json& initial) {
   return io::html_page("sreh-twin studio: sizing in the browser",
                        fmt::format("<style>{}</style>\n<link rel=\"stylesheet\" href=\"/assets/studio.css\">\n"
                                    "<link rel=\"icon\" href=\"data:,\">\n",
-                                   report::kPageCss),
+                                   io::kPageCss),
                        std::string(find_studio_asset("studio_body.html")) + "<script>window.STUDIO = " + data +
                            ";</script>\n<script src=\"/assets/studio.js\"></script>\n");
 }
