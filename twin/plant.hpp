@@ -7,9 +7,7 @@
 // Issue 14: two masses (rotor with the encoder, flange with the load) on a
 // torsional spring, the motor's current loop and winding (MotorDrive),
 // bearing friction with a Stribeck rise, cogging, and gravity from the
-// mounting orientation (docs/assumptions/twin.md A-TWIN-20..24); the
-// gear's backlash and load-dependent loss (A-TWIN-45, -41). Every figure
-// is referred to the output of the module's 8:1 gear (docs/model-card.md).
+// mounting orientation (docs/assumptions/twin.md A-TWIN-20..24).
 #pragma once
 #include <array>
 #include <cstdint>
@@ -123,9 +121,8 @@ class Plant {
  private:
   void check_warnings();
   void adopt_model(BuiltModel built);
-  double cogging_torque_Nm(double rotor_angle_rad) const;
+  double drive_train_torque_Nm(double rotor_angle_rad, double rotor_speed_rad_s) const;
   void physics_step(bool enabled);
-  void set_drive_train_state();
 
   MjModelPtr model_;
   MjDataPtr data_;
