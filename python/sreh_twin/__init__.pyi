@@ -150,8 +150,8 @@ def size(*, angle_deg: float | None = ..., load_gcm2: float | None = ..., load: 
          mounting_tilt_deg: float | None = ...,
          model: _Path | None = ...,
          report: _Path | None = ..., uncertainty: bool = ..., samples: int = ..., seed: int = ...,
-         cycle: _Path | None = ...,
-         emit_scenario: _Path | None = ...) -> dict[str, Any]: ...
+         settling_spread_counts: int = ..., cycle: _Path | None = ...,
+         emit_scenario: _Path | None = ..., csv: _Path | None = ...) -> dict[str, Any]: ...
 def calibrate(logs: _Path | Sequence[_Path], *, load_gcm2: float | None = ..., load: _Path | None = ...,
               setup: _Path | None = ..., model: _Path | None = ..., fit: Sequence[str] = ...,
               out: _Path | None = ..., report: _Path | None = ..., threads: int | None = ...,

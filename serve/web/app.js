@@ -255,6 +255,7 @@ class PortView {
 
   showFaults(f) {
     if (!this.baseline) this.baseline = { supply_V: f.supply_V, ambient_C: f.ambient_C };
+    this.serverFaults = null; // newer than the last summary's fault_injection list
     this.derivedFaults = injectedFaults(f, this.baseline);
     this.renderInjected();
   }

@@ -99,7 +99,7 @@ TEST(Bearer, SchemeIsCaseInsensitiveTokenIsNot) {
 // Issue 40: temporaries of a run killed mid-write are removed at start
 // (only serve's own names); an image older than the last one written never
 // overwrites it (a saver that captured before a request answered after).
-TEST_F(StateDirTest, StaleTemporariesGoAndAnOlderImageNeverOverwritesANewerOne) {
+TEST_F(StateDirTest, StaleTemporariesGoAndOlderImagesNeverWin) {
   const fs::path stale = dir / ".port1.nvm.4242-7.tmp", stale_ds = dir / ".port2.ds.json.4242-8.tmp";
   const fs::path foreign = dir / "notes.tmp";
   for (const auto& f : {stale, stale_ds, foreign}) std::ofstream(f) << "x";

@@ -86,7 +86,13 @@ INSTANTIATE_TEST_SUITE_P(Loads, Fastest,
                                            Case{90.0, 6000.0, 0.2, 24.0},
                                            Case{180.0, 15000.0, 0.0, 24.0},  // heat-limited
                                            Case{360.0, 15000.0, 0.0, 24.0},  // the issue's example
-                                           Case{360.0, 2000.0, 0.3, 16.0})); // torque at speed, 16 V
+                                           Case{360.0, 2000.0, 0.3, 16.0}),  // torque at speed, 16 V
+                         // Short names (issue 39: ctest prints the parameter bytes otherwise).
+                         [](const ::testing::TestParamInfo<Case>& param_info) {
+                           return std::to_string(static_cast<int>(param_info.param.angle_deg)) + "d_" +
+                                  std::to_string(static_cast<int>(param_info.param.load_gcm2)) + "g_" +
+                                  std::to_string(static_cast<int>(param_info.param.voltage_V)) + "V";
+                         });
 
 // Issue 17: the gentlest set meets T, and no grid point meeting T has a
 // lower RMS torque by more than 1 %. Grid points whose planned travel alone

@@ -11,6 +11,7 @@ import json
 import pathlib
 import re
 import sys
+import time
 
 
 def blocks(path):
@@ -38,7 +39,7 @@ def main():
             self.sent.append((topic, payload))
 
     token, topic = "s3cret token", "sreh/port/1/isdu/request"
-    scope = {"json": json, "hmac": hmac, "hashlib": hashlib, "token": token, "topic": topic, "client": Client()}
+    scope = {"json": json, "hmac": hmac, "hashlib": hashlib, "time": time, "token": token, "topic": topic, "client": Client()}
     exec(signing[0], scope)
     (sent_topic, payload), = Client.sent
     auth = json.loads(payload)["auth"]

@@ -48,7 +48,7 @@ TEST(Thermal, TimeScaleMultipliesRates) {
 // A-TWIN-THERMAL: heavy fast cycling (~1.2 W: copper 1.06 W measured for
 // 180 deg moves with 15000 g cm^2 and no dwell, plus speed loss) crosses 70
 // and 75 degC within minutes; normal duty (~0.15 W) stays far below.
-TEST(Thermal, HeavyDutyReachesWarningAndErrorInMinutesNormalDutyDoesNot) {
+TEST(Thermal, HeavyDutyWarnsAndTripsInMinutesNormalDutyDoesNot) {
   Thermal heavy(ThermalSpec{25.0, 1.0}, default_module_model().thermal);
   int warn_s = -1, error_s = -1;
   for (int s = 1; s <= 1800; ++s) {
