@@ -97,7 +97,6 @@ struct RunMedia::Impl {
   std::vector<std::string> failures; // the first few, for the closing card
   std::size_t failures_seen = 0;
   bool failures_streamed = false, checks_streamed = false, moves_streamed = false;
-  std::optional<VideoSummary> summary;
 
   void on_cycle(const Twin& twin) {
     const Plant& plant = twin.plant();
@@ -197,7 +196,7 @@ void RunMedia::render_video(const RunResult& result, const std::function<void(do
     const TitleCard closing = m.failures_streamed ? make_closing_card(result, m.failures, m.failures_seen)
                                                   : make_closing_card(result, result.failures, result.failures.size());
     vo.closing = closing;
-    m.summary = m.recording->render(vo, m.options.fixed_slowmo, scale);
+    m.recording->render(vo, m.options.fixed_slowmo, scale);
   }
 }
 
@@ -224,6 +223,5 @@ void RunMedia::write_report(const RunResult& result) {
   }
 }
 
-const std::optional<VideoSummary>& RunMedia::video_summary() const { return impl_->summary; }
 
 } // namespace sreh

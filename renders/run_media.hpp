@@ -55,7 +55,6 @@ class RunMedia {
   // std::runtime_error when it cannot be written.
   void write_report(const RunResult& result);
   // The video's summary once finish() rendered one.
-  const std::optional<VideoSummary>& video_summary() const;
 
  private:
   struct Impl;
