@@ -12,25 +12,18 @@ With --expect-chaotic the case must spread by more than 1 ms (the issue's
 import html
 import json
 import os
-import subprocess
 import sys
 import tempfile
+
+from size_check import fail, run_size
 
 TWIN = sys.argv[1]
 EXPECT_CHAOTIC = "--expect-chaotic" in sys.argv[2:]
 ARGS = [a for a in sys.argv[2:] if a != "--expect-chaotic"]
 
 
-def fail(msg):
-    print("FAIL:", msg)
-    sys.exit(1)
-
-
 def run(args):
-    p = subprocess.run([TWIN, "size"] + args, capture_output=True, text=True)
-    if p.returncode not in (0, 1):
-        fail(f"size {' '.join(args)}: exit {p.returncode}: {p.stderr}")
-    return p
+    return run_size(TWIN, args)
 
 
 with tempfile.TemporaryDirectory() as d:

@@ -29,9 +29,10 @@ Prints PASS at the end.
 import html
 import json
 import os
-import subprocess
 import sys
 import tempfile
+
+from size_check import fail, run_size
 
 import yaml
 
@@ -41,16 +42,8 @@ EXPECT_INFEASIBLE = "--expect-infeasible" in sys.argv[3:]
 ARGS = [a for a in sys.argv[3:] if a not in ("--expect-robust", "--expect-infeasible")]
 
 
-def fail(msg):
-    print("FAIL:", msg)
-    sys.exit(1)
-
-
 def run(args):
-    p = subprocess.run([TWIN, "size"] + args, capture_output=True, text=True)
-    if p.returncode not in (0, 1):
-        fail(f"size {' '.join(args)}: exit {p.returncode}: {p.stderr}")
-    return p
+    return run_size(TWIN, args)
 
 
 def check(args, card_ranged):
