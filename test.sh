@@ -4,6 +4,8 @@
 #   ./test.sh              Release build in build/
 #   ./test.sh --sanitize   AddressSanitizer + UBSan build in build-asan/ (clang, no rendering; with the fuzz targets)
 # Any other arguments go to ctest (e.g. -L scenario, -R Planner).
+# SREH_BUILD_ONLY=1 stops after the build (CI builds the sanitizer tree while
+# the Release tests run).
 # Tests are always configured on, whatever an earlier ./demo.sh left in the
 # CMake cache, and ctest refuses a run with no tests (issue 12).
 set -euo pipefail
@@ -26,6 +28,7 @@ fi
 ./setup.sh
 cmake -S . -B "$build" "${config[@]}"
 cmake --build "$build" -j"$(nproc)"
+[ "${SREH_BUILD_ONLY:-0}" = 1 ] && exit 0
 # ctest lists skipped tests without their reason unless -V: its JUnit file
 # has each test's output, from which tests/skip_reasons.py prints why
 # (issue 39).

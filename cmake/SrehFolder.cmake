@@ -20,10 +20,15 @@ function(sreh_folder_library name)
   add_library(sreh::${name} ALIAS ${name})
 endfunction()
 
-# sreh_gtest_folder(NAME DEPS ...): one GoogleTest executable per test folder,
-# every *_test.cpp in it, registered with CTest.
+# sreh_gtest_folder(NAME [COST SECONDS] DEPS ...): one GoogleTest executable
+# per test folder, every *_test.cpp in it, registered with CTest. COST: CTest
+# starts costly tests first (a clean checkout has no timings of its own), so
+# a minute-long fit does not start last and hold the run's tail alone.
 function(sreh_gtest_folder name)
-  cmake_parse_arguments(ARG "" "" "DEPS" ${ARGN})
+  cmake_parse_arguments(ARG "" "COST" "DEPS" ${ARGN})
+  if(NOT ARG_COST)
+    set(ARG_COST 0)
+  endif()
   file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*_test.cpp)
   if(NOT sources)
     return()
@@ -36,5 +41,5 @@ function(sreh_gtest_folder name)
   target_compile_options(${name} PRIVATE $<$<CONFIG:Release>:-O1>)
   # NO_PRETTY_VALUES: a value-parameterised test is named by its name
   # generator, not by the bytes of its parameter (issue 39: short names).
-  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 NO_PRETTY_VALUES PROPERTIES LABELS unit)
+  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 NO_PRETTY_VALUES PROPERTIES LABELS unit COST ${ARG_COST})
 endfunction()
