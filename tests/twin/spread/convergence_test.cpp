@@ -99,7 +99,7 @@ struct Case {
 
 class Convergence : public ::testing::TestWithParam<Case> {};
 
-TEST_P(Convergence, MediansMoveLessThanTheirBoundsWithThePhysicsStep) {
+TEST_P(Convergence, MediansOverSteps) {
   const Case c = GetParam();
   const Median fine = median_over_targets(c.load_gcm2, c.angle_deg, c.window_counts, 0.025e-3);
   for (double dt : {0.1e-3, 0.05e-3}) {
@@ -137,7 +137,7 @@ std::string case_name(const ::testing::TestParamInfo<Case>& info) {
          "deg_" + std::to_string(c.window_counts) + "counts";
 }
 
-INSTANTIATE_TEST_SUITE_P(TwelveCases, Convergence, ::testing::ValuesIn(all_cases()), case_name);
+INSTANTIATE_TEST_SUITE_P(Twelve, Convergence, ::testing::ValuesIn(all_cases()), case_name);
 
 } // namespace
 } // namespace sreh
