@@ -8,7 +8,7 @@
 // torsional spring, the motor's current loop and winding (MotorDrive),
 // bearing friction with a Stribeck rise, cogging, and gravity from the
 // mounting orientation (docs/assumptions/twin.md A-TWIN-20..24); the
-// gear's backlash and load-dependent loss (A-TWIN-45, -41). Every figure
+// gear's backlash and load-dependent loss (A-TWIN-45, -46). Every figure
 // is referred to the output of the module's 8:1 gear (docs/model-card.md).
 #pragma once
 #include <array>
