@@ -12,9 +12,10 @@ ThermalEstimate estimate_thermal(double mean_loss_W, double ambient_C, const The
   e.steady_C = thermal.steady_winding_C(mean_loss_W);
   if (e.steady_C < kTemperatureWarning_C) return e;
   // Backward Euler (stable for any step): 0.5 s steps against the card's
-  // time constants (36 s winding, 30 min housing); the steady state lies above the warning, so the
-  // loop ends (bounded at 10 days anyway). It goes on to the 75 degC trip
-  // (manual 7.2 114.3) when the steady state reaches it.
+  // time constants (36 s winding, 30 min housing); the steady state lies
+  // above the warning, so the loop ends (bounded at 10 days anyway). It
+  // goes on to the 75 degC trip (manual 7.2 114.3) when the steady state
+  // reaches it.
   constexpr double kStep_s = 0.5;
   constexpr int kMaxSteps = 10 * 24 * 3600 * 2;
   const double last_C = e.steady_C >= kTemperatureTrip_C ? kTemperatureTrip_C : kTemperatureWarning_C;
