@@ -104,7 +104,7 @@ TEST(TwinPhysics, UnknownHeavyLoadGivesTrackingError_7_2) {
 // acceleration feed-forward and a position loop too fast for its actual
 // velocity loop: it lags and overshoots more than a matched one (manual
 // 3.5.6). At 50 % acceleration, so the stage has the torque to follow: the
-// card's 0.57 N m at the flange (docs/model-card.md, issue 35) is 17 %
+// card's 0.57 N m at the flange (docs/model-card.md, issue 35) is 18 %
 // above M, so at 100 % a load configured 13 % light already runs into the
 // current limit, and a saturated drive lags without overshooting.
 TEST(TwinPhysics, UnderconfiguredLoadOvershootsMore_3_5_6) {
@@ -279,8 +279,9 @@ TEST(TwinPhysics, HeavyTightSettlesTwiceAsLongAsLightLoose_3_5_7) {
 // issue-35 card) and 115.3 follows; the rotor sticks there in the friction
 // band until the integral breaks it loose, and is back ~0.13 s after the
 // end of the trajectory: in_window_s records when it entered the window for
-// good (servo.md). (The former 0.05 deg window is no longer left: the
-// planetary's spring swings less.)
+// good (servo.md). (The former 0.05 deg window is not left at this
+// target, only at some a few counts away: the planetary's spring swings
+// less; docs/settling.md.)
 TEST(TwinPhysics, HeavyLoadLeavesWindowAfterDoneNoWait_3_5_7) {
   TwinConfig c;
   c.load = InertiaLoad{15000};
