@@ -97,8 +97,9 @@ std::string settling_spread_section(const SettlingSpread& s) {
     o += "</table>\n";
   }
   if (s.never_held > 0) {
-    o += fmt::format("<p id=\"window-not-held\">{} of {} moves were outside the {:.4f} deg window when the next move started: {}; {}.</p>\n",
-                     s.never_held, s.moves, s.tolerance_deg, html_escape(hunting_explanation(s)), html_escape(holding_window_text(s)));
+    o += fmt::format("<p id=\"window-not-held\">{} of {} moves were outside the {:.4f} deg window {}: {}; {}.</p>\n",
+                     s.never_held, s.moves, s.tolerance_deg, html_escape(not_held_when(s)),
+                     html_escape(hunting_explanation(s)), html_escape(holding_window_text(s)));
   }
   return o;
 }

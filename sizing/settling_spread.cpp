@@ -11,6 +11,7 @@
 #include "device_logic/units.hpp"
 #include "io/parallel.hpp"
 #include "sizing/output.hpp"
+#include "sizing/run_parts.hpp"
 
 namespace sreh::sizing {
 namespace {
@@ -66,6 +67,8 @@ SettlingSpread settling_spread(const SizingRequest& request, const ParameterSetV
   SettlingSpread s;
   s.counts = counts;
   s.tolerance_deg = set.tolerance_deg;
+  s.dwell_s = request.dwell_s;
+  s.watched_s = std::min(request.dwell_s, kMaxSimulatedDwell_s);
   const std::vector<Evaluation> runs = perturbed_runs(request, set, &answer, counts, threads);
   s.runs = static_cast<int>(runs.size());
   s.simulations = s.runs - 1;
@@ -113,6 +116,11 @@ SettlingSpread settling_spread(const SizingRequest& request, const ParameterSetV
     }
   }
   return s;
+}
+
+std::string not_held_when(const SettlingSpread& s) {
+  if (s.dwell_s <= s.watched_s) return "when the next move started";
+  return fmt::format("{:g} s after Done (the simulated part of the {:g} s dwell)", s.watched_s, s.dwell_s);
 }
 
 std::string hunting_explanation(const SettlingSpread& s) {
@@ -168,8 +176,8 @@ std::string settling_spread_text(const SettlingSpread& s) {
     }
   }
   if (s.never_held > 0) {
-    o += fmt::format("  window not held   {} of {} moves were outside the {:.4f} deg window when the next move started: {}; ",
-                     s.never_held, s.moves, s.tolerance_deg, hunting_explanation(s));
+    o += fmt::format("  window not held   {} of {} moves were outside the {:.4f} deg window {}: {}; ",
+                     s.never_held, s.moves, s.tolerance_deg, not_held_when(s), hunting_explanation(s));
     o += holding_window_text(s) + "\n";
   }
   return o;

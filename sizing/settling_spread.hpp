@@ -29,6 +29,8 @@ struct SettlingSpread {
   int moves = 0;        // moves of all runs
   int never_held = 0;   // moves not in the window for good when the next move started
   double tolerance_deg = 0;
+  double dwell_s = 0;    // the request's dwell after each move
+  double watched_s = 0;  // how much of it is simulated (A-SIZE-9: at most kMaxSimulatedDwell_s)
   // With never_held > 0: the smallest window (2, 4, 8, 16 x the set's) in
   // which every move of every run was held for good; none if not even that.
   std::optional<double> holding_window_deg;
@@ -47,6 +49,9 @@ SettlingSpread settling_spread(const SizingRequest& request, const ParameterSetV
 nlohmann::json settling_spread_json(const SettlingSpread& s);
 // The text lines of `size`: the spread, and the hunting explanation.
 std::string settling_spread_text(const SettlingSpread& s);
+// "when the next move started", or "0.2 s after Done (the simulated part of
+// the 0.6 s dwell)" where the dwell is longer than what is simulated.
+std::string not_held_when(const SettlingSpread& s);
 // Why a move may never hold a tight window, in words (text, report, docs/settling.md).
 std::string hunting_explanation(const SettlingSpread& s);
 // "a 0.0082 deg window was held by every move" (or that none tried was).

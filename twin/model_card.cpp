@@ -55,9 +55,10 @@ const SchemaRow kSchema[] = {
     {"viscous_friction", "N m s/rad", Sign::NonNegative, false, SREH_FIELD(mechanics.viscous_friction_Nms_per_rad)},
     {"stribeck_excess", "N m", Sign::NonNegative, false, SREH_FIELD(mechanics.stribeck_excess_Nm)},
     {"stribeck_speed", "rad/s", Sign::Positive, false, SREH_FIELD(mechanics.stribeck_speed_rad_s)},
-    {"friction_smoothing_speed", "rad/s", Sign::Positive, false, SREH_FIELD(mechanics.friction_smoothing_rad_s)},
     {"cogging_torque", "N m", Sign::NonNegative, false, SREH_FIELD(mechanics.cogging_torque_Nm)},
     {"cogging_periods", "1/rev", Sign::Positive, true, SREH_FIELD(mechanics.cogging_periods_per_rev)},
+    {"gear_efficiency", "1", Sign::Positive, false, SREH_FIELD(mechanics.gear_efficiency)},
+    {"gear_backlash", "rad", Sign::NonNegative, false, SREH_FIELD(mechanics.gear_backlash_rad)},
     {"winding_heat_capacity", "J/K", Sign::Positive, false, SREH_FIELD(thermal.winding_capacity_J_per_K)},
     {"housing_heat_capacity", "J/K", Sign::Positive, false, SREH_FIELD(thermal.housing_capacity_J_per_K)},
     {"winding_to_housing_resistance", "K/W", Sign::Positive, false, SREH_FIELD(thermal.winding_to_housing_K_per_W)},
@@ -203,6 +204,9 @@ void read_entry(const CardFile& f, const YAML::Node& key, const YAML::Node& entr
   if (name == "loop_delay" && c.value > PositionController::kMaxDelayPeriods) {
     f.fail(at, "loop_delay must be at most " + std::to_string(PositionController::kMaxDelayPeriods) +
                    " control periods (what the controller holds), got " + shortest_number(c.value));
+  }
+  if (name == "gear_efficiency" && c.value > 1) {
+    f.fail(at, "gear_efficiency must be at most 1 (a gear does not add torque), got " + shortest_number(c.value));
   }
   if (c.value < c.range_lo || c.value > c.range_hi) {
     f.fail(at, name + " = " + shortest_number(c.value) + " " + c.unit + " is outside its range [" +

@@ -9,7 +9,12 @@
 namespace sreh {
 
 // Two masses on a spring with bearing friction and cogging (A-TWIN-4,
-// A-TWIN-20..23).
+// A-TWIN-20..23): the motor side (rotor, encoder) and the output side
+// (flange) of an 8:1 planetary gear, every figure referred to the output
+// (docs/model-card.md "The drive layout"). The spring is the gear's
+// torsional stiffness with its backlash as a lost-motion band
+// (A-TWIN-45); the gear's load-dependent loss is friction on the rotor
+// that grows with the torque it transmits (A-TWIN-46).
 struct MechanicsConstants {
   double rotor_inertia_kgm2 = 0;          // J_m; the flange takes J_intern - J_m
   double torsional_stiffness_Nm_per_rad = 0;
@@ -18,9 +23,10 @@ struct MechanicsConstants {
   double viscous_friction_Nms_per_rad = 0;
   double stribeck_excess_Nm = 0;          // breakaway above Coulomb
   double stribeck_speed_rad_s = 0;
-  double friction_smoothing_rad_s = 0;    // width of the smoothed sign
   double cogging_torque_Nm = 0;
   double cogging_periods_per_rev = 0;
+  double gear_efficiency = 1;             // transmitted share of the torque through the gear (< 1)
+  double gear_backlash_rad = 0;           // lost motion between rotor and flange, total
   bool operator==(const MechanicsConstants&) const = default;
 };
 

@@ -114,17 +114,38 @@ double Plant::gravity_torque_Nm() const {
   return -data_->qfrc_bias[twist_dof_];
 }
 
-// Drive-train effects MuJoCo's joint has no element for (the Coulomb part
-// is the rotor joint's frictionloss, the viscous part its damping): the
-// Stribeck rise near standstill (A-TWIN-22) and cogging (A-TWIN-23).
-double Plant::drive_train_torque_Nm(double rotor_angle_rad, double rotor_speed_rad_s) const {
+// Cogging (A-TWIN-23): the drive-train effect MuJoCo's joint has no
+// element for (the friction is the rotor joint's frictionloss and damping,
+// set each step by set_drive_train_state).
+double Plant::cogging_torque_Nm(double rotor_angle_rad) const {
   const MechanicsConstants& c = config_.module.mechanics;
-  const double stribeck = -c.stribeck_excess_Nm * std::exp(-std::pow(rotor_speed_rad_s / c.stribeck_speed_rad_s, 2)) *
-                          std::tanh(rotor_speed_rad_s / c.friction_smoothing_rad_s);
-  const double cogging = c.cogging_torque_Nm * std::sin(c.cogging_periods_per_rev * rotor_angle_rad);
-  return stribeck + cogging;
+  return c.cogging_torque_Nm * std::sin(c.cogging_periods_per_rev * rotor_angle_rad);
 }
 
+// The drive train's friction and gear for the coming step, from the state
+// now (no state of their own). A-TWIN-22: the rotor's dry friction is
+// MuJoCo's frictionloss constraint (it holds at rest up to its magnitude,
+// whatever the step): Coulomb plus the Stribeck excess exp(-(w / w_s)^2),
+// so the breakaway is Coulomb + excess and it fades with speed.
+// A-TWIN-45 backlash: the spring's reference follows the twist inside the
+// lost-motion band [-b/2, b/2], so the flanks transmit torque only beyond
+// it (k (twist - clamp(twist, -b/2, b/2))), and the mesh damping acts
+// only while the flanks touch. A-TWIN-46 efficiency: the rotor's Coulomb
+// friction grows by (1 - efficiency) x the torque the flanks transmit.
+void Plant::set_drive_train_state() {
+  const MechanicsConstants& c = config_.module.mechanics;
+  mjModel* m = model_.get();
+  const double twist = data_->qpos[twist_qpos_];
+  const double half_band = 0.5 * c.gear_backlash_rad;
+  const double reference = std::clamp(twist, -half_band, half_band);
+  const bool touching = half_band == 0.0 || std::abs(twist) > half_band;
+  m->qpos_spring[twist_qpos_] = reference;
+  m->dof_damping[twist_dof_] = touching ? c.torsional_damping_Nms_per_rad : 0.0;
+  const double transmitted_Nm = c.torsional_stiffness_Nm_per_rad * (twist - reference);
+  const double w = data_->qvel[rotor_dof_] / c.stribeck_speed_rad_s;
+  m->dof_frictionloss[rotor_dof_] = c.coulomb_friction_Nm + c.stribeck_excess_Nm * std::exp(-w * w) +
+                                    (1.0 - c.gear_efficiency) * std::abs(transmitted_Nm);
+}
 
 const SensorReadings& Plant::step(const MotorCommand& cmd) {
   if (failed_) {
@@ -151,8 +172,9 @@ void Plant::physics_step(bool enabled) {
   d->ctrl[actuator_] = applied_torque_Nm_;
   // An external torque acts on the flange: a generalised force on both
   // dofs (the flange angle is rotor + twist).
-  d->qfrc_applied[rotor_dof_] = external_torque_Nm_ + drive_train_torque_Nm(d->qpos[rotor_qpos_], omega);
+  d->qfrc_applied[rotor_dof_] = external_torque_Nm_ + cogging_torque_Nm(d->qpos[rotor_qpos_]);
   d->qfrc_applied[twist_dof_] = external_torque_Nm_;
+  set_drive_train_state();
   try {
     mj_step(model_.get(), d);
   } catch (...) {

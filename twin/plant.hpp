@@ -7,7 +7,9 @@
 // Issue 14: two masses (rotor with the encoder, flange with the load) on a
 // torsional spring, the motor's current loop and winding (MotorDrive),
 // bearing friction with a Stribeck rise, cogging, and gravity from the
-// mounting orientation (docs/assumptions/twin.md A-TWIN-20..24).
+// mounting orientation (docs/assumptions/twin.md A-TWIN-20..24); the
+// gear's backlash and load-dependent loss (A-TWIN-45, -46). Every figure
+// is referred to the output of the module's 8:1 gear (docs/model-card.md).
 #pragma once
 #include <array>
 #include <cstdint>
@@ -121,8 +123,9 @@ class Plant {
  private:
   void check_warnings();
   void adopt_model(BuiltModel built);
-  double drive_train_torque_Nm(double rotor_angle_rad, double rotor_speed_rad_s) const;
+  double cogging_torque_Nm(double rotor_angle_rad) const;
   void physics_step(bool enabled);
+  void set_drive_train_state();
 
   MjModelPtr model_;
   MjDataPtr data_;

@@ -1,6 +1,9 @@
 """Issue 28: Twin(load_file=...) honours the file's mounting: (and
 mounting_tilt_deg=), exactly as `run` does: a 0.2 kg arm at 60 mm on a
-horizontal axis holds level with |torque| close to m g r, like the CLI."""
+horizontal axis holds level with |torque| close to m g r, like the CLI:
+within what holds the flange without the motor (the card's breakaway
+friction, the gear's loss on the holding torque and cogging, A-TWIN-22,
+-23, -46: 0.02 N m with the issue-35 card)."""
 import csv
 import math
 
@@ -18,6 +21,12 @@ def write_arm(tmp_path, mounting):
     return f
 
 
+def stiction_Nm():
+    c = {k: v["value"] for k, v in sreh_twin.model_card()["constants"].items()}
+    return (c["coulomb_friction"] + c["stribeck_excess"] + c["cogging_torque"]
+            + (1 - c["gear_efficiency"]) * M_KG * G * R_M)
+
+
 def python_hold_torque(**kwargs):
     twin = sreh_twin.Twin(**kwargs)
     twin.run_cycles(200, sreh_twin.pd_out(motor_on=True, parameter_set=0))  # 0.4 s holding at 0 deg
@@ -26,14 +35,14 @@ def python_hold_torque(**kwargs):
 
 def test_python_holds_the_horizontal_arm_with_m_g_r(tmp_path):
     torque = python_hold_torque(load_file=write_arm(tmp_path, "horizontal"))
-    assert abs(torque) == pytest.approx(M_KG * G * R_M, rel=0.05)
+    assert abs(torque) == pytest.approx(M_KG * G * R_M, abs=stiction_Nm())
 
 
 def test_mounting_tilt_deg_overrides_and_vertical_holds_nothing(tmp_path):
     f = write_arm(tmp_path, "horizontal")
     assert abs(python_hold_torque(load_file=f, mounting_tilt_deg=0)) < 0.01
     assert abs(python_hold_torque(load_file=write_arm(tmp_path, None), mounting_tilt_deg=90)) == pytest.approx(
-        M_KG * G * R_M, rel=0.05)
+        M_KG * G * R_M, abs=stiction_Nm())
     with pytest.raises(ValueError):
         sreh_twin.Twin(load_file=f, mounting_tilt_deg=200)
 
@@ -52,4 +61,4 @@ def test_cli_and_python_hold_with_the_same_torque(tmp_path):
     cli_torque = sum(float(r["torque_Nm"]) for r in rows[-20:]) / 20
     py_torque = python_hold_torque(load_file=f)  # configure_load writes 7200 into every set, as the scenario does
     assert cli_torque == pytest.approx(py_torque, rel=0.02, abs=1e-3)
-    assert abs(cli_torque) == pytest.approx(M_KG * G * R_M, rel=0.05)
+    assert abs(cli_torque) == pytest.approx(M_KG * G * R_M, abs=stiction_Nm())

@@ -56,18 +56,21 @@ def test_model_card_and_a_model_file(tmp_path):
     """Issue 25: model_card() is `model show --json`; Twin(model=...) takes a
     model file that overrides constants of the card (here the bearing
     friction: three times the card's holds the free flange against a torque
-    that turns the card's module, manual 3.1)."""
+    that turns the card's module, manual 3.1). The card's breakaway is
+    Coulomb + Stribeck excess (0.012 N m) with cogging up to 0.005 N m on
+    top: 0.02 N m turns it; tripled Coulomb (0.024, outside the card's
+    range, so the file gives a range) holds."""
     card = sreh_twin.model_card()["constants"]
     assert card["coulomb_friction"]["unit"] == "N m"
     lo, hi = card["coulomb_friction"]["range"]
     assert lo <= card["coulomb_friction"]["value"] <= hi
     stiff = tmp_path / "stiff_bearing.yaml"
-    stiff.write_text("constants:\n  coulomb_friction: 0.012\n")
-    assert sreh_twin.model_card(stiff)["constants"]["coulomb_friction"]["value"] == 0.012
+    stiff.write_text("constants:\n  coulomb_friction: {value: 0.024, range: [0.005, 0.03]}\n")
+    assert sreh_twin.model_card(stiff)["constants"]["coulomb_friction"]["value"] == 0.024
     turned = {}
     for name, model in (("card", None), ("stiff", stiff)):
         twin = sreh_twin.Twin(model=model)
-        twin.external_torque(0.009)
+        twin.external_torque(0.02)
         twin.run_cycles(50)
         turned[name] = abs(twin.state()["position_deg"])
     assert turned["card"] > 1.0 and turned["stiff"] < 0.01

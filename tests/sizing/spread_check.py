@@ -4,10 +4,11 @@ for targets a few counts apart, `size` reports its median and p95 in the
 text, the JSON and the report; where a window is never held for good, all
 three say so and why.
 
-usage: spread_check.py SREH_TWIN [--expect-chaotic] SIZE_ARGS...
+usage: spread_check.py SREH_TWIN [--expect-chaotic] [--expect-never-held] SIZE_ARGS...
 
-With --expect-chaotic the case must spread by more than 1 ms (the issue's
-10 deg, 15-count window at 15000 g cm^2). Prints PASS at the end.
+With --expect-chaotic the case must spread by more than 1 ms; with
+--expect-never-held some move must not hold its window (and the outputs
+must say why). Prints PASS at the end.
 """
 import html
 import json
@@ -18,8 +19,10 @@ import tempfile
 from size_check import fail, run_size
 
 TWIN = sys.argv[1]
+FLAGS = ("--expect-chaotic", "--expect-never-held")
 EXPECT_CHAOTIC = "--expect-chaotic" in sys.argv[2:]
-ARGS = [a for a in sys.argv[2:] if a != "--expect-chaotic"]
+EXPECT_NEVER_HELD = "--expect-never-held" in sys.argv[2:]
+ARGS = [a for a in sys.argv[2:] if a not in FLAGS]
 
 
 def run(args):
@@ -41,6 +44,8 @@ if s["chaotic"] != (spread > 1e-3):
     fail(f"chaotic {s['chaotic']} but the spread is {spread * 1e3:.2f} ms")
 if EXPECT_CHAOTIC and not s["chaotic"]:
     fail(f"expected a spread above 1 ms, got {spread * 1e3:.2f} ms")
+if EXPECT_NEVER_HELD and s["never_held"] == 0:
+    fail("expected a window that some move never holds")
 b = s["settling_s"]
 if not b["lo"] <= b["median"] <= b["p95"] <= b["hi"]:
     fail(f"settling band out of order: {b}")
@@ -56,7 +61,7 @@ elif "settling spread   within" not in text.stdout or "the single figures hold" 
 if s["never_held"] > 0:
     if not s["explanation"] or "friction" not in s["explanation"] or "encoder" not in s["explanation"]:
         fail("a window never held without the mechanism")
-    if s["explanation"] not in text.stdout or html.escape(s["explanation"], quote=False) not in page:
+    if s["explanation"] not in text.stdout or s["explanation"] not in html.unescape(page):
         fail("the mechanism is not in the text and on the page")
 print(f"PASS spread {spread * 1e3:.2f} ms, median {b['median'] * 1e3:.1f} ms, p95 {b['p95'] * 1e3:.1f} ms, "
       f"{s['never_held']} of {s['moves']} moves not held")

@@ -30,7 +30,8 @@ for name in ["torsional_stiffness", "torsional_damping", "coulomb_friction", "st
     assert c["unit"] and c["source"], name
 PY
 
-printf 'constants:\n  coulomb_friction: 0.012\n' > "$dir/friction.yaml"
+# Three times the card's 0.008 N m, outside the card's range: the file gives its own.
+printf 'constants:\n  coulomb_friction: {value: 0.024, range: [0.005, 0.03]}\n' > "$dir/friction.yaml"
 args=(size --angle-deg 90 --load-gcm2 1000 --speed-dps 1000 --json)
 "$bin" "${args[@]}" > "$dir/card_size.json"
 "$bin" "${args[@]}" --model "$dir/friction.yaml" > "$dir/friction_size.json"

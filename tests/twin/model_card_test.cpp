@@ -70,14 +70,14 @@ TEST(ModelCard, TheCardSetsTheTwinsStructs) {
 }
 
 TEST(ModelCard, AFileOverridesASubsetAndKeepsTheRest) {
-  TempFile f("constants:\n  coulomb_friction: 0.012\n  torsional_stiffness: {value: 420, source: \"measured\"}\n");
+  TempFile f("constants:\n  coulomb_friction: 0.006\n  torsional_stiffness: {value: 2900, source: \"measured\"}\n");
   const ModelCard card = apply_model_file(default_model_card(), f.path);
-  EXPECT_DOUBLE_EQ(card.find("coulomb_friction")->value, 0.012);
-  EXPECT_DOUBLE_EQ(card.find("torsional_stiffness")->value, 420);
+  EXPECT_DOUBLE_EQ(card.find("coulomb_friction")->value, 0.006);
+  EXPECT_DOUBLE_EQ(card.find("torsional_stiffness")->value, 2900);
   EXPECT_EQ(card.find("torsional_stiffness")->source, "measured");
   EXPECT_EQ(card.find("torsional_stiffness")->unit, "N m/rad");
   EXPECT_EQ(card.find("winding_resistance")->value, default_model_card().find("winding_resistance")->value);
-  EXPECT_DOUBLE_EQ(card.module_model().mechanics.coulomb_friction_Nm, 0.012);
+  EXPECT_DOUBLE_EQ(card.module_model().mechanics.coulomb_friction_Nm, 0.006);
 }
 
 TEST(ModelCard, ARangeGivenWithTheValueLetsAModuleLieOutside) {
@@ -96,9 +96,11 @@ TEST(ModelCard, BadFilesNameFileLineAndConstant) {
   EXPECT_NE(error_of("constants:\n  loop_delay: 2.5\n").find("whole number"), std::string::npos);
   EXPECT_NE(error_of("constants:\n  loop_delay: {value: 6, range: [0, 10]}\n").find("at most 4 control periods"),
             std::string::npos);
+  EXPECT_NE(error_of("constants:\n  gear_efficiency: {value: 1.1, range: [0.9, 1.2]}\n").find("gear_efficiency must be at most 1"),
+            std::string::npos);
   EXPECT_NE(error_of("constants:\n  coulomb_friction: abc\n").find("finite number, got 'abc'"), std::string::npos);
   EXPECT_NE(error_of("constants:\n  coulomb_friction: .nan\n").find("finite number"), std::string::npos);
-  EXPECT_NE(error_of("constants:\n  coulomb_friction: 0.004\n  coulomb_friction: 0.005\n").find("given twice"),
+  EXPECT_NE(error_of("constants:\n  coulomb_friction: 0.006\n  coulomb_friction: 0.007\n").find("given twice"),
             std::string::npos);
   EXPECT_NE(error_of("constant:\n  coulomb_friction: 0.004\n").find("unknown key 'constant'"), std::string::npos);
   EXPECT_NE(error_of("constants: [1, 2]\n").find("'constants' must be a mapping"), std::string::npos);

@@ -31,7 +31,7 @@ TEST(Thermal, RisesWithLossAndSettlesAtAmbientPlusPRth) {
 
 TEST(Thermal, CoolsBackToAmbient) {
   Thermal t(ThermalSpec{25.0, 1.0}, default_module_model().thermal);
-  for (int i = 0; i < 600; ++i) t.step(1.0, 1.0);
+  for (int i = 0; i < 600; ++i) t.step(1.0, 8.0); // a stalled motor at the current limit and more
   EXPECT_GT(t.sensor_C(), 50.0);
   for (int i = 0; i < 40000; ++i) t.step(1.0, 0.0);
   EXPECT_NEAR(t.sensor_C(), 25.0, 1e-6);
@@ -45,23 +45,26 @@ TEST(Thermal, TimeScaleMultipliesRates) {
   EXPECT_NEAR(fast.sensor_C(), slow.sensor_C(), 1e-9);
 }
 
-// A-TWIN-THERMAL: heavy fast cycling (~1.2 W: copper 1.06 W measured for
-// 180 deg moves with 15000 g cm^2 and no dwell, plus speed loss) crosses 70
-// and 75 degC within minutes; normal duty (~0.15 W) stays far below.
-TEST(Thermal, HeavyDutyWarnsAndTripsInMinutesNormalDutyDoesNot) {
-  Thermal heavy(ThermalSpec{25.0, 1.0}, default_module_model().thermal);
-  int warn_s = -1, error_s = -1;
-  for (int s = 1; s <= 1800; ++s) {
-    heavy.step(1.0, 1.2);
-    if (warn_s < 0 && heavy.sensor_C() >= 70.0) warn_s = s;
-    if (error_s < 0 && heavy.sensor_C() >= 75.0) error_s = s;
+// A-TWIN-THERMAL-1 (issue 35): heavy fast cycling (~1.2 W: copper and
+// friction of 180 deg moves with 15000 g cm^2 and no dwell) settles ~11 K
+// above the room, far below the 70 degC warning at 25 degC; only a hot
+// machine (62 degC) takes the same duty past 70 degC, within the housing's
+// half hour, and still not to 75 degC. Normal duty (~0.15 W) barely warms.
+TEST(Thermal, HeavyDutyWarnsOnlyInAHotMachine) {
+  const double heavy_W = 1.2;
+  Thermal room(ThermalSpec{25.0, 1.0}, default_module_model().thermal);
+  EXPECT_LT(room.steady_winding_C(heavy_W), 40.0);
+  Thermal hot(ThermalSpec{62.0, 1.0}, default_module_model().thermal);
+  int warn_s = -1;
+  for (int s = 1; s <= 7200 && warn_s < 0; ++s) {
+    hot.step(1.0, heavy_W);
+    if (hot.sensor_C() >= 70.0) warn_s = s;
   }
   EXPECT_GT(warn_s, 60);
-  EXPECT_LT(warn_s, 600);
-  EXPECT_GT(error_s, warn_s);
-  EXPECT_LT(error_s, 900);
+  EXPECT_LT(warn_s, 3600);
+  EXPECT_LT(hot.steady_winding_C(heavy_W), 75.0);
   Thermal normal(ThermalSpec{25.0, 1.0}, default_module_model().thermal);
-  EXPECT_LT(normal.steady_winding_C(0.15), 40.0);
+  EXPECT_LT(normal.steady_winding_C(0.15), 27.0);
 }
 
 } // namespace

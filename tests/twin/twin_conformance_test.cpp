@@ -77,7 +77,7 @@ TEST(TwinConformance, AmbientChangeHeatsTheModule) {
   c.thermal.time_scale = 2000;
   Twin twin(c);
   twin.set_ambient_C(60.0);
-  for (int i = 0; i < 500; ++i) twin.run_cycle(); // 1 s, x2000
+  for (int i = 0; i < 1000; ++i) twin.run_cycle(); // 2 s, x2000: 67 min, twice the housing's time constant
   EXPECT_GT(twin.telemetry().temperature_C, 50.0);
   EXPECT_LT(twin.telemetry().temperature_C, 60.0 + 1e-9);
 }

@@ -102,28 +102,41 @@ TEST(TwinPhysics, UnknownHeavyLoadGivesTrackingError_7_2) {
 
 // Issue 14: a load configured lighter than it is gets too little
 // acceleration feed-forward and a position loop too fast for its actual
-// velocity loop: it overshoots more than a matched one (manual 3.5.6).
+// velocity loop: it lags and overshoots more than a matched one (manual
+// 3.5.6). At 50 % acceleration, so the stage has the torque to follow: the
+// card's 0.57 N m at the flange (docs/model-card.md, issue 35) is 18 %
+// above M, so at 100 % a load configured 13 % light already runs into the
+// current limit, and a saturated drive lags without overshooting.
 TEST(TwinPhysics, UnderconfiguredLoadOvershootsMore_3_5_6) {
   double overshoot[2] = {0, 0};
-  const double configured[2] = {15000, 13000};
+  double lag[2] = {0, 0};
+  const double configured[2] = {15000, 10000};
   for (int i = 0; i < 2; ++i) {
     TwinConfig c;
     c.load = InertiaLoad{15000};
     c.record_trace = false;
     Twin twin(c);
+    write_raw(twin, 65, 2, 500); // acceleration 50 %
     write_raw(twin, 65, 4, static_cast<uint16_t>(configured[i]));
     const Outcome o = move(twin, 90, 1.0);
     ASSERT_TRUE(o.done) << configured[i];
     for (int k = 0; k < 50; ++k) twin.run_cycle(); // 0.1 s after Done
     overshoot[i] = twin.moves()[0].overshoot_deg;
+    lag[i] = twin.moves()[0].max_tracking_error_deg;
   }
   EXPECT_GT(overshoot[1], 2.0 * overshoot[0]) << overshoot[0] << " vs " << overshoot[1];
   EXPECT_GT(overshoot[1], 0.02);
+  EXPECT_GT(lag[1], 2.0 * lag[0]) << lag[0] << " vs " << lag[1];
 }
 
 // servo.md "Gravity": a horizontal axis with an eccentric mass m at radius r
 // needs m g r cos(angle) of holding torque; the drive's integral action
-// finds it (within bearing friction and cogging, A-TWIN-2, A-TWIN-22, 23).
+// finds it within what holds the flange without the motor: the rotor's
+// breakaway friction (Coulomb + Stribeck excess, A-TWIN-22), the gear's
+// load-dependent loss on the holding torque (A-TWIN-46) and cogging
+// (A-TWIN-23), all from the card. The moves run at 50 % acceleration: at
+// 100 % the planned torque (M) plus m g r exceeds the stage (issue 35's
+// card has 0.57 N m at the flange).
 TEST(TwinPhysics, HoldingTorqueFollowsMgrCosAngleOnAHorizontalAxis) {
   const double m = 0.2, r = 0.06;
   const double mgr = m * 9.81 * r;
@@ -132,17 +145,23 @@ TEST(TwinPhysics, HoldingTorqueFollowsMgrCosAngleOnAHorizontalAxis) {
   c.mounting_tilt_deg = 90.0;
   c.record_trace = false;
   Twin twin(c);
+  const MechanicsConstants& k = c.module.mechanics;
+  const double stiction_Nm = k.coulomb_friction_Nm + k.stribeck_excess_Nm + (1.0 - k.gear_efficiency) * mgr +
+                             k.cogging_torque_Nm;
+  ASSERT_GT(stiction_Nm, 0.0);
+  ASSERT_LT(stiction_Nm, 0.25 * mgr); // the check below still sees gravity's cosine
   const uint16_t load = static_cast<uint16_t>(std::lround(twin.load_inertia_gcm2()));
   write_raw(twin, 64, 4, load); // the hold before the first move (A-SM-6)
   write_raw(twin, 65, 4, load);
+  write_raw(twin, 65, 2, 500); // acceleration 50 %
   for (double deg : {45.0, 90.0, 0.0, -60.0}) {
     const Outcome o = move(twin, deg, 1.0);
     ASSERT_TRUE(o.done) << deg << " deg, error " << int{o.error_code};
     ProcessDataOut pd = twin.pd_out();
     pd.move = false;
     twin.set_pd_out(pd);
-    for (int k = 0; k < 100; ++k) twin.run_cycle(); // 0.2 s holding
-    EXPECT_NEAR(twin.plant().applied_torque_Nm(), -mgr * std::cos(deg_to_rad(deg)), 0.012) << deg << " deg";
+    for (int n = 0; n < 100; ++n) twin.run_cycle(); // 0.2 s holding
+    EXPECT_NEAR(twin.plant().applied_torque_Nm(), -mgr * std::cos(deg_to_rad(deg)), stiction_Nm) << deg << " deg";
   }
 }
 
@@ -255,21 +274,27 @@ TEST(TwinPhysics, HeavyTightSettlesTwiceAsLongAsLightLoose_3_5_7) {
 
 // Manual 3.5.7 / 7.3 115.3 ("vibration ... especially in combination with
 // large loads"): with no waiting time the heaviest load is found good in a
-// 0.05 deg window at the end of the trajectory, the flange's swing pulls
-// the rotor out of it and 115.3 follows; in_window_s records when it
-// entered the window for good (servo.md).
+// 45-count (0.031 deg) window at the end of the trajectory, the flange's
+// swing pulls the rotor out of it (71 counts past the target with the
+// issue-35 card) and 115.3 follows; the rotor sticks there in the friction
+// band until the integral breaks it loose, and is back ~0.13 s after the
+// end of the trajectory: in_window_s records when it entered the window for
+// good (servo.md). (The former 0.05 deg window is not left at this
+// target, only at some a few counts away: the planetary's spring swings
+// less; docs/settling.md.)
 TEST(TwinPhysics, HeavyLoadLeavesWindowAfterDoneNoWait_3_5_7) {
   TwinConfig c;
   c.load = InertiaLoad{15000};
   c.record_trace = false;
   Twin twin(c);
   write_raw(twin, 65, 4, 15000);
-  write_raw(twin, 65, 5, 73); // 0.0501 deg
+  write_raw(twin, 65, 5, 45); // 0.0309 deg
   write_raw(twin, 65, 6, 0);  // no waiting time
   ASSERT_TRUE(move(twin, 90, 1.0).done);
   EXPECT_EQ(twin.moves()[0].settling_s.value_or(-1.0), 0.0);
-  for (int k = 0; k < 50; ++k) twin.run_cycle(); // 0.1 s holding
+  for (int k = 0; k < 150; ++k) twin.run_cycle(); // 0.3 s holding
   EXPECT_NE(twin.telemetry().warning_code, 0);
+  EXPECT_GT(twin.moves()[0].overshoot_deg, 0.0309);
   EXPECT_GT(twin.moves()[0].in_window_s.value_or(0.0), 0.0);
 }
 

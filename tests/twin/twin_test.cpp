@@ -187,15 +187,20 @@ TEST(Twin, BlockedFlangeHoldsAndGivesTrackingError_7_2_114_5) {
   twin.set_flange_blocked(true);
   const double held_rad = twin.plant().angle_rad();
   // The clamp is a stiff MuJoCo constraint (A-TWIN-30), not an overwrite:
-  // it gives by far less than one wire count (9.6e-5 rad) while the motor pushes.
+  // it gives by far less than one wire count (9.6e-5 rad) while the motor
+  // pushes. The largest give is the first cycle, while the clamp stops the
+  // moving flange and, through the gear's spring, the rotor: 2.2e-5 rad
+  // with the issue-35 planetary (2500 N m/rad, 7x the former spring, so
+  // the rotor's momentum reaches the clamp within the cycle); below a
+  // quarter of a wire count.
   double max_dev_rad = 0;
   ASSERT_GT(run_until(twin, [&] {
               max_dev_rad = std::max(max_dev_rad, std::abs(twin.plant().angle_rad() - held_rad));
               return twin.pd_in().error;
             }, 500), 0);
-  EXPECT_LT(max_dev_rad, 2e-5);
+  EXPECT_LT(max_dev_rad, 0.25 * 9.6e-5);
   // Only the constraint's give moves it: at most ~1 deg/s against the rotor
-  // winding the compliance (held within 2e-5 rad above).
+  // winding the compliance (held within a quarter count above).
   EXPECT_NEAR(twin.plant().velocity_rad_s(), 0.0, 0.02);
   EXPECT_NE(twin.telemetry().error_code & 0x08, 0);
   EXPECT_FALSE(twin.moves().back().completed());
@@ -279,10 +284,18 @@ TwinConfig heavy_config(double time_scale) {
 
 // A-TWIN-THERMAL: sustained fast cycling with the heaviest load reaches the
 // temperature warning (manual 2.4 warning bit 7, 115.1) and then the
-// temperature error (error bit 5, 114.3) within minutes of thermal time.
-// time_scale 20: 30 s simulated = 10 min thermal.
+// temperature error (error bit 5, 114.3). With the issue-35 card this duty
+// settles ~11 K above the room (docs/model-card.md "Thermal steady state"),
+// so it overheats a hot machine: 66 degC ambient, as the scenario
+// error_114_3_overtemperature. The winding (36 s) alone adds at most
+// ~4 K over the housing: the warning comes after the first minute, and the
+// trip needs the housing (30 min) to warm by ~5 K, so it takes more than
+// 10 min and less than three housing time constants.
+// time_scale 100: 60 s simulated = 100 min thermal.
 TEST(Twin, HeavyFastCyclingOverheats_7_2_114_3) {
-  Twin twin(heavy_config(20.0));
+  TwinConfig c = heavy_config(100.0);
+  c.thermal.ambient_C = 66.0;
+  Twin twin(c);
   const uint8_t load[2] = {static_cast<uint8_t>(15000 >> 8), static_cast<uint8_t>(15000 & 0xFF)};
   ASSERT_TRUE(twin.isdu_write(65, 4, load).ok());
   int warn = -1;
@@ -296,10 +309,11 @@ TEST(Twin, HeavyFastCyclingOverheats_7_2_114_3) {
   });
   ASSERT_GT(warn, 0);
   EXPECT_GE(warn_C, 70.0);
-  EXPECT_GT(warn * 0.002 * 20.0, 60.0); // not within the first minute
+  EXPECT_GT(warn * 0.002 * 100.0, 60.0); // not within the first minute
   ASSERT_GT(error, warn);
   EXPECT_GT(twin.telemetry().temperature_C, 74.9); // cooling since the error tick
-  EXPECT_LT(error * 0.002 * 20.0, 600.0); // within 10 min
+  EXPECT_GT(error * 0.002 * 100.0, 600.0);  // the housing has to warm
+  EXPECT_LT(error * 0.002 * 100.0, 5400.0); // within three housing time constants
   EXPECT_EQ(twin.telemetry().state, State::ErrorOff); // manual 2.4: the motor is switched off
 }
 
