@@ -30,6 +30,7 @@ SizingRequest single_request(const CycleRequest& rq, const SetPlan& p, double dw
   s.parameter_set = p.set;
   s.thermal_margin_K = rq.thermal_margin_K;
   s.handshake_cycles = rq.handshake_cycles;
+  s.on_simulation = rq.on_simulation;
   return s;
 }
 
