@@ -26,7 +26,12 @@
     if (!m) return;
     try {
       const h = JSON.parse(decodeURIComponent(m[1]));
-      if (h.state) state = h.state;
+      // Keys the link leaves out (an older link, a hand-made one) keep the project's.
+      if (h.state) state = Object.assign(JSON.parse(JSON.stringify(window.STUDIO.project)), h.state);
+      for (const p of state.parts) {
+        if (p.payload === undefined) p.payload = false;
+        for (const key of ['at_m', 'rpy_deg']) if (!Array.isArray(p[key])) p[key] = [0, 0, 0];
+      }
       if (Array.isArray(h.pins)) pins = h.pins.slice(0, MAX_PINS).map((s) => ({state: s, answer: null}));
     } catch (e) { /* a broken link: keep the project */ }
   }
