@@ -59,6 +59,9 @@ struct CycleRequest {
   // progress bar, the CLI's progress line); from several threads at once
   // with --uncertainty. Empty: nothing.
   std::function<void()> on_simulation;
+  // Threads for the searches of the recommended sets (one set's search per
+  // thread, issue 37); the answer does not depend on it.
+  int threads = 1;
 };
 
 // What one listed segment did in the last repetition.

@@ -184,6 +184,7 @@ SizeOutcome run_cycle(const SizeOptions& a) {
     rq.world.model_file = std::filesystem::absolute(a.model).lexically_normal().string(); // --emit-scenario names it
   }
   rq.keep_trace = !a.report.empty();
+  rq.threads = io::usable_cpus(); // the sets' searches side by side (issue 37); the same answer
   out.cycle_result = size_cycle(rq);
   std::optional<UncertaintyResult> u;
   if (a.uncertainty) {

@@ -27,6 +27,7 @@ sizing::CycleRequest cycle_request(const Json& state) {
 CycleSizing size_cycle_state(const Json& state, const std::function<void()>& on_simulation) {
   CycleSizing c{cycle_request(state), {}, std::nullopt};
   c.request.on_simulation = on_simulation;
+  c.request.threads = io::usable_cpus(); // as size --cycle
   c.result = sizing::size_cycle(c.request);
   if (normalised_state(state)["uncertainty"].get<bool>()) {
     c.uncertainty = sizing::cycle_uncertainty(c.request, sizing::plan_sets(c.request), c.result.settings,
