@@ -238,6 +238,7 @@ SizeOutcome run_size_or_cycle(const SizeOptions& a) {
   if (!a.cycle.empty()) return run_cycle(a);
   SizeOutcome out;
   out.request = make_request(a);
+  out.request.search_threads = io::usable_cpus(); // the gentlest search looks one candidate ahead (issue 37); the same answer
   std::optional<UncertaintyResult> u;
   if (a.uncertainty) { // the answer must hold in every sample (A-SIZE-UNC-3)
     UncertainSizing us = size_with_uncertainty(out.request, card_of(out.request.world), a.samples,

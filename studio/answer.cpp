@@ -101,6 +101,7 @@ sizing::SizingRequest sizing_request(const Json& state) {
   rq.world.load = load.load;
   rq.world.mounting_tilt_deg = load.mounting_tilt_deg.value_or(0.0);
   rq.keep_trace = true; // as `size --report`: the plots need the trace
+  rq.search_threads = io::usable_cpus(); // as `size`
   return rq;
 }
 
