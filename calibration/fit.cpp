@@ -21,6 +21,7 @@ constexpr double kStrongCorrelation = 0.95;    // |r| above this: the data canno
 constexpr double kAtBound = 0.001;             // within 0.1 % of the range from a bound: at it
 constexpr int kLikelihoodProbes = 5;           // step-outs per side, each twice the last
 constexpr unsigned kRefitSeed = 36;            // the refit check's noise (A-CAL-12)
+constexpr double kIdentifiedHalfWidth = 0.10;  // after the refit check: identified within +-10 % (issue 36)
 // Logs longer than twice this are first fitted on their first kCoarse_s
 // (shared out in proportion to their lengths; the plan is ~9 s), then on
 // the whole from there (A-CAL-8).
@@ -238,6 +239,12 @@ void refit_check(const std::vector<FitCase>& cases, const ModelCard& start, cons
     } else {
       f.ci95_lo = std::max(c->range_lo, f.ci95_lo - distance);
       f.ci95_hi = std::min(c->range_hi, f.ci95_hi + distance);
+      const double half = 0.5 * (f.ci95_hi - f.ci95_lo);
+      if (f.identified && half > kIdentifiedHalfWidth * std::abs(f.value)) {
+        f.identified = false;
+        f.note = fmt::format("with the refit's distance its interval is +-{:.0f} %, wider than {:.0f} %",
+                             100 * half / std::abs(f.value), 100 * kIdentifiedHalfWidth);
+      }
     }
   }
 }
@@ -429,6 +436,14 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
   // Adequacy (A-CAL-10): the rms against the log's own floor.
   result.noise_counts = options.noise_counts ? *options.noise_counts : estimated_noise_counts(cases);
   if (options.refit_check) refit_check(cases, start, options, names, result);
+  // A constant not identified has no interval to trust (issue 36): it
+  // reports the card's range, which holds any module of the type.
+  for (FittedConstant& f : result.constants) {
+    if (f.identified) continue;
+    const ModelConstant* c = start.find(f.name);
+    f.ci95_lo = std::min(c->range_lo, f.ci95_lo);
+    f.ci95_hi = std::max(c->range_hi, f.ci95_hi);
+  }
   result.floor_rms_deg = residual_floor_deg(result.noise_counts);
   result.adequate = result.rms_residual_deg <= kInadequateRatio * result.floor_rms_deg;
   if (!result.adequate) {
