@@ -203,8 +203,9 @@ std::vector<std::vector<double>> start_points(const Unknowns& u, const std::vect
 
 // The refit check (A-CAL-12): a log the fitted card records, with the
 // log's noise, fitted again from `start` (one start, no probes). A constant
-// whose refit lands outside its interval is not identified and gets the
-// card's range; otherwise its interval widens by the refit's distance.
+// whose refit lands outside its interval is not identified; otherwise its
+// interval widens by the refit's distance, and an identified one must then
+// stay within +-kIdentifiedHalfWidth.
 void refit_check(const std::vector<FitCase>& cases, const ModelCard& start, const FitOptions& options,
                  const std::vector<std::string>& names, FitResult& result) {
   FitOptions o = options;
@@ -227,9 +228,7 @@ void refit_check(const std::vector<FitCase>& cases, const ModelCard& start, cons
     const double r = refit.constants[i].value;
     f.refit = r;
     const double distance = std::abs(r - f.value);
-    if (r < f.ci95_lo || r > f.ci95_hi) {
-      f.ci95_lo = c->range_lo;
-      f.ci95_hi = c->range_hi;
+    if (r < f.ci95_lo || r > f.ci95_hi) { // fit_model then reports the card's range
       if (f.note.empty()) {
         f.note = fmt::format("a refit of a log the fitted model records ends {:+.1f} % away, outside the interval: "
                              "the error on this log is larger than the interval says; the card's range stands",
