@@ -15,7 +15,7 @@ from collections import defaultdict
 
 
 def median_abs(values):
-    return statistics.median(abs(v) for v in values) if values else float("nan")
+    return f"{statistics.median(abs(v) for v in values):.1f} %" if values else "-"
 
 
 def table(title, groups):
@@ -32,11 +32,11 @@ def table(title, groups):
         ident_missed = sum(r["covered"] == "0" for r in ident)
         errs_ident = [float(r["error_pct"]) for r in ident]
         errs_all = [float(r["error_pct"]) for r in rows]
-        largest = max((abs(e) for e in errs_ident), default=float("nan"))
-        name = key if isinstance(key, str) else " ".join(str(k) for k in key)
+        largest = f"{max(abs(e) for e in errs_ident):.1f} %" if errs_ident else "-"
+        name = key if isinstance(key, str) else f"{key[0]:g} g cm^2, noise {key[1]:g}: {key[2]}"
         print(f"| {name} | {n} | {covered} ({100 * covered / n:.0f} %) | {before} ({100 * before / n:.0f} %) | "
               f"{len(ident)} | {ident_missed} | "
-              f"{median_abs(errs_ident):.1f} % | {largest:.1f} % | {median_abs(errs_all):.1f} % |")
+              f"{median_abs(errs_ident)} | {largest} | {median_abs(errs_all)} |")
 
 
 def main(path):
@@ -52,7 +52,7 @@ def main(path):
     by_load = defaultdict(list)
     overall = defaultdict(list)
     for r in rows:
-        by_load[(f'{float(r["load_gcm2"]):g} g cm^2,', f'noise {float(r["noise_counts"]):g}:', r["constant"])].append(r)
+        by_load[(float(r["load_gcm2"]), float(r["noise_counts"]), r["constant"])].append(r)
         overall[r["constant"]].append(r)
     table("Per load and noise", by_load)
     table("Over every load and noise", overall)
