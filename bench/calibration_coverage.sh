@@ -8,8 +8,8 @@
 # threads; each fit is written as it ends, so a stopped run keeps its
 # truths (truth by truth, every load and noise).
 #   bench/calibration_coverage.sh BUILD [TRUTHS [FIRST]] > summary.md
-# (BUILD: the build folder; TRUTHS 20 by default: 120 fits, about 50 min
-# of CPU; the CSV goes to BUILD/calibration_coverage.csv.)
+# (BUILD: the build folder; TRUTHS 20 by default: 120 fits, about 90 min
+# of CPU at a median 43 s a fit; the CSV goes to BUILD/calibration_coverage.csv.)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 build=$1
