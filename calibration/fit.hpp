@@ -36,6 +36,14 @@ struct FitOptions {
   // The logged position's noise, wire counts (one sigma), as stated by the
   // user; unset: estimated from the log (calibration/fit_adequacy.hpp).
   std::optional<double> noise_counts;
+  // The refit check (A-CAL-12, calibration/fit_refit.hpp): a log the fitted
+  // model records is fitted again from the same start, one start; where it
+  // lands outside a constant's interval the constant is not identified and
+  // its interval is the card's range.
+  bool refit_check = true;
+  // The likelihood probes widening the intervals (A-CAL-4); off in the refit
+  // check's own fit, which needs the values only.
+  bool likelihood_probes = true;
   // Called after every solver iteration with the iterations so far (over
   // the restarts) and max_iterations: the CLI's progress line (issue 29).
   std::function<void(int iterations, int max_iterations)> progress;
@@ -53,6 +61,10 @@ struct FittedConstant {
   bool at_bound = false;    // ends at a bound of its range
   bool starts_disagree = false;    // another start ended as well outside the curvature's interval
   bool likelihood_widened = false; // the interval was widened along the cost (A-CAL-4)
+  // Before the refit check (A-CAL-12): the curvature's interval widened by
+  // the likelihood probes and the starts; and where the refit landed.
+  double likelihood_lo = 0, likelihood_hi = 0;
+  std::optional<double> refit{};
 };
 
 struct FitResult {

@@ -6,11 +6,13 @@
 
 namespace sreh {
 
-MotorDrive::MotorDrive(const MotorModel& motor, double control_period_s, double physics_dt_s)
+MotorDrive::MotorDrive(const MotorModel& motor, const MotorModel& firmware, double control_period_s,
+                       double physics_dt_s)
     : motor_(motor),
+      firmware_(firmware),
       control_period_s_(control_period_s),
-      kp_V_per_A_(motor.winding_inductance_H * motor.current_loop_bandwidth_rad_s),
-      ki_V_per_As_(motor.winding_resistance_ohm * motor.current_loop_bandwidth_rad_s),
+      kp_V_per_A_(firmware.winding_inductance_H * firmware.current_loop_bandwidth_rad_s),
+      ki_V_per_As_(firmware.winding_resistance_ohm * firmware.current_loop_bandwidth_rad_s),
       decay_(std::exp(-motor.winding_resistance_ohm * physics_dt_s / motor.winding_inductance_H)),
       mean_factor_(motor.winding_inductance_H / motor.winding_resistance_ohm / physics_dt_s * (1.0 - decay_)) {}
 
@@ -21,9 +23,11 @@ void MotorDrive::control(double torque_ref_Nm, bool enabled, double rotor_speed_
     u_V_ = 0;
     return;
   }
-  const double ke = motor_.torque_constant_Nm_per_A;
+  // The firmware's view: its kt for the current reference and the back-EMF
+  // feed-forward, its current limit.
+  const double ke = firmware_.torque_constant_Nm_per_A;
   const double emf_V = ke * rotor_speed_rad_s;
-  const double limit_A = motor_.current_limit_A;
+  const double limit_A = firmware_.current_limit_A;
   const double i_ref = std::clamp(torque_ref_Nm / ke, -limit_A, limit_A);
   const double err = i_ref - i_A_;
   const double u_unsat = kp_V_per_A_ * err + integral_V_ + emf_V; // back-EMF feed-forward

@@ -8,7 +8,9 @@
 // back-EMF of the sub-step. The speed limit of manual 3.5.3 follows from the
 // voltage limit: at speed w no more current than (U - ke w) / R flows.
 // The controller's clock is the drive's; the sub-steps are the simulator's.
-// Constants: the model card (A-MOTOR-1..4, A-CTRL-6).
+// Constants: the model card (A-MOTOR-1..4, A-CTRL-6); the controller is
+// tuned on the firmware's motor (nominal constants), the winding runs on
+// the module's (issue 36, A-CAL-11).
 #pragma once
 #include "device_logic/motor_model.hpp"
 
@@ -16,7 +18,9 @@ namespace sreh {
 
 class MotorDrive {
  public:
-  MotorDrive(const MotorModel& motor, double control_period_s, double physics_dt_s);
+  // `motor`: the module's winding and torque constant; `firmware`: what
+  // the controller is tuned on (twin/firmware_motor.hpp).
+  MotorDrive(const MotorModel& motor, const MotorModel& firmware, double control_period_s, double physics_dt_s);
 
   // Once per control period: the current reference from `torque_ref_Nm`
   // (clamped to the current limit), the rotor speed and the bus voltage now.
@@ -34,10 +38,11 @@ class MotorDrive {
   void reset() { i_A_ = 0; integral_V_ = 0; u_V_ = 0; mean_i_A_ = 0; mean_torque_Nm_ = 0; }
 
  private:
-  MotorModel motor_;
+  MotorModel motor_;    // the plant's
+  MotorModel firmware_; // the controller's
   double control_period_s_;
-  double kp_V_per_A_;  // L w_c
-  double ki_V_per_As_; // R w_c
+  double kp_V_per_A_;  // L w_c (the firmware's L)
+  double ki_V_per_As_; // R w_c (the firmware's R)
   double decay_;       // exp(-R dt / L) over one sub-step
   double mean_factor_; // (L / R) / dt (1 - decay): mean of the exponential over a sub-step
   bool enabled_ = false;

@@ -37,7 +37,8 @@ int require_id(const mjModel* m, mjtObj type, const char* name, const std::strin
 } // namespace
 
 Plant::Plant(const PlantConfig& config)
-    : drive_(config.module.drive.motor, config.module.drive.control_period_s(), config.physics_dt_s),
+    : drive_(config.module.drive.motor, firmware_drive(config.module.drive, config.nominal_motor).motor,
+             config.module.drive.control_period_s(), config.physics_dt_s),
       supply_(config.supply, config.module.supply),
       thermal_(config.thermal, config.module.thermal),
       dt_s_(config.physics_dt_s),

@@ -8,6 +8,7 @@
 #include <variant>
 #include <vector>
 
+#include "twin/firmware_motor.hpp"
 #include "twin/module_model.hpp"
 
 namespace sreh {
@@ -90,6 +91,9 @@ struct WorldSpec {
   // The module's constants: the model card (twin/model_card.hpp), with any
   // --model overrides applied.
   ModuleModel module = default_module_model();
+  // The motor constants the firmware was built for (issue 36, A-CAL-11):
+  // the shipped card's, whatever `module` says (twin/firmware_motor.hpp).
+  NominalMotor nominal_motor = nominal_motor_of(default_module_model().drive.motor);
   bool operator==(const WorldSpec&) const = default;
 };
 

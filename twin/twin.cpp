@@ -55,7 +55,9 @@ TwinRunState first_run_state(const TwinConfig& c) {
 }
 
 Device make_device(const TwinConfig& c) {
-  return c.nvm_image ? Device(c.module.drive, *c.nvm_image) : Device(c.module.drive);
+  // The firmware is built for the nominal motor, not the module's (A-CAL-11).
+  const DriveModel drive = firmware_drive(c.module.drive, c.nominal_motor);
+  return c.nvm_image ? Device(drive, *c.nvm_image) : Device(drive);
 }
 
 } // namespace
@@ -205,7 +207,7 @@ void Twin::power_cycle() {
 
 void Twin::replace_device() {
   power_off();
-  impl_->device = Device(impl_->config.module.drive); // factory-new, as delivered ...
+  impl_->device = Device(firmware_drive(impl_->config.module.drive, impl_->config.nominal_motor)); // factory-new, as delivered ...
   impl_->device.power_off();    // ... and mounted unpowered
   power_on();
 }

@@ -20,6 +20,28 @@ inline Scenario plan_scenario(double load_gcm2) {
   return parse_scenario_text(calibration_plan_yaml(p), "plan.yaml", "");
 }
 
+// A log that heats the winding (A-CAL-9): the plan's parameter sets, then
+// 18 fast moves between -170 and +170 deg at set 1 (3000 deg/s, full
+// acceleration) with the temperature read after each, the twin's thermal
+// clock `time_scale` times fast. On the card (winding 12 J/K, 3 K/W: 36 s)
+// at 20 times: 6 s of moves, 2 minutes of heating, about 25.5 to 29 degC.
+// The plan itself (mostly holds) heats by 1 degC in that time.
+inline Scenario heating_scenario(double load_gcm2, double time_scale) {
+  PlanRequest p;
+  p.load_gcm2 = load_gcm2;
+  std::string y = calibration_plan_yaml(p);
+  const std::size_t first_move = y.find("  - pd: {target_deg:");
+  y.resize(first_move); // the sets, motor on and the first hold
+  for (int k = 0; k < 18; ++k) {
+    y += std::string("  - pd: {target_deg: ") + (k % 2 == 0 ? "170" : "-170") + ", parameter_set: 1, move: 1}\n";
+    y += "  - wait_until: {state: Done, within_s: 5}\n  - pd: {move: 0}\n  - wait_s: 0.02\n  - isdu_read: {index: 112}\n";
+  }
+  y += "  - pd: {motor_on: 0}\n  - wait_s: 0.02\n";
+  Scenario s = parse_scenario_text(y, "heating.yaml", "");
+  s.world.thermal.time_scale = time_scale;
+  return s;
+}
+
 // The master log of `scenario` run on a module with `card`, the polled
 // temperatures on the next row as `run --master-log` writes them; with a
 // seed, one wire count of uniform noise added to every logged position.
