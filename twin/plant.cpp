@@ -88,6 +88,7 @@ void Plant::adopt_model(BuiltModel built) {
   data_.reset(mj_makeData(m));
   mj_forward(m, data_.get());
   rotor_inertia_kgm2_ = m->dof_armature[rotor_dof_];
+  twist_armature_kgm2_ = m->dof_armature[twist_dof_];
   flange_inertia_kgm2_ = data_->qM[m->dof_Madr[twist_dof_]];
 }
 
@@ -141,11 +142,31 @@ void Plant::set_drive_train_state() {
   const double reference = std::clamp(twist, -half_band, half_band);
   const bool touching = half_band == 0.0 || std::abs(twist) > half_band;
   m->qpos_spring[twist_qpos_] = reference;
-  m->dof_damping[twist_dof_] = touching ? c.torsional_damping_Nms_per_rad : 0.0;
+  apply_damping(touching ? c.torsional_damping_Nms_per_rad : 0.0, c.viscous_friction_Nms_per_rad);
   const double transmitted_Nm = c.torsional_stiffness_Nm_per_rad * (twist - reference);
   const double w = data_->qvel[rotor_dof_] / c.stribeck_speed_rad_s;
   m->dof_frictionloss[rotor_dof_] = c.coulomb_friction_Nm + c.stribeck_excess_Nm * std::exp(-w * w) +
                                     (1.0 - c.gear_efficiency) * std::abs(transmitted_Nm);
+}
+
+// A-TWIN-47: the mesh damping d and the rotor's drag b, integrated
+// linearly implicitly, (M + h D) a = f - D v, as MuJoCo's Euler does with
+// dof damping, but visible to its constraint solver: the force -D v goes in
+// as an applied force and h D onto the mass matrix's diagonal (armature).
+// MuJoCo 2.2's own dof damping is applied after the constraint forces were
+// solved against M alone; with no load h d is 1.7 times the flange's own
+// inertia, and a stiff constraint on the flange (a blocked flange, a hard
+// stop at speed) then gains energy each step until the numbers blow up.
+void Plant::apply_damping(double twist_damping_Nms_per_rad, double rotor_damping_Nms_per_rad) {
+  mjModel* m = model_.get();
+  mjData* d = data_.get();
+  const double h = m->opt.timestep;
+  m->dof_damping[twist_dof_] = 0.0;
+  m->dof_damping[rotor_dof_] = 0.0;
+  m->dof_armature[twist_dof_] = twist_armature_kgm2_ + h * twist_damping_Nms_per_rad;
+  m->dof_armature[rotor_dof_] = rotor_inertia_kgm2_ + h * rotor_damping_Nms_per_rad;
+  d->qfrc_applied[twist_dof_] -= twist_damping_Nms_per_rad * d->qvel[twist_dof_];
+  d->qfrc_applied[rotor_dof_] -= rotor_damping_Nms_per_rad * d->qvel[rotor_dof_];
 }
 
 const SensorReadings& Plant::step(const MotorCommand& cmd) {

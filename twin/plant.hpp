@@ -126,6 +126,7 @@ class Plant {
   double cogging_torque_Nm(double rotor_angle_rad) const;
   void physics_step(bool enabled);
   void set_drive_train_state();
+  void apply_damping(double twist_damping_Nms_per_rad, double rotor_damping_Nms_per_rad);
 
   MjModelPtr model_;
   MjDataPtr data_;
@@ -148,6 +149,7 @@ class Plant {
   double axis_inertia_kgm2_ = 0;
   double rotor_inertia_kgm2_ = 0;
   double flange_inertia_kgm2_ = 0;
+  double twist_armature_kgm2_ = 0; // the module file's, before apply_damping
   double external_torque_Nm_ = 0;
   double applied_torque_Nm_ = 0;
   double torque_limit_Nm_ = 0;
