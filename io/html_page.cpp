@@ -44,6 +44,8 @@ const char* const kPrintCss =
     "h1,h2,h3{break-after:avoid;page-break-after:avoid}\n"
     "svg,img,canvas{max-width:100%!important;height:auto}\n"
     "button,input,video,.hint{display:none!important}\n"
+    // Issue 37: the sweep's verdict table fits the paper's 186 mm (it was cut after "thermal"): shorter bars.
+    "table.verdicts td.mini{min-width:0}table.verdicts .track{width:40px}table.verdicts td,table.verdicts th{padding:3px 4px}\n"
     "</style>\n";
 
 std::string html_escape(std::string_view text, NonAscii non_ascii) {

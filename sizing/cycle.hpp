@@ -6,6 +6,7 @@
 // written over ISDU, Motor On, moves through process data; the cycle is
 // repeated and the last repetition is the answer (A-SIZE-17..21).
 #pragma once
+#include <functional>
 #include <optional>
 #include <string>
 #include <variant>
@@ -54,6 +55,13 @@ struct CycleRequest {
   int cycles = 3;                 // repetitions simulated (A-SIZE-17)
   std::vector<CycleSegment> segments;
   bool keep_trace = false;        // for the report
+  // Called as each simulation starts, the searches' included (the studio's
+  // progress bar, the CLI's progress line); from several threads at once
+  // with --uncertainty. Empty: nothing.
+  std::function<void()> on_simulation;
+  // Threads for the searches of the recommended sets (one set's search per
+  // thread, issue 37); the answer does not depend on it.
+  int threads = 1;
 };
 
 // What one listed segment did in the last repetition.

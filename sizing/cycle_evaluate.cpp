@@ -211,6 +211,7 @@ void repetition_means(const CycleRun& run, double cycle_s, CycleEvaluation& ev) 
 
 CycleEvaluation evaluate_cycle(const CycleRequest& rq, const CyclePlan& plan, const std::vector<MotionSetting>& settings,
                                bool keep_trace) {
+  if (rq.on_simulation) rq.on_simulation();
   const TwinConfig cfg = sizing_twin_config(rq.world);
   Twin& twin = fresh_twin(cfg); // as make_twin(cfg) builds it (issue 31)
   const Thermal thermal(cfg.thermal, rq.world.module.thermal);

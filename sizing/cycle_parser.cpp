@@ -34,12 +34,13 @@ class CycleParser {
     std::vector<std::string_view> keys = {"name", "description"};
     keys.insert(keys.end(), detail::kWorldTopKeys.begin(), detail::kWorldTopKeys.end());
     keys.insert(keys.end(), {"process_torque_Nm", "tolerance_deg", "wait_ms", "timeout_ms", "thermal_margin_K",
-                             "handshake_cycles", "cycles", "segments"});
+                             "handshake_cycles", "cycles", "segments", "studio"});
     r_.check_map(root, "cycle", keys);
     CycleRequest c;
     c.file = r_.file();
     if (root["name"]) (void)r_.text(root["name"], "name");
     if (root["description"]) (void)r_.text(root["description"], "description");
+    // `studio:`: a studio project's options (docs/studio.md), for `sreh-twin studio` only.
     // The world as in a scenario (A-SCN-32), narrowed to what a sizing takes.
     c.world = world_.read(root, sizing_world_ranges(), {});
     if (root["process_torque_Nm"]) c.process_torque_Nm = torque(root["process_torque_Nm"], "process_torque_Nm", 0.0);

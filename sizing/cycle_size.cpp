@@ -2,6 +2,8 @@
 // run the cycle (A-SIZE-20).
 #include <algorithm>
 #include <cmath>
+#include <exception>
+#include <thread>
 
 #include "device_logic/units.hpp"
 #include "sizing/cycle.hpp"
@@ -30,6 +32,7 @@ SizingRequest single_request(const CycleRequest& rq, const SetPlan& p, double dw
   s.parameter_set = p.set;
   s.thermal_margin_K = rq.thermal_margin_K;
   s.handshake_cycles = rq.handshake_cycles;
+  s.on_simulation = rq.on_simulation;
   return s;
 }
 
@@ -44,23 +47,54 @@ CycleResult size_cycle(const CycleRequest& rq) {
     if (const auto* d = std::get_if<CycleDwell>(&s.what)) dwell_s += d->dwell_s;
     if (std::holds_alternative<CycleMove>(s.what)) ++moves;
   }
-  std::vector<MotionSetting> settings;
+  std::vector<MotionSetting> settings(plan.sets.size());
   std::vector<bool> searched;
-  for (const SetPlan& p : plan.sets) {
+  std::vector<std::size_t> to_search;
+  for (std::size_t k = 0; k < plan.sets.size(); ++k) {
+    const SetPlan& p = plan.sets[k];
     searched.push_back(!p.given);
     if (p.given) {
-      settings.push_back(*p.given);
+      settings[k] = *p.given;
       continue;
     }
     result.recommended = true;
-    if (deg_to_wire_counts(p.longest_move_deg) == 0) { // only zero-length moves: nothing to size
-      settings.push_back(MotionSetting{});
-      continue;
+    if (deg_to_wire_counts(p.longest_move_deg) != 0) to_search.push_back(k); // else only zero-length moves: nothing to size
+  }
+  // Each set's search is independent of the others: on several threads
+  // when given them (issue 37), the results taken in set order as before.
+  std::vector<SizingResult> found(plan.sets.size());
+  const auto search = [&](std::size_t k) {
+    const SetPlan& p = plan.sets[k];
+    found[k] = search_fastest(single_request(rq, p, dwell_s / std::max(1, moves)), p.load_gcm2);
+  };
+  std::vector<std::thread> workers;
+  std::vector<std::exception_ptr> errors(to_search.size());
+  const std::size_t threads = std::min(to_search.size(), static_cast<std::size_t>(std::max(1, rq.threads)));
+  for (std::size_t t = 1; t < threads; ++t) {
+    workers.emplace_back([&, t] {
+      for (std::size_t i = t; i < to_search.size(); i += threads) {
+        try {
+          search(to_search[i]);
+        } catch (...) {
+          errors[i] = std::current_exception();
+        }
+      }
+    });
+  }
+  for (std::size_t i = 0; i < to_search.size(); i += std::max<std::size_t>(1, threads)) {
+    try {
+      search(to_search[i]);
+    } catch (...) {
+      errors[i] = std::current_exception();
     }
-    const SizingRequest single = single_request(rq, p, dwell_s / std::max(1, moves));
-    const SizingResult r = search_fastest(single, p.load_gcm2);
-    result.simulations += r.simulations;
-    settings.push_back(r.evaluation.set.setting);
+  }
+  for (std::thread& w : workers) w.join();
+  for (const std::exception_ptr& e : errors) {
+    if (e) std::rethrow_exception(e);
+  }
+  for (std::size_t k : to_search) {
+    result.simulations += found[k].simulations;
+    settings[k] = found[k].evaluation.set.setting;
   }
   result.evaluation = evaluate_cycle(rq, plan, settings, rq.keep_trace);
   ++result.simulations;

@@ -12,6 +12,8 @@
 //    infeasible too (more torque, more tracking error, more heat): it is
 //    skipped without a run (A-SIZE-10 states this monotonicity).
 #include <algorithm>
+#include <future>
+#include <map>
 #include <cmath>
 #include <optional>
 #include <tuple>
@@ -147,9 +149,13 @@ struct Runner {
     return std::any_of(infeasible.begin(), infeasible.end(),
                        [&](const MotionSetting& f) { return dominates(c.setting, f); });
   }
-  Evaluation run(const Candidate& c) {
+  Evaluation judged(const Candidate& c) const {
     const ParameterSetValues set = make_parameter_set(rq, c.setting, load_gcm2);
-    Evaluation ev = judge ? judge(rq, set) : evaluate(rq, set, false);
+    return judge ? judge(rq, set) : evaluate(rq, set, false);
+  }
+  // `ahead`: the candidate's evaluation when it was computed ahead (Speculation).
+  Evaluation run(const Candidate& c, std::optional<Evaluation> ahead = std::nullopt) {
+    Evaluation ev = ahead ? std::move(*ahead) : judged(c);
     ++result.simulations;
     const bool limit_failed =
         !ev.feasible && ev.binding_limit != "max_positioning" && ev.binding_limit != "max_cycle";
@@ -169,6 +175,45 @@ struct Runner {
     result.tried.push_back(ev);
     return ev;
   }
+};
+
+// With SizingRequest::search_threads > 1 (and no judge of its own) the
+// gentlest search evaluates, while it runs a candidate, the one it would run
+// next if this one taught it nothing, on another thread (issue 37). The
+// search goes on exactly as without: a result computed ahead is taken only
+// when the search reaches that very candidate and decides to run it, else it
+// is dropped (evaluations are deterministic: the same set gives the same
+// evaluation on any thread). `simulations` counts the runs the search took.
+class Speculation {
+ public:
+  explicit Speculation(const Runner& runner) : runner_(runner), on_(runner.rq.search_threads > 1 && !runner.judge) {}
+  ~Speculation() {
+    for (auto& [index, f] : pending_) f.wait();
+  }
+  Speculation(const Speculation&) = delete;
+  Speculation& operator=(const Speculation&) = delete;
+  // Starts evaluating candidate `index` unless it is on its way.
+  void start(std::size_t index, const Candidate& c) {
+    if (!on_ || pending_.count(index)) return;
+    pending_.emplace(index, std::async(std::launch::async, [this, c] { return runner_.judged(c); }));
+  }
+  // The evaluation of candidate `index` if it was started ahead; those of
+  // candidates before it, which the search passed by, are dropped.
+  std::optional<Evaluation> take(std::size_t index) {
+    std::optional<Evaluation> out;
+    for (auto it = pending_.begin(); it != pending_.end() && it->first <= index;) {
+      if (it->first == index) out = it->second.get();
+      else it->second.wait();
+      it = pending_.erase(it);
+    }
+    return out;
+  }
+  bool on() const { return on_; }
+
+ private:
+  const Runner& runner_;
+  bool on_;
+  std::map<std::size_t, std::future<Evaluation>> pending_;
 };
 
 // Fastest over the grid, judged without the targets (they only decide
@@ -264,11 +309,21 @@ SizingResult search_gentlest(const SizingRequest& rq, double load_gcm2, const Se
   Runner runner{rq, load_gcm2, result, judge, {}, {}, {}, {}};
   std::optional<Evaluation> best;
   double best_proxy = 0;
-  for (const Candidate& c : cs) {
-    if (best && cycle_proxy(c) > best_proxy * (1 + kGentleProxySlack)) break;
+  Speculation ahead(runner);
+  const auto beyond = [&](const Candidate& c) { return best && cycle_proxy(c) > best_proxy * (1 + kGentleProxySlack); };
+  for (std::size_t i = 0; i < cs.size(); ++i) {
+    const Candidate& c = cs[i];
+    if (beyond(c)) break;
     if (runner.pruned(c)) continue;
     if (result.simulations >= kMaxRuns) break;
-    Evaluation ev = runner.run(c);
+    if (ahead.on() && result.simulations + 1 < kMaxRuns) { // the next one the search runs if this one teaches it nothing
+      for (std::size_t k = i + 1; k < cs.size() && !beyond(cs[k]); ++k) {
+        if (runner.pruned(cs[k])) continue;
+        ahead.start(k, cs[k]);
+        break;
+      }
+    }
+    Evaluation ev = runner.run(c, ahead.take(i));
     if (ev.feasible && (!best || ev.rms_torque_Nm < best->rms_torque_Nm)) {
       best = std::move(ev);
       best_proxy = cycle_proxy(c);

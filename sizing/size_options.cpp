@@ -184,6 +184,7 @@ SizeOutcome run_cycle(const SizeOptions& a) {
     rq.world.model_file = std::filesystem::absolute(a.model).lexically_normal().string(); // --emit-scenario names it
   }
   rq.keep_trace = !a.report.empty();
+  rq.threads = io::usable_cpus(); // the sets' searches side by side (issue 37); the same answer
   out.cycle_result = size_cycle(rq);
   std::optional<UncertaintyResult> u;
   if (a.uncertainty) {
@@ -237,6 +238,7 @@ SizeOutcome run_size_or_cycle(const SizeOptions& a) {
   if (!a.cycle.empty()) return run_cycle(a);
   SizeOutcome out;
   out.request = make_request(a);
+  out.request.search_threads = io::usable_cpus(); // the gentlest search looks one candidate ahead (issue 37); the same answer
   std::optional<UncertaintyResult> u;
   if (a.uncertainty) { // the answer must hold in every sample (A-SIZE-UNC-3)
     UncertainSizing us = size_with_uncertainty(out.request, card_of(out.request.world), a.samples,

@@ -72,6 +72,10 @@ struct SizingRequest {
   // Called as each simulation starts (the CLI's progress line, issue 39);
   // from several threads at once with --uncertainty. Empty: nothing.
   std::function<void()> on_simulation;
+  // Threads the gentlest search may use (> 1: it evaluates the candidate it
+  // would run next on a second thread, issue 37); the answer does not
+  // depend on it. 1 where the caller runs requests side by side (sweep).
+  int search_threads = 1;
 };
 
 // What the motor supply sees (issue 17, A-SIZE-15), from the trace.

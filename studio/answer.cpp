@@ -13,6 +13,10 @@
 #include "sizing/output.hpp"
 #include "sizing/size_csv.hpp"
 #include "studio/answer_parts.hpp"
+#include "studio/cycle_answer.hpp"
+#include "io/cpus.hpp"
+#include "sizing/uncertainty.hpp"
+#include "twin/model_card.hpp"
 #include "twin/load_builder.hpp"
 #include "twin/load_figures.hpp"
 
@@ -30,7 +34,7 @@ Json part_json(const PartFigures& p, double scale, double total_inertia) {
 
 LoadFileContents parsed_load(const Json& state, double mass_scale) {
   try {
-    return parse_load_text(project_yaml(state, mass_scale), "project", ".");
+    return parse_load_text(load_yaml(state, mass_scale), "project", ".");
   } catch (const ScenarioError& e) {
     throw ProjectError(e.message());
   }
@@ -97,10 +101,34 @@ sizing::SizingRequest sizing_request(const Json& state) {
   rq.world.load = load.load;
   rq.world.mounting_tilt_deg = load.mounting_tilt_deg.value_or(0.0);
   rq.keep_trace = true; // as `size --report`: the plots need the trace
+  rq.search_threads = io::usable_cpus(); // as `size`
   return rq;
 }
 
-Json answer(const Json& state_in) {
+SingleSizing size_single_state(const Json& state, const std::function<void()>& on_simulation) {
+  SingleSizing one{sizing_request(state), {}, std::nullopt};
+  one.request.on_simulation = on_simulation;
+  if (normalised_state(state)["uncertainty"].get<bool>()) { // as size --uncertainty (A-SIZE-UNC-3)
+    sizing::UncertainSizing us = sizing::size_with_uncertainty(one.request, default_model_card(), kUncertaintySamples,
+                                                               kUncertaintySeed, io::usable_cpus());
+    one.result = std::move(us.result);
+    one.uncertainty = std::move(us.uncertainty);
+  } else {
+    one.result = sizing::size(one.request);
+  }
+  return one;
+}
+
+std::string answer_command(const Json& s) {
+  const bool cycle = s["mode"] == "cycle";
+  // The studio answers a single move without the settling spread over
+  // targets a few counts apart (9 more runs, issue 35): the command says so
+  // (a cycle has none).
+  return size_command_line(s, "PROJECT.yaml") + (cycle ? "" : " --settling-spread-counts 0") +
+         (s["uncertainty"].get<bool>() ? " --uncertainty" : "") + " --report REPORT --json";
+}
+
+Json answer(const Json& state_in, const std::function<void()>& on_simulation) {
   Json out;
   Json s;
   try {
@@ -110,20 +138,22 @@ Json answer(const Json& state_in) {
     out["error"] = e.what();
     return out;
   }
-  // The studio answers without the settling spread over targets a few
-  // counts apart (9 more runs, issue 35): the command it shows says so.
-  out["command"] = size_command_line(s, "PROJECT.yaml") + " --settling-spread-counts 0 --report REPORT --json";
+  out["command"] = answer_command(s);
   if (out["load"]["over_by_gcm2"].get<double>() > 0) {
     out["error"] = out["load"]["over_text"];
     return out;
   }
   try {
-    const sizing::SizingRequest rq = sizing_request(s);
-    const sizing::SizingResult r = sizing::size(rq);
-    Json j = sizing::to_json(rq, r);
+    if (s["mode"] == "cycle") {
+      add_cycle_answer(out, s, on_simulation);
+      return out;
+    }
+    const SingleSizing one = size_single_state(s, on_simulation);
+    const sizing::UncertaintyResult* u = one.uncertainty ? &*one.uncertainty : nullptr;
+    Json j = sizing::to_json(one.request, one.result, {u, nullptr});
     io::round_figures(j);
     out["size"] = j;
-    add_answer_parts(out, s, rq, r);
+    add_answer_parts(out, s, one.request, one.result, u);
   } catch (const std::invalid_argument& e) { // SizingInputError, ProjectError
     out["error"] = e.what();
   }
@@ -137,10 +167,18 @@ std::string answer_csv(const Json& state) {
 }
 
 std::string answer_scenario(const Json& state) {
-  const sizing::SizingRequest rq = sizing_request(state);
-  const sizing::SizingResult r = sizing::size(rq);
+  if (normalised_state(state)["mode"] == "cycle") { // as `size --cycle --emit-scenario`
+    const CycleSizing c = size_cycle_state(state);
+    const sizing::CyclePlan plan = sizing::plan_sets(c.request);
+    std::vector<int> set_of_segment;
+    for (int k : plan.move_set) set_of_segment.push_back(k < 0 ? -1 : plan.sets[static_cast<std::size_t>(k)].set);
+    return sizing::scenario_yaml(c.request, c.result.evaluation.sets, set_of_segment,
+                                 "sized cycle " + normalised_state(state)["name"].get<std::string>());
+  }
+  const SingleSizing one = size_single_state(state);
+  const sizing::SizingRequest& rq = one.request;
   // As `size --emit-scenario` (sizing/size_options.cpp run_size).
-  return sizing::scenario_yaml(sizing::cycle_of_single(rq), {r.evaluation.set},
+  return sizing::scenario_yaml(sizing::cycle_of_single(rq), {one.result.evaluation.set},
                                {rq.parameter_set, -1, rq.parameter_set, -1},
                                fmt::format("sized move {} deg back and forth", rq.angle_deg));
 }

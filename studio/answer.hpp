@@ -4,10 +4,14 @@
 // shows around it: the verdict block, plots, ISDU writes when the set is
 // usable, and a way out of an infeasible answer.
 #pragma once
+#include <functional>
+#include <optional>
 #include <string>
 
 #include "scenarios/load_file.hpp"
 #include "sizing/sizing.hpp"
+#include "sizing/uncertainty.hpp"
+#include "studio/cycle_answer.hpp"
 #include "studio/project.hpp"
 #include "twin/load_figures.hpp"
 
@@ -39,11 +43,25 @@ Json load_panel(const Json& state);
 // file holds it), with the trace kept as `size --report` keeps it.
 sizing::SizingRequest sizing_request(const Json& state);
 
-// {"load": load_panel, "size": the size JSON, "command": the command line,
-//  "verdict_html", "plots_html", "writes": [...], "writes_ready": bool,
+// A single move sized as `size` sizes it: with the uncertainty switch on,
+// as `size --uncertainty` (its answer holds in every sample).
+struct SingleSizing {
+  sizing::SizingRequest request;
+  sizing::SizingResult result;
+  std::optional<sizing::UncertaintyResult> uncertainty;
+};
+SingleSizing size_single_state(const Json& state, const std::function<void()>& on_simulation = {});
+
+// The `size` command line giving the same JSON object as the answer.
+std::string answer_command(const Json& state);
+
+// {"load": load_panel, "size": the size JSON (a cycle's: size --cycle's),
+//  "command": the command line, "verdict_html", "plots_html", "writes":
+//  [...], "writes_ready": bool, "uncertainty_html" (the switch on),
 //  "way_out": {...} (infeasible only)} or, for input the sizing refuses,
 // {"load": ..., "error": "..."}. Never throws for bad input.
-Json answer(const Json& state);
+// `on_simulation` is called as each simulation starts (the progress bar).
+Json answer(const Json& state, const std::function<void()>& on_simulation = {});
 
 // The CSV of an answer's figures (sizing/size_csv.hpp, as `size --csv`).
 std::string answer_csv(const Json& state);

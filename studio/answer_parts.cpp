@@ -8,6 +8,7 @@
 #include "sizing/output.hpp"
 #include "sizing/report.hpp"
 #include "sizing/report_parts.hpp"
+#include "sizing/uncertainty.hpp"
 #include "studio/answer.hpp"
 
 namespace sreh::studio {
@@ -54,19 +55,7 @@ Json limit_row(const std::string& limit, const std::string& value, const std::st
 }
 
 Json limits_table(const sizing::SizingRequest& rq, const Evaluation& e) {
-  const sizing::Utilisation& u = e.utilisation;
-  Json rows = Json::array();
-  rows.push_back(limit_row("torque_at_speed", fmt::format("{:.0f} %", u.peak_torque_pct),
-                           fmt::format("{:.0f} %", 100 * sizing::kTorqueMargin),
-                           u.peak_torque_pct - 100 * sizing::kTorqueMargin, "% of the capability"));
-  rows.push_back(limit_row("rms_torque", fmt::format("{:.0f} %", u.rms_torque_pct), "100 %", u.rms_torque_pct - 100,
-                           "% of the continuous torque"));
-  rows.push_back(limit_row("temperature", fmt::format("margin {:.1f} K", u.thermal_margin_K),
-                           fmt::format("margin {:.1f} K", rq.thermal_margin_K), rq.thermal_margin_K - u.thermal_margin_K,
-                           "K"));
-  const double track_allowed = sizing::kTrackingMargin * e.tracking_limit_deg;
-  rows.push_back(limit_row("tracking", fmt::format("{:.3f} deg", e.max_tracking_error_deg), fmt::format("{:.3f} deg", track_allowed),
-                           e.tracking_limit_deg > 0 ? e.max_tracking_error_deg - track_allowed : 0.0, "deg"));
+  Json rows = figure_limits(e, rq.thermal_margin_K);
   if (rq.max_positioning_ms) {
     rows.push_back(limit_row("max_positioning", e.completed ? fmt::format("{:.1f} ms", e.positioning_s * 1e3) : "not completed",
                              fmt::format("{:.1f} ms", *rq.max_positioning_ms),
@@ -78,10 +67,6 @@ Json limits_table(const sizing::SizingRequest& rq, const Evaluation& e) {
                              "ms"));
   }
   return rows;
-}
-
-Json set_json(const sizing::ParameterSetValues& s) {
-  return {{"parameter_set", s.set}, {"speed_dps", s.tidy.speed_dps}, {"accel_pct", s.tidy.accel_pct}, {"jerk_pct", s.tidy.jerk_pct}};
 }
 
 // Options near the state that may be feasible, each as the change to the
@@ -122,6 +107,26 @@ Json way_out(const Json& s, const sizing::SizingRequest& rq, const sizing::Sizin
 
 } // namespace
 
+Json set_json(const sizing::ParameterSetValues& s) {
+  return {{"parameter_set", s.set}, {"speed_dps", s.tidy.speed_dps}, {"accel_pct", s.tidy.accel_pct}, {"jerk_pct", s.tidy.jerk_pct}};
+}
+
+Json figure_limits(const sizing::TraceFigures& e, double required_margin_K) {
+  const sizing::Utilisation& u = e.utilisation;
+  Json rows = Json::array();
+  rows.push_back(limit_row("torque_at_speed", fmt::format("{:.0f} %", u.peak_torque_pct),
+                           fmt::format("{:.0f} %", 100 * sizing::kTorqueMargin),
+                           u.peak_torque_pct - 100 * sizing::kTorqueMargin, "% of the capability"));
+  rows.push_back(limit_row("rms_torque", fmt::format("{:.0f} %", u.rms_torque_pct), "100 %", u.rms_torque_pct - 100,
+                           "% of the continuous torque"));
+  rows.push_back(limit_row("temperature", fmt::format("margin {:.1f} K", u.thermal_margin_K),
+                           fmt::format("margin {:.1f} K", required_margin_K), required_margin_K - u.thermal_margin_K, "K"));
+  const double track_allowed = sizing::kTrackingMargin * e.tracking_limit_deg;
+  rows.push_back(limit_row("tracking", fmt::format("{:.3f} deg", e.max_tracking_error_deg), fmt::format("{:.3f} deg", track_allowed),
+                           e.tracking_limit_deg > 0 ? e.max_tracking_error_deg - track_allowed : 0.0, "deg"));
+  return rows;
+}
+
 std::string limit_in_words(const std::string& limit) {
   static const std::pair<const char*, const char*> kWords[] = {
       {"switch_on", "switching on"},
@@ -140,21 +145,31 @@ std::string limit_in_words(const std::string& limit) {
   return limit;
 }
 
-void add_answer_parts(Json& out, const Json& s, const sizing::SizingRequest& rq, const sizing::SizingResult& r) {
+void add_answer_parts(Json& out, const Json& s, const sizing::SizingRequest& rq, const sizing::SizingResult& r,
+                      const sizing::UncertaintyResult* u) {
   const Evaluation& e = r.evaluation;
+  // With the uncertainty switch the answer is the verdict over every sample (A-SIZE-UNC-2), as size --uncertainty's.
+  const bool feasible = u ? u->feasible_worst_case : r.feasible;
   out["verdict_html"] = sizing::report_parts::verdict_block(
-      {&e, r.feasible, r.binding_limit, rq.thermal_margin_K, rq.world.thermal.ambient_C, e.set.setting.speed_dps, e.load_gcm2});
+      {&e, r.feasible, r.binding_limit, rq.thermal_margin_K, rq.world.thermal.ambient_C, e.set.setting.speed_dps, e.load_gcm2, u});
+  if (u) {
+    out["uncertainty_html"] = sizing::report_parts::uncertainty_section(
+        *u, {e.positioning_s, e.settling_s, e.peak_torque_Nm, e.steady_temperature_C, std::nullopt});
+  }
   out["plots_html"] = plots_html(rq, e);
-  out["summary"] = {{"feasible", r.feasible},
+  out["summary"] = {{"feasible", feasible},
                     {"binding_limit", r.binding_limit},
                     {"binding_limit_words", limit_in_words(r.binding_limit)},
                     {"reason", e.reason},
-                    {"set", set_json(e.set)}};
+                    {"set", set_json(e.set)},
+                    {"sets", Json::array({set_json(e.set)})}};
   // Writes to paste only for a set that meets everything asked (issue 37).
-  out["writes_ready"] = r.feasible;
+  out["writes_ready"] = feasible;
   out["writes"] = Json::array();
-  if (r.feasible) {
+  if (feasible) {
     for (const sizing::IsduWrite& w : e.set.writes) out["writes"].push_back(sizing::isdu_write_line(w));
+  } else if (u) { // the options near it would need the samples too: the limits only
+    out["way_out"] = {{"limits", limits_table(rq, e)}, {"options", Json::array()}};
   } else {
     out["way_out"] = way_out(s, rq, r);
   }

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "sizing/sizing.hpp"
+#include "sizing/uncertainty.hpp"
 #include "studio/project.hpp"
 
 namespace sreh::studio {
@@ -13,8 +14,15 @@ namespace sreh::studio {
 // A limit's name in words ("torque_at_speed" -> "peak torque at speed").
 std::string limit_in_words(const std::string& limit);
 
+// How far over each limit of the figures the answer is (the "way out" table's rows).
+Json figure_limits(const sizing::TraceFigures& figures, double required_thermal_margin_K);
+// A parameter set as the page shows it: number, speed, acceleration, jerk.
+Json set_json(const sizing::ParameterSetValues& set);
+
 // Adds "verdict_html", "plots_html", "summary", "writes", "writes_ready"
-// and, infeasible, "way_out" to `out`.
-void add_answer_parts(Json& out, const Json& state, const sizing::SizingRequest& request, const sizing::SizingResult& result);
+// and, infeasible, "way_out" to `out`; with `uncertainty` (the switch) the
+// verdict over every sample and "uncertainty_html" (the bands).
+void add_answer_parts(Json& out, const Json& state, const sizing::SizingRequest& request, const sizing::SizingResult& result,
+                      const sizing::UncertaintyResult* uncertainty = nullptr);
 
 } // namespace sreh::studio

@@ -7,9 +7,21 @@
 #include "scenarios/load_file.hpp"
 #include "scenarios/source_loc.hpp"
 #include "scenarios/yaml_safety.hpp"
+#include "sizing/cycle.hpp"
 
 namespace sreh::studio {
 namespace {
+
+// A new cycle (docs/studio.md "Cycles"): pick and place, as
+// examples/cycles/pick_and_place.yaml moves.
+Json default_segments() {
+  return Json::array({{{"kind", "move"}, {"deg", 90.0}, {"relative", false}},
+                      {{"kind", "dwell"}, {"s", 0.2}},
+                      {{"kind", "grip"}},
+                      {{"kind", "move"}, {"deg", 0.0}, {"relative", false}},
+                      {{"kind", "dwell"}, {"s", 0.2}},
+                      {{"kind", "release"}}});
+}
 
 // The move and options a new project starts with: `size`'s own defaults
 // (SizeOptions), a 90 deg move with no target.
@@ -25,7 +37,10 @@ Json default_state() {
           {"target_ms", 300.0},
           {"voltage_V", d.voltage_V},
           {"ambient_C", d.ambient_C},
-          {"set", nullptr}};
+          {"set", nullptr},
+          {"mode", "single"},
+          {"segments", default_segments()},
+          {"uncertainty", false}};
 }
 
 const char* const kOptionKeys[] = {"mounting_tilt_deg", "angle_deg", "dwell_s", "tolerance_deg",
@@ -68,7 +83,22 @@ Json normalised_part(const Json& p, std::size_t k) {
   const auto rpy = p.contains("rpy_deg") ? triple(p["rpy_deg"], what + " rpy_deg") : std::array<double, 3>{};
   out["at_m"] = at;
   out["rpy_deg"] = rpy;
+  if (p.contains("payload") && !p["payload"].is_boolean()) throw ProjectError(what + ": payload must be true or false");
+  out["payload"] = p.value("payload", false);
   return out;
+}
+
+Json normalised_segment(const Json& g, std::size_t k) {
+  const std::string what = fmt::format("segment {}", k + 1);
+  if (!g.is_object() || !g.contains("kind") || !g["kind"].is_string()) throw ProjectError(what + ": expected {kind: ...}");
+  const std::string kind = g["kind"].get<std::string>();
+  if (kind == "move") {
+    if (g.contains("relative") && !g["relative"].is_boolean()) throw ProjectError(what + ": relative must be true or false");
+    return {{"kind", kind}, {"deg", number(g.value("deg", Json(0.0)), what + " deg")}, {"relative", g.value("relative", false)}};
+  }
+  if (kind == "dwell") return {{"kind", kind}, {"s", number(g.value("s", Json(0.0)), what + " s")}};
+  if (kind == "grip" || kind == "release") return {{"kind", kind}};
+  throw ProjectError(fmt::format("{}: kind '{}' is not one of move, dwell, grip, release", what, kind));
 }
 
 std::string num(double v) { return fmt::format("{}", v); }
@@ -137,35 +167,64 @@ Json normalised_state(const Json& state) {
     }
     s["set"] = set;
   }
+  if (state.contains("mode")) {
+    if (state["mode"] != "single" && state["mode"] != "cycle") {
+      throw ProjectError(fmt::format("mode: expected single or cycle, got {}", state["mode"].dump()));
+    }
+    s["mode"] = state["mode"];
+  }
+  if (state.contains("segments")) {
+    if (!state["segments"].is_array()) throw ProjectError("segments: expected a list");
+    s["segments"] = Json::array();
+    for (std::size_t k = 0; k < state["segments"].size(); ++k) s["segments"].push_back(normalised_segment(state["segments"][k], k));
+  }
+  if (state.contains("uncertainty")) {
+    if (!state["uncertainty"].is_boolean()) throw ProjectError("uncertainty: expected true or false");
+    s["uncertainty"] = state["uncertainty"];
+  }
   return s;
 }
 
-std::string project_yaml(const Json& state_in, double mass_scale) {
+std::string parts_yaml(const Json& parts, const std::string& indent, double mass_scale) {
+  std::string o = indent + "parts:\n";
+  for (const Json& p : parts) {
+    const ShapeKeys& keys = shape_keys(p["shape"].get<std::string>(), "part");
+    o += indent + "  - name: " + yaml_text(p["name"].get<std::string>()) + "\n";
+    o += fmt::format("{}    {}: {{", indent, keys.shape);
+    for (std::size_t i = 0; i < keys.keys.size(); ++i) {
+      double v = p[keys.keys[i]].get<double>();
+      if (i == 0) v *= mass_scale; // mass_kg
+      o += fmt::format("{}{}: {}", i ? ", " : "", keys.keys[i], num(v));
+    }
+    o += "}\n";
+    o += fmt::format("{}    at_m: [{}, {}, {}]\n", indent, num(p["at_m"][0]), num(p["at_m"][1]), num(p["at_m"][2]));
+    o += fmt::format("{}    rpy_deg: [{}, {}, {}]\n", indent, num(p["rpy_deg"][0]), num(p["rpy_deg"][1]), num(p["rpy_deg"][2]));
+  }
+  return o;
+}
+
+std::string load_yaml(const Json& state_in, double mass_scale) {
   const Json s = normalised_state(state_in);
+  std::string o = "name: " + yaml_text(s["name"].get<std::string>()) + "\n";
+  o += s["parts"].empty() ? "load: {inertia_gcm2: 0}\n" : "load:\n" + parts_yaml(s["parts"], "  ", mass_scale);
+  o += fmt::format("mounting: {{tilt_deg: {}}}\n", num(s["mounting_tilt_deg"].get<double>()));
+  return o;
+}
+
+std::string project_yaml(const Json& state_in) {
+  const Json s = normalised_state(state_in);
+  const bool cycle = s["mode"] == "cycle";
   std::string o;
   o += "# sreh-twin studio project (docs/studio.md): `sreh-twin studio THIS_FILE` reopens it;\n";
   o += "# the same answer on the command line: " + size_command_line(s, "THIS_FILE") + "\n";
-  o += "name: " + yaml_text(s["name"].get<std::string>()) + "\n";
-  if (s["parts"].empty()) {
-    o += "load: {inertia_gcm2: 0}\n";
-  } else {
-    o += "load:\n  parts:\n";
-    for (const Json& p : s["parts"]) {
-      const ShapeKeys& keys = shape_keys(p["shape"].get<std::string>(), "part");
-      o += "    - name: " + yaml_text(p["name"].get<std::string>()) + "\n";
-      o += fmt::format("      {}: {{", keys.shape);
-      for (std::size_t i = 0; i < keys.keys.size(); ++i) {
-        double v = p[keys.keys[i]].get<double>();
-        if (i == 0) v *= mass_scale; // mass_kg
-        o += fmt::format("{}{}: {}", i ? ", " : "", keys.keys[i], num(v));
-      }
-      o += "}\n";
-      o += fmt::format("      at_m: [{}, {}, {}]\n", num(p["at_m"][0]), num(p["at_m"][1]), num(p["at_m"][2]));
-      o += fmt::format("      rpy_deg: [{}, {}, {}]\n", num(p["rpy_deg"][0]), num(p["rpy_deg"][1]), num(p["rpy_deg"][2]));
-    }
-  }
-  o += fmt::format("mounting: {{tilt_deg: {}}}\n", num(s["mounting_tilt_deg"].get<double>()));
+  o += cycle ? cycle_file_yaml(s) : load_yaml(s);
   o += "studio:\n";
+  o += fmt::format("  mode: {}\n  uncertainty: {}\n", s["mode"].get<std::string>(), s["uncertainty"].get<bool>());
+  std::string payload;
+  for (std::size_t k = 0; k < s["parts"].size(); ++k) {
+    if (s["parts"][k]["payload"].get<bool>()) payload += fmt::format("{}{}", payload.empty() ? "" : ", ", k + 1);
+  }
+  if (!payload.empty()) o += "  payload_parts: [" + payload + "]\n";
   for (const char* key : {"angle_deg", "dwell_s", "tolerance_deg"}) o += fmt::format("  {}: {}\n", key, num(s[key].get<double>()));
   o += fmt::format("  target: {}\n", s["target"].get<std::string>());
   for (const char* key : {"target_ms", "voltage_V", "ambient_C"}) o += fmt::format("  {}: {}\n", key, num(s[key].get<double>()));
@@ -176,18 +235,11 @@ std::string project_yaml(const Json& state_in, double mass_scale) {
   return o;
 }
 
-Json state_from_project_text(const std::string& text, const std::string& file) {
-  // The load and mounting as `size --load` reads them: same keys, limits, errors.
-  std::optional<double> tilt;
-  try {
-    tilt = parse_load_text(text, file, ".").mounting_tilt_deg;
-  } catch (const ScenarioError& e) {
-    throw ProjectError(e.what());
-  }
-  const YAML::Node root = detail::load_yaml_safely(text, file, Limits{});
-  Json state = {{"parts", Json::array()}};
-  if (root["name"]) state["name"] = root["name"].as<std::string>();
-  const YAML::Node load = root["load"];
+namespace {
+
+// The parts of a load node ({parts: [...]}, or no load) as the state holds them.
+Json parts_of(const YAML::Node& load, const std::string& file) {
+  Json parts = Json::array();
   if (load.IsMap() && load["parts"]) {
     for (const YAML::Node& part : load["parts"]) {
       Json p = {{"name", part["name"] ? part["name"].as<std::string>() : std::string()}};
@@ -209,18 +261,76 @@ Json state_from_project_text(const std::string& text, const std::string& file) {
         }
         p[key] = v;
       }
-      state["parts"].push_back(p);
+      parts.push_back(p);
     }
   } else if (!(load.IsMap() && load["inertia_gcm2"] && load["inertia_gcm2"].as<double>() == 0.0)) {
     yaml_fail(load, file, "the studio builds loads from parts (load: {parts: [...]}); this load is one shape or a file");
   }
+  return parts;
+}
+
+// A cycle file's segments as the studio's: a load change to more parts than
+// the cycle starts with is a grip, else a release; every part is in the
+// first grip's load (cycle_file_yaml writes it so).
+void read_cycle(const YAML::Node& root, const std::string& file, Json& state) {
+  const std::size_t base = state["parts"].size();
+  state["mode"] = "cycle";
+  state["segments"] = Json::array();
+  bool gripped = false;
+  for (const YAML::Node& g : root["segments"]) {
+    if (g["move_deg"]) {
+      state["segments"].push_back({{"kind", "move"}, {"deg", yaml_number(g["move_deg"], file, "move_deg")},
+                                   {"relative", g["relative"] && g["relative"].as<bool>()}});
+    } else if (g["dwell_s"]) {
+      state["segments"].push_back({{"kind", "dwell"}, {"s", yaml_number(g["dwell_s"], file, "dwell_s")}});
+    } else {
+      const Json parts = parts_of(g["load"], file);
+      const bool grip = parts.size() > base;
+      if (grip && !gripped) state["parts"] = parts;
+      gripped = gripped || grip;
+      state["segments"].push_back({{"kind", grip ? "grip" : "release"}});
+    }
+  }
+  if (root["supply"] && root["supply"]["voltage_V"]) state["voltage_V"] = yaml_number(root["supply"]["voltage_V"], file, "supply.voltage_V");
+  if (root["ambient_C"]) state["ambient_C"] = yaml_number(root["ambient_C"], file, "ambient_C");
+  if (root["tolerance_deg"]) state["tolerance_deg"] = yaml_number(root["tolerance_deg"], file, "tolerance_deg");
+}
+
+} // namespace
+
+Json state_from_project_text(const std::string& text, const std::string& file) {
+  const YAML::Node root = detail::load_yaml_safely(text, file, Limits{});
+  const bool cycle = root.IsMap() && root["segments"];
+  // The file as `size --load` (a load file) or `size --cycle` (a cycle file)
+  // reads it: same keys, limits, errors.
+  std::optional<double> tilt;
+  try {
+    if (cycle) tilt = sizing::parse_cycle_text(text, file, ".").world.mounting_tilt_deg;
+    else tilt = parse_load_text(text, file, ".").mounting_tilt_deg;
+  } catch (const ScenarioError& e) {
+    throw ProjectError(e.what());
+  } catch (const sizing::SizingInputError& e) {
+    throw ProjectError(e.what());
+  }
+  Json state = {{"parts", parts_of(root["load"], file)}};
+  if (root["name"]) state["name"] = root["name"].as<std::string>();
+  if (cycle) read_cycle(root, file, state);
   if (tilt) state["mounting_tilt_deg"] = *tilt;
   if (const YAML::Node st = root["studio"]) {
     if (!st.IsMap()) yaml_fail(st, file, "studio: expected a map");
     for (const auto& kv : st) {
       const std::string key = kv.first.as<std::string>();
-      if (key == "target") state["target"] = kv.second.as<std::string>();
-      else if (key == "set") {
+      if (key == "target" || key == "mode") state[key] = kv.second.as<std::string>();
+      else if (key == "uncertainty") state[key] = kv.second.as<bool>();
+      else if (key == "payload_parts") {
+        for (const YAML::Node& k : kv.second) {
+          const double n = yaml_number(k, file, "studio.payload_parts");
+          if (n < 1 || n > static_cast<double>(state["parts"].size()) || n != std::floor(n)) {
+            yaml_fail(k, file, fmt::format("studio.payload_parts: {} is not a part number 1 .. {}", n, state["parts"].size()));
+          }
+          state["parts"][static_cast<std::size_t>(n) - 1]["payload"] = true;
+        }
+      } else if (key == "set") {
         Json set;
         for (const char* k : kSetKeys) {
           if (kv.second[k]) set[k] = yaml_number(kv.second[k], file, std::string("studio.set.") + k);
@@ -230,8 +340,8 @@ Json state_from_project_text(const std::string& text, const std::string& file) {
                  key == "voltage_V" || key == "ambient_C") {
         state[key] = yaml_number(kv.second, file, "studio." + key);
       } else {
-        yaml_fail(kv.first, file, "studio." + key + ": unknown key (angle_deg, dwell_s, tolerance_deg, target, target_ms, "
-                                  "voltage_V, ambient_C, set)");
+        yaml_fail(kv.first, file, "studio." + key + ": unknown key (mode, uncertainty, payload_parts, angle_deg, dwell_s, "
+                                  "tolerance_deg, target, target_ms, voltage_V, ambient_C, set)");
       }
     }
   }
@@ -272,6 +382,7 @@ sizing::SizeOptions size_options(const Json& state) {
 }
 
 std::string size_command_line(const Json& state, const std::string& load_file) {
+  if (normalised_state(state)["mode"] == "cycle") return "sreh-twin size --cycle " + load_file;
   const sizing::SizeOptions o = size_options(state);
   std::string c = fmt::format("sreh-twin size --load {} --angle-deg {} --voltage-V {} --dwell-s {} --tolerance-deg {} --ambient-C {}",
                               load_file, num(*o.angle_deg), num(o.voltage_V), num(o.dwell_s), num(o.tolerance_deg),

@@ -11,7 +11,12 @@
 //    "mounting_tilt_deg": 0, "angle_deg": 90, "dwell_s": 0, "tolerance_deg": 0.1,
 //    "target": "positioning" | "cycle" | "none", "target_ms": 300,
 //    "voltage_V": 24, "ambient_C": 25,
-//    "set": null | {"speed_dps": ..., "accel_pct": ..., "jerk_pct": ...}}
+//    "set": null | {"speed_dps": ..., "accel_pct": ..., "jerk_pct": ...},
+//    "mode": "single" | "cycle", "uncertainty": false,
+//    "segments": [{"kind": "move", "deg": 90, "relative": false}, {"kind": "dwell", "s": 0.2},
+//                 {"kind": "grip"}, {"kind": "release"}]}
+//   A part's "payload": true puts it on the flange only from a grip to a
+//   release (cycles); a single move sizes with every part.
 #pragma once
 #include <stdexcept>
 #include <string>
@@ -44,9 +49,19 @@ const std::vector<ShapeKeys>& part_shapes();
 // type (ranges are the sizing's and the load parser's to check).
 Json normalised_state(const Json& state);
 
-// The project file's text for a state (deterministic). With `mass_scale`
-// every part's mass is multiplied (figures of a load over the limit).
-std::string project_yaml(const Json& state, double mass_scale = 1.0);
+// The project file's text for a state (deterministic): a single move's is
+// a load file (`size --load` reads it), a cycle's a cycle file (`size
+// --cycle` reads it), each with the `studio:` section.
+std::string project_yaml(const Json& state);
+// The load file of the state: name, every part (payload too), mounting.
+// With `mass_scale` every part's mass is multiplied (figures of a load over the limit).
+std::string load_yaml(const Json& state, double mass_scale = 1.0);
+// `parts:` of a load file, each line indented by `indent`.
+std::string parts_yaml(const Json& parts, const std::string& indent, double mass_scale = 1.0);
+// The cycle file of a cycle state (cycle_project.cpp): the load without the
+// payload parts, mounting, supply, ambient, tolerance and the segments, a
+// grip loading every part, a release the load without the payload.
+std::string cycle_file_yaml(const Json& state);
 
 // The state a project file (or a plain load file of simple parts) holds.
 // Throws ProjectError "FILE:LINE:COL: ..." for a file the studio cannot read.

@@ -2,6 +2,7 @@
 
 #include <httplib.h>
 
+#include <atomic>
 #include <cctype>
 #include <chrono>
 #include <ctime>
@@ -79,6 +80,7 @@ void run_studio(const StudioOptions& o, const std::function<void(const std::stri
   const Json initial = o.project.empty() ? normalised_state(Json{{"parts", Json::array()}}) : state_from_project_file(o.project);
   const std::string html = page(initial);
   std::mutex sizing_mutex; // one sizing at a time: the page debounces, a second tab waits
+  std::atomic<int> simulations{0}; // of the answer being computed: the page's progress bar
   httplib::Server server;
   server.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr ep) {
     std::string what = "internal error";
@@ -108,13 +110,18 @@ void run_studio(const StudioOptions& o, const std::function<void(const std::stri
     {
       std::lock_guard<std::mutex> lock(sizing_mutex);
       const double c0 = thread_cpu_ms();
-      a = answer(state);
+      simulations = 0;
+      a = answer(state, [&simulations] { ++simulations; });
       cpu_ms = thread_cpu_ms() - c0;
     }
     // Wall time (includes waiting for another tab's sizing) and this thread's CPU time (docs/performance-sizing.md).
     a["elapsed_ms"] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     a["cpu_ms"] = cpu_ms;
     res.set_content(a.dump(), kJsonType);
+  });
+  // The progress of the answer being computed (a cycle takes seconds): its simulations so far.
+  server.Get("/api/progress", [&](const httplib::Request&, httplib::Response& res) {
+    res.set_content(Json{{"simulations", simulations.load()}}.dump(), kJsonType);
   });
   auto download = [&](const char* path, const char* ext, const char* type, auto make) {
     server.Get(path, [&, ext, type, make](const httplib::Request& req, httplib::Response& res) {

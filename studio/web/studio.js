@@ -26,7 +26,12 @@
     if (!m) return;
     try {
       const h = JSON.parse(decodeURIComponent(m[1]));
-      if (h.state) state = h.state;
+      // Keys the link leaves out (an older link, a hand-made one) keep the project's.
+      if (h.state) state = Object.assign(JSON.parse(JSON.stringify(window.STUDIO.project)), h.state);
+      for (const p of state.parts) {
+        if (p.payload === undefined) p.payload = false;
+        for (const key of ['at_m', 'rpy_deg']) if (!Array.isArray(p[key])) p[key] = [0, 0, 0];
+      }
       if (Array.isArray(h.pins)) pins = h.pins.slice(0, MAX_PINS).map((s) => ({state: s, answer: null}));
     } catch (e) { /* a broken link: keep the project */ }
   }
@@ -45,14 +50,33 @@
     return `<fieldset class="part" id="part-${k}"><legend>Part ${k + 1}</legend>
 <div class="row"><label>name <input id="part-${k}-name" data-k="${k}" data-key="name" type="text" value="${esc(p.name)}"></label>
 <label>shape <select id="part-${k}-shape" data-k="${k}" data-key="shape">${opts}</select></label>
+<label><input id="part-${k}-payload" data-k="${k}" data-key="payload" type="checkbox"${p.payload ? ' checked' : ''}> payload (gripped in a cycle)</label>
 <button type="button" id="part-${k}-remove" data-remove="${k}">remove</button></div>
 <div class="row">${dims}</div>
 <div class="row">${vec('at_m', ['at x m', 'y m', 'z m'])}</div>
 <div class="row">${vec('rpy_deg', ['roll deg', 'pitch deg', 'yaw deg'])}</div></fieldset>`;
   }
 
+  function segmentHtml(g, i) {
+    const rm = `<button type="button" data-seg-remove="${i}">remove</button>`;
+    if (g.kind === 'move') {
+      return `<li id="seg-${i}">move <label>${g.relative ? 'by' : 'to'} <input id="seg-${i}-deg" data-seg="${i}" data-key="deg" type="number" step="any" value="${g.deg}"> deg</label>` +
+        `<label><input id="seg-${i}-relative" data-seg="${i}" data-key="relative" type="checkbox"${g.relative ? ' checked' : ''}> relative</label>${rm}</li>`;
+    }
+    if (g.kind === 'dwell') {
+      return `<li id="seg-${i}">dwell <label><input id="seg-${i}-s" data-seg="${i}" data-key="s" type="number" step="any" min="0" value="${g.s}"> s</label>${rm}</li>`;
+    }
+    return `<li id="seg-${i}">${g.kind === 'grip' ? 'grip: the payload joins the load' : 'release: the payload leaves the load'}${rm}</li>`;
+  }
+
   function renderInputs() {
     $('name').value = state.name;
+    const cycle = state.mode === 'cycle';
+    $('mode').value = state.mode;
+    $('uncertainty').checked = !!state.uncertainty;
+    document.querySelectorAll('label.single').forEach((l) => { l.hidden = cycle; });
+    $('cycle-editor').hidden = !cycle;
+    $('segments').innerHTML = state.segments.map(segmentHtml).join('');
     $('parts').innerHTML = state.parts.map(partHtml).join('');
     const tilt = state.mounting_tilt_deg;
     $('mounting').value = tilt === 0 ? '0' : tilt === 90 ? '90' : 'tilt';
@@ -60,10 +84,10 @@
     $('tilt-label').hidden = $('mounting').value !== 'tilt';
     for (const id of ['angle_deg', 'dwell_s', 'tolerance_deg', 'target_ms', 'voltage_V', 'ambient_C']) $(id).value = state[id];
     $('target').value = state.target;
-    $('target-ms-label').hidden = state.target === 'none';
+    $('target-ms-label').hidden = cycle || state.target === 'none';
     $('set-mode').value = state.set ? 'given' : 'recommend';
     for (const id of ['speed_dps', 'accel_pct', 'jerk_pct']) $(id).value = state.set ? state.set[id] : '';
-    document.querySelectorAll('label.given').forEach((l) => { l.hidden = !state.set; });
+    document.querySelectorAll('label.given').forEach((l) => { l.hidden = cycle || !state.set; });
   }
 
   function num(el) {
@@ -78,9 +102,10 @@
     if (Number.isNaN(k) || !key) return;
     const p = state.parts[k];
     if (key === 'name') p.name = el.value;
+    else if (key === 'payload') p.payload = el.checked;
     else if (key === 'shape') {
       const old = p;
-      const next = {name: old.name, shape: el.value, at_m: old.at_m, rpy_deg: old.rpy_deg};
+      const next = {name: old.name, shape: el.value, at_m: old.at_m, rpy_deg: old.rpy_deg, payload: old.payload};
       for (const dim of shapeKeys(el.value)) next[dim] = old[dim] !== undefined ? old[dim] : DEFAULT_DIMS[dim];
       state.parts[k] = next;
       renderInputs();
@@ -96,9 +121,21 @@
     changed();
   }
 
+  function onSegmentInput(e) {
+    const el = e.target;
+    const i = Number(el.dataset.seg);
+    if (Number.isNaN(i) || !el.dataset.key) return;
+    const g = state.segments[i];
+    if (el.dataset.key === 'relative') { g.relative = el.checked; renderInputs(); }
+    else { const v = num(el); if (v === null) return; g[el.dataset.key] = v; }
+    changed();
+  }
+
   function onInput(e) {
     const id = e.target.id;
     if (id === 'name') state.name = e.target.value;
+    else if (id === 'mode') { state.mode = e.target.value; renderInputs(); }
+    else if (id === 'uncertainty') state.uncertainty = e.target.checked;
     else if (id === 'mounting') {
       if (e.target.value !== 'tilt') state.mounting_tilt_deg = Number(e.target.value);
       $('tilt-label').hidden = e.target.value !== 'tilt';
@@ -131,10 +168,36 @@
     return r.json();
   }
 
+  // A cycle or the uncertainty band takes seconds: the simulations run so
+  // far against about how many such an answer takes (a searched set up to
+  // 60, a cycle's back-offs, 32 samples and the robust search's).
+  function expectedSimulations(s) {
+    let n = s.mode === 'cycle' ? 61 * (s.segments.some((g) => g.kind === 'grip') ? 2 : 1) + 9 : s.target === 'none' ? 2 : 21;
+    if (s.uncertainty) n += 2 * 32;
+    return n;
+  }
+
+  function watchProgress(mine, s) {
+    if (s.mode !== 'cycle' && !s.uncertainty) return () => {};
+    const expected = expectedSimulations(s);
+    $('progress-line').hidden = false;
+    $('progress').value = 0;
+    $('progress-text').textContent = 'sizing...';
+    const poll = setInterval(async () => {
+      const p = await (await fetch('/api/progress')).json();
+      if (mine !== seq) return;
+      $('progress').value = Math.min(95, 100 * p.simulations / expected);
+      $('progress-text').textContent = `${p.simulations} simulations run`;
+    }, 200);
+    return () => { clearInterval(poll); $('progress-line').hidden = true; };
+  }
+
   async function ask() {
     const mine = ++seq;
     const t0 = performance.now();
-    const a = await post(state);
+    const done = watchProgress(mine, state);
+    let a;
+    try { a = await post(state); } finally { done(); }
     if (mine !== seq) return; // a newer edit is on its way
     window.studio.answer = a;
     showAnswer(a);
@@ -162,7 +225,17 @@
     return o;
   }
 
+  function cycleSummaryHtml(a) {
+    const s = a.summary, j = a.size;
+    return `<p class="answerline"><b class="${s.feasible ? 'okt' : 'badt'}" id="answer-verdict">${s.feasible ? 'FEASIBLE' : 'NOT FEASIBLE'}</b>;
+binding limit: <b id="answer-binding">${esc(s.binding_limit_words)}</b>; cycle <span id="rec-cycle">${fmt(j.cycle_s, 4)}</span> s</p>
+<table id="answer-set"><tr><th class="l">${j.mode === 'recommend' ? 'recommended' : 'given'} set</th><th>speed deg/s</th><th>acceleration %</th><th>jerk %</th><th>load g cm^2</th></tr>` +
+      j.sets.map((x, k) => `<tr><td class="l" id="rec-set-${k}">${x.parameter_set}</td><td id="rec-speed-${k}">${x.speed_dps}</td>` +
+        `<td id="rec-accel-${k}">${x.accel_pct}</td><td id="rec-jerk-${k}">${x.jerk_pct}</td><td>${fmt(x.load_gcm2, 1)}</td></tr>`).join('') + '</table>';
+  }
+
   function summaryHtml(a) {
+    if (a.size.request.cycle_file !== undefined) return cycleSummaryHtml(a);
     const s = a.summary, j = a.size, set = s.set;
     return `<p class="answerline"><b class="${s.feasible ? 'okt' : 'badt'}" id="answer-verdict">${s.feasible ? 'FEASIBLE' : 'NOT FEASIBLE'}</b>;
 binding limit: <b id="answer-binding">${esc(s.binding_limit_words)}</b></p>
@@ -190,6 +263,7 @@ binding limit: <b id="answer-binding">${esc(s.binding_limit_words)}</b></p>
     $('error').textContent = a.error || '';
     $('summary').innerHTML = a.summary ? summaryHtml(a) : '';
     $('verdict-box').innerHTML = a.verdict_html || '';
+    $('uncertainty-box').innerHTML = a.uncertainty_html || '';
     $('way-out').innerHTML = wayOutHtml(a.way_out);
     $('writes').innerHTML = !a.summary ? '' : a.writes_ready
       ? `<pre id="writes-text">${esc(a.writes.join('\n'))}</pre><p class="note">scenario steps, ready to paste under <code>steps:</code></p>`
@@ -204,11 +278,13 @@ binding limit: <b id="answer-binding">${esc(s.binding_limit_words)}</b></p>
     ['tilt', 'axis tilt deg', (p) => p.state.mounting_tilt_deg],
     ['voltage', 'supply V', (p) => p.state.voltage_V],
     ['ambient', 'ambient degC', (p) => p.state.ambient_C],
-    ['move', 'move deg / dwell s', (p) => `${p.state.angle_deg} / ${p.state.dwell_s}`],
+    ['move', 'move deg / dwell s', (p) => (p.state.mode === 'cycle' ? `cycle of ${p.state.segments.length} segments` : `${p.state.angle_deg} / ${p.state.dwell_s}`)],
+    ['band', 'uncertainty band', (p) => (p.state.uncertainty ? 'on' : 'off')],
     ['target', 'required', (p) => (p.state.target === 'none' ? '-' : `${p.state.target} ${p.state.target_ms} ms`)],
     ['verdict', 'verdict', (p) => (!p.answer ? '...' : p.answer.summary ? (p.answer.summary.feasible ? 'feasible' : 'NOT feasible') : 'error')],
     ['binding', 'binding limit', (p) => (p.answer && p.answer.summary ? p.answer.summary.binding_limit_words : '-')],
-    ['set', 'speed / accel / jerk', (p) => (p.answer && p.answer.summary ? `${p.answer.summary.set.speed_dps} / ${p.answer.summary.set.accel_pct} / ${p.answer.summary.set.jerk_pct}` : '-')],
+    ['set', 'speed / accel / jerk', (p) => (p.answer && p.answer.summary
+      ? p.answer.summary.sets.map((x) => `${x.speed_dps} / ${x.accel_pct} / ${x.jerk_pct}`).join('; ') : '-')],
     ['positioning', 'positioning s', (p) => fmt(p.answer && p.answer.size ? p.answer.size.positioning_s : null, 4)],
     ['cycle', 'cycle s', (p) => fmt(p.answer && p.answer.size ? p.answer.size.cycle_s : null, 4)],
     ['peak', 'peak torque %', (p) => fmt(p.answer && p.answer.size ? p.answer.size.utilisation.peak_torque_pct : null, 0)],
@@ -252,8 +328,8 @@ binding limit: <b id="answer-binding">${esc(s.binding_limit_words)}</b></p>
   renderInputs();
   renderCompare();
   exportLinks();
-  $('parts').addEventListener('input', onPartInput);
-  $('parts').addEventListener('change', (e) => { if (e.target.tagName === 'SELECT') onPartInput(e); });
+  $('parts').addEventListener('input', (e) => { if (e.target.type !== 'checkbox') onPartInput(e); });
+  $('parts').addEventListener('change', (e) => { if (e.target.tagName === 'SELECT' || e.target.type === 'checkbox') onPartInput(e); });
   $('parts').addEventListener('click', (e) => {
     const k = e.target.dataset.remove;
     if (k === undefined) return;
@@ -261,11 +337,27 @@ binding limit: <b id="answer-binding">${esc(s.binding_limit_words)}</b></p>
     renderInputs();
     changed();
   });
-  $('inputs').addEventListener('input', (e) => { if (!e.target.closest('#parts')) onInput(e); });
-  $('inputs').addEventListener('change', (e) => { if (e.target.tagName === 'SELECT' && !e.target.closest('#parts')) onInput(e); });
+  const elsewhere = (e) => e.target.closest('#parts') || e.target.closest('#segments');
+  $('inputs').addEventListener('input', (e) => { if (!elsewhere(e) && e.target.type !== 'checkbox') onInput(e); });
+  $('inputs').addEventListener('change', (e) => {
+    if ((e.target.tagName === 'SELECT' || e.target.type === 'checkbox') && !elsewhere(e)) onInput(e);
+  });
+  $('segments').addEventListener('input', (e) => { if (e.target.type !== 'checkbox') onSegmentInput(e); });
+  $('segments').addEventListener('change', (e) => { if (e.target.type === 'checkbox') onSegmentInput(e); });
+  $('segments').addEventListener('click', (e) => {
+    const i = e.target.dataset.segRemove;
+    if (i === undefined) return;
+    state.segments.splice(Number(i), 1);
+    renderInputs();
+    changed();
+  });
+  for (const [id, seg] of [['add-move', {kind: 'move', deg: 90, relative: false}], ['add-dwell', {kind: 'dwell', s: 0.2}],
+                           ['add-grip', {kind: 'grip'}], ['add-release', {kind: 'release'}]]) {
+    $(id).addEventListener('click', () => { state.segments.push(Object.assign({}, seg)); renderInputs(); changed(); });
+  }
   $('add-part').addEventListener('click', () => {
     state.parts.push({name: `part ${state.parts.length + 1}`, shape: 'disk', mass_kg: 0.1, radius_m: 0.03, thickness_m: 0.01,
-                      at_m: [0, 0, 0.005], rpy_deg: [0, 0, 0]});
+                      at_m: [0, 0, 0.005], rpy_deg: [0, 0, 0], payload: false});
     renderInputs();
     changed();
   });
