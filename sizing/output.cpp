@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "twin/load_figures.hpp"
+#include "sizing/limit_names.hpp"
 #include "sizing/settling_spread.hpp"
 #include "sizing/uncertainty.hpp"
 
@@ -88,7 +89,7 @@ std::string verdict_text(const TraceFigures& f, double required_thermal_margin_K
                    f.utilisation.peak_torque_pct, f.utilisation.rms_torque_pct, f.continuous_torque_Nm,
                    f.utilisation.thermal_margin_K, required_thermal_margin_K);
   s += "  supply            " + supply_text(f.supply) + "\n";
-  s += fmt::format("  binding limit     {}\n", binding_limit);
+  s += fmt::format("  binding limit     {}\n", limit_in_words(binding_limit));
   if (u) { // one verdict (issue 35): over the nominal and every sample
     s += fmt::format("  feasible          {}: {}{}\n", u->feasible_worst_case ? "yes, in every sample" : "NO",
                      u->verdict.sentence(), f.feasible ? "" : "; on the nominal model: " + f.reason);

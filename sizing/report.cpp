@@ -171,7 +171,7 @@ void add_rms_point(svg::Plot& p, double rms_speed_dps, double rms_torque_Nm, dou
   p.series.push_back({fmt::format("RMS point ({:.0f} deg/s, {:.3f} N m)", rms_speed_dps, rms_torque_Nm),
                       {rms_speed_dps}, {rms_torque_Nm}, "#000000", 4.0, false, true});
   p.hlines = {{kTorqueMargin * torque_capability_Nm, fmt::format("{:.0f} % of peak", 100 * kTorqueMargin), "#9467bd", true},
-              {continuous_torque_Nm, "continuous torque (A-SIZE-14)", "#2ca02c", true}};
+              {continuous_torque_Nm, "continuous torque", "#2ca02c", true}};
 }
 
 } // namespace report_parts

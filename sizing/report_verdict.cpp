@@ -11,6 +11,7 @@
 
 #include "device_logic/units.hpp"
 #include "io/html_page.hpp"
+#include "sizing/limit_names.hpp"
 #include "sizing/output.hpp"
 #include "sizing/uncertainty.hpp"
 
@@ -70,19 +71,19 @@ std::string verdict_block(const VerdictInput& in) {
                      over->feasible_worst_case ? "ok" : "bad",
                      over->feasible_worst_case ? "FEASIBLE IN EVERY SAMPLE" : "NOT FEASIBLE IN EVERY SAMPLE",
                      html_escape(over->sentence()));
-    o += fmt::format("<p>On the nominal model: binding limit <b id=\"binding-limit\">{}</b>{}</p>\n", html_escape(in.binding_limit),
+    o += fmt::format("<p>On the nominal model: binding limit <b id=\"binding-limit\">{}</b>{}</p>\n", html_escape(limit_in_words(in.binding_limit)),
                      f.feasible || f.reason.empty() ? std::string() : " &mdash; " + html_escape(f.reason));
   } else {
     o += fmt::format("<p><span class=\"result {}\" id=\"verdict-answer\">{}</span> binding limit: <b id=\"binding-limit\">{}</b>{}</p>\n",
-                     in.feasible ? "ok" : "bad", in.feasible ? "FEASIBLE" : "NOT FEASIBLE", html_escape(in.binding_limit),
+                     in.feasible ? "ok" : "bad", in.feasible ? "FEASIBLE" : "NOT FEASIBLE", html_escape(limit_in_words(in.binding_limit)),
                      in.feasible || f.reason.empty() ? std::string() : " &mdash; " + html_escape(f.reason));
   }
   const Bars b = bars(in);
   o += "<table class=\"bars\">\n";
   o += bar("bar-peak", "peak torque", b.peak, 100 * kTorqueMargin, fmt::format("{:.0f} %", u.peak_torque_pct),
-           fmt::format("of the capability at speed; feasible up to {:.0f} % (A-SIZE-5)", 100 * kTorqueMargin));
+           fmt::format("of the capability at speed; feasible up to {:.0f} % (docs/sizing.md, What it reports)", 100 * kTorqueMargin));
   o += bar("bar-rms", "RMS torque", b.rms, 100, fmt::format("{:.0f} %", u.rms_torque_pct),
-           fmt::format("of the continuous {:.3f} N m (A-SIZE-14)", f.continuous_torque_Nm));
+           fmt::format("of the continuous {:.3f} N m (docs/sizing.md, The thermal model)", f.continuous_torque_Nm));
   o += bar("bar-thermal", "thermal", b.thermal, b.thermal_limit, fmt::format("margin {:.1f} K", u.thermal_margin_K),
            fmt::format("steady {:.1f} degC from {:.1f} degC ambient, of the rise to the 70 degC warning; required margin {:.1f} K",
                        f.steady_temperature_C, in.ambient_C, in.required_thermal_margin_K));
@@ -114,7 +115,7 @@ std::string verdict_table(const std::vector<std::pair<std::string, VerdictInput>
       return fmt::format("<td class=\"mini\">{}<span>{}</span></td>", bar_html, html_escape(value));
     };
     o += fmt::format("<tr><td class=\"l\">{}</td><td class=\"{}\">{}</td><td class=\"l\">{}</td>{}{}{}{}</tr>\n", html_escape(points[i].first),
-                     in.feasible ? "okc" : "badc", in.feasible ? "feasible" : "NOT", html_escape(in.binding_limit),
+                     in.feasible ? "okc" : "badc", in.feasible ? "feasible" : "NOT", html_escape(limit_in_words(in.binding_limit)),
                      cell(track(b.peak, 100 * kTorqueMargin), fmt::format("{:.0f} %", u.peak_torque_pct)),
                      cell(track(b.rms, 100), fmt::format("{:.0f} %", u.rms_torque_pct)),
                      cell(track(b.thermal, b.thermal_limit), fmt::format("{:.1f} K", u.thermal_margin_K)),

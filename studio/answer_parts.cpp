@@ -127,24 +127,6 @@ Json figure_limits(const sizing::TraceFigures& e, double required_margin_K) {
   return rows;
 }
 
-std::string limit_in_words(const std::string& limit) {
-  static const std::pair<const char*, const char*> kWords[] = {
-      {"switch_on", "switching on"},
-      {"settling", "settling in the tolerance window"},
-      {"torque_at_speed", "peak torque at speed"},
-      {"rms_torque", "RMS torque"},
-      {"tracking", "tracking error"},
-      {"temperature", "temperature margin"},
-      {"voltage", "supply voltage"},
-      {"max_positioning", "required positioning time"},
-      {"max_cycle", "required cycle time"},
-      {"module_limits", "the module's top speed, acceleration and jerk"}};
-  for (const auto& [tag, words] : kWords) {
-    if (limit == tag) return words;
-  }
-  return limit;
-}
-
 void add_answer_parts(Json& out, const Json& s, const sizing::SizingRequest& rq, const sizing::SizingResult& r,
                       const sizing::UncertaintyResult* u) {
   const Evaluation& e = r.evaluation;

@@ -5,14 +5,14 @@
 #pragma once
 #include <string>
 
+#include "sizing/limit_names.hpp"
 #include "sizing/sizing.hpp"
 #include "sizing/uncertainty.hpp"
 #include "studio/project.hpp"
 
 namespace sreh::studio {
 
-// A limit's name in words ("torque_at_speed" -> "peak torque at speed").
-std::string limit_in_words(const std::string& limit);
+using sizing::limit_in_words; // the limits' names in words (sizing/limit_names.hpp)
 
 // How far over each limit of the figures the answer is (the "way out" table's rows).
 Json figure_limits(const sizing::TraceFigures& figures, double required_thermal_margin_K);

@@ -9,6 +9,8 @@
 #include <fmt/format.h>
 
 #include "sizing/cycle.hpp"
+#include "io/html_page.hpp"
+#include "sizing/limit_names.hpp"
 #include "sizing/report.hpp"
 #include "tests/sizing/report_checks.hpp"
 
@@ -35,7 +37,7 @@ TEST(CycleReport, HasTheSpeedTorquePlaneSegmentTimesAndTemperature) {
   const std::size_t verdict = html.find("id=\"verdict\"");
   ASSERT_NE(verdict, std::string::npos);
   EXPECT_LT(verdict, html.find("<h2>Numbers</h2>"));
-  EXPECT_NE(html.find(fmt::format("<b id=\"binding-limit\">{}</b>", r.evaluation.binding_limit)), std::string::npos);
+  EXPECT_NE(html.find(fmt::format("<b id=\"binding-limit\">{}</b>", io::html_escape(limit_in_words(r.evaluation.binding_limit)))), std::string::npos);
   EXPECT_NE(html.find(fmt::format("<td>margin {:.1f} K</td>", r.evaluation.utilisation.thermal_margin_K)), std::string::npos);
   EXPECT_NE(html.find("75 degC trip (error 114.3)"), std::string::npos);
   EXPECT_NE(html.find("- isdu_write: {index: 66, subindex: 4, value: 12000}"), std::string::npos);
