@@ -134,6 +134,7 @@ TEST(Calibration, HiddenConstantsComeBackAndPredictAHeldOutMove) {
 // clock runs 20 times fast here: 3 minutes of heating, what a real module
 // shows in a log of that length.
 TEST(Calibration, ThermalConstantsFromThePolledTemperature) {
+  if (kSanitized) GTEST_SKIP() << "a full fit, minutes instrumented (225 s); checked in the Release stage";
   Scenario plan = test::plan_scenario(kPlanLoad_gcm2);
   plan.world.thermal.time_scale = 20;
   const ModelCard hidden = test::card_with({{"winding_heat_capacity", 2.8},              // +12 %

@@ -1,6 +1,7 @@
 """Shared helpers of the serve tests (issue 18): start `sreh-twin serve` on
 loopback ports the OS picks, talk to it with curl, mbpoll and pymodbus, stop it
 with SIGTERM. Everything is bounded in time: a hung server fails the test."""
+import atexit
 import json
 import os
 import signal
@@ -39,6 +40,9 @@ class Serve:
     def __init__(self, exe, *args):
         self.proc = subprocess.Popen([exe, "serve", "--modbus", "127.0.0.1:0", "--http", "127.0.0.1:0", *args],
                                      stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        # A failed check exits the test (sys.exit): the server goes with it
+        # instead of running on after CTest (a stray serve was found spinning).
+        atexit.register(self.kill)
         line = self.proc.stdout.readline()
         if not line:
             fail("serve did not start: " + self.proc.stderr.read())
