@@ -330,13 +330,15 @@ binding limit: <b id="answer-binding">${esc(s.binding_limit_words)}</b></p>
   exportLinks();
   $('parts').addEventListener('input', (e) => { if (e.target.type !== 'checkbox') onPartInput(e); });
   $('parts').addEventListener('change', (e) => { if (e.target.tagName === 'SELECT' || e.target.type === 'checkbox') onPartInput(e); });
-  $('parts').addEventListener('click', (e) => {
-    const k = e.target.dataset.remove;
+  // A list's remove buttons: data-remove on a part, data-seg-remove on a segment.
+  const removeOnClick = (id, key, list) => $(id).addEventListener('click', (e) => {
+    const k = e.target.dataset[key];
     if (k === undefined) return;
-    state.parts.splice(Number(k), 1);
+    list().splice(Number(k), 1);
     renderInputs();
     changed();
   });
+  removeOnClick('parts', 'remove', () => state.parts);
   const elsewhere = (e) => e.target.closest('#parts') || e.target.closest('#segments');
   $('inputs').addEventListener('input', (e) => { if (!elsewhere(e) && e.target.type !== 'checkbox') onInput(e); });
   $('inputs').addEventListener('change', (e) => {
@@ -344,13 +346,7 @@ binding limit: <b id="answer-binding">${esc(s.binding_limit_words)}</b></p>
   });
   $('segments').addEventListener('input', (e) => { if (e.target.type !== 'checkbox') onSegmentInput(e); });
   $('segments').addEventListener('change', (e) => { if (e.target.type === 'checkbox') onSegmentInput(e); });
-  $('segments').addEventListener('click', (e) => {
-    const i = e.target.dataset.segRemove;
-    if (i === undefined) return;
-    state.segments.splice(Number(i), 1);
-    renderInputs();
-    changed();
-  });
+  removeOnClick('segments', 'segRemove', () => state.segments);
   for (const [id, seg] of [['add-move', {kind: 'move', deg: 90, relative: false}], ['add-dwell', {kind: 'dwell', s: 0.2}],
                            ['add-grip', {kind: 'grip'}], ['add-release', {kind: 'release'}]]) {
     $(id).addEventListener('click', () => { state.segments.push(Object.assign({}, seg)); renderInputs(); changed(); });

@@ -19,17 +19,15 @@ Skipped (77) without chromium.
 usage: studio_cycle_test.py SREH_TWIN"""
 import json
 import os
-import shutil
 import subprocess
 import sys
-import tempfile
 import time
 import urllib.parse
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, here)
-from cdp import Cdp, browser_or_skip  # noqa: E402
-from studio_test import (ANSWERED, Studio, check, check_layout, cli_json, click, export, text,  # noqa: E402
+from cdp import browser_or_skip  # noqa: E402
+from studio_test import (ANSWERED, StudioSession, check, check_layout, cli_json, click, export, text,  # noqa: E402
                          type_into, wait_answer)
 
 
@@ -78,15 +76,8 @@ def build_cycle(cdp):
 def main():
     exe = sys.argv[1]
     browser_or_skip()
-    tmp = tempfile.mkdtemp()
-    studio = Studio(exe)
-    reopened = None
-    cdp = None
-    try:
-        cdp = Cdp(os.path.join(tmp, "profile"))
-        cdp.open_tab()
-        cdp.set_width(1400)
-        cdp.navigate(studio.url, ANSWERED)
+    with StudioSession(exe) as session:
+        cdp, studio, tmp = session.cdp, session.studio, session.tmp
         a, seen = build_cycle(cdp)
         check("error" not in a, "the cycle was refused: %s" % a.get("error"))
         check(a["command"].startswith("sreh-twin size --cycle PROJECT.yaml"), "command %r" % a["command"])
@@ -107,8 +98,7 @@ def main():
         cdp.set_width(1400)
 
         # Reopened: the same answer, in cycle mode, the payload marked; the scenario passes in the twin.
-        reopened = Studio(exe, project)
-        cdp.navigate(reopened.url, ANSWERED)
+        reopened = session.reopen(project)
         again = wait_answer(cdp, "!!window.studio.answer.size", timeout=120)
         check(again["size"] == a["size"], "the reopened cycle answers differently")
         check(cdp.evaluate("document.getElementById('mode').value") == "cycle" and
@@ -138,13 +128,6 @@ def main():
         check(not [p for p in cdp.problems() if "favicon" not in json.dumps(p)], "console problems: %s" % cdp.problems())
         print("studio cycle: %s, %d sets, progress up to %d simulations shown; uncertainty: %s"
               % ("feasible" if cli["feasible"] else "infeasible", len(cli["sets"]), seen, cli_u["verdict"]))
-    finally:
-        if cdp:
-            cdp.close()
-        studio.stop()
-        if reopened:
-            reopened.stop()
-        shutil.rmtree(tmp, ignore_errors=True)
 
 
 if __name__ == "__main__":

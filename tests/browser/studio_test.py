@@ -74,6 +74,44 @@ class Studio:
             self.proc.wait()
 
 
+class StudioSession:
+    """The studio in a headless Chromium tab at 1400 px, its first answer
+    shown; reopen(project) opens a project in a second studio in the same tab.
+    On leaving: the tab, both studios and the scratch folder go."""
+
+    def __init__(self, exe):
+        self.exe = exe
+        self.tmp = tempfile.mkdtemp()
+        self.studio = None
+        self.reopened = None
+        self.cdp = None
+
+    def __enter__(self):
+        try:
+            self.studio = Studio(self.exe)
+            self.cdp = Cdp(os.path.join(self.tmp, "profile"))
+            self.cdp.open_tab()
+            self.cdp.set_width(1400)
+            self.cdp.navigate(self.studio.url, ANSWERED)
+        except BaseException:  # a failed check exits (SystemExit): clean up all the same
+            self.__exit__()
+            raise
+        return self
+
+    def reopen(self, project):
+        self.reopened = Studio(self.exe, project)
+        self.cdp.navigate(self.reopened.url, ANSWERED)
+        return self.reopened
+
+    def __exit__(self, *exc):
+        if self.cdp:
+            self.cdp.close()
+        for s in (self.studio, self.reopened):
+            if s:
+                s.stop()
+        shutil.rmtree(self.tmp, ignore_errors=True)
+
+
 def wait_answer(cdp, extra="true", timeout=30):
     end = time.monotonic() + timeout
     time.sleep(0.05)
@@ -193,15 +231,8 @@ def main():
     n_latency = int(sys.argv[sys.argv.index("--latency") + 1]) if "--latency" in sys.argv else 0
     shots = sys.argv[sys.argv.index("--screenshots") + 1] if "--screenshots" in sys.argv else None
     browser_or_skip()
-    tmp = tempfile.mkdtemp()
-    studio = Studio(exe)
-    reopened = None
-    cdp = None
-    try:
-        cdp = Cdp(os.path.join(tmp, "profile"))
-        cdp.open_tab()
-        cdp.set_width(1400)
-        cdp.navigate(studio.url, ANSWERED)
+    with StudioSession(exe) as session:
+        cdp, studio, tmp = session.cdp, session.studio, session.tmp
         a = build_load(cdp)
         check("error" not in a, "the two-part load was refused: %s" % a.get("error"))
         project = os.path.join(tmp, "project.yaml")
@@ -251,8 +282,7 @@ def main():
 
         # Export at 20 V, reopen in a second studio: the same answer.
         export(studio, cdp, "export-project", project)
-        reopened = Studio(exe, project)
-        cdp.navigate(reopened.url, ANSWERED)
+        reopened = session.reopen(project)
         again = wait_answer(cdp, "!!window.studio.answer.size")
         check(again["size"] == a20["size"], "the reopened project answers differently")
         # CSV: the figures of size --json; the scenario passes in the twin.
@@ -303,13 +333,6 @@ def main():
         check(not [p for p in cdp.problems() if "favicon" not in json.dumps(p)], "console problems: %s" % cdp.problems())
         print("studio: two-part load, %s; 20 V %s; over the limit by %s g cm^2; project, CSV and scenario exported"
               % ("feasible" if cli["feasible"] else "infeasible", "feasible" if cli20["feasible"] else "infeasible", m.group(1)))
-    finally:
-        if cdp:
-            cdp.close()
-        studio.stop()
-        if reopened:
-            reopened.stop()
-        shutil.rmtree(tmp, ignore_errors=True)
 
 
 _state_cache = {}
