@@ -299,6 +299,8 @@ void apply_mechanics(mjModel* m, const MechanicsConstants& c, const std::string&
   const int rotor_dof = m->jnt_dofadr[rotor];
   const int flange_dof = m->jnt_dofadr[flange];
   m->dof_armature[rotor_dof] = c.rotor_inertia_kgm2;
+  // The model as a viewer should show it; a stepping Plant moves the two
+  // dampings into a form its constraint solver sees (A-TWIN-48).
   m->dof_damping[rotor_dof] = c.viscous_friction_Nms_per_rad;
   m->dof_frictionloss[rotor_dof] = c.coulomb_friction_Nm;
   m->jnt_stiffness[flange] = c.torsional_stiffness_Nm_per_rad;
