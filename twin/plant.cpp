@@ -155,8 +155,8 @@ void Plant::set_drive_train_state() {
 // as an applied force and h D onto the mass matrix's diagonal (armature).
 // MuJoCo 2.2's own dof damping is applied after the constraint forces were
 // solved against M alone; with no load h d is 1.7 times the flange's own
-// inertia, and a stiff constraint on the flange (a blocked flange, a hard
-// stop at speed) then gains energy each step until the numbers blow up.
+// inertia, and the stiff equality of a blocked flange then gained energy
+// each step until the numbers blew up (a flange jammed while moving).
 void Plant::apply_damping(double twist_damping_Nms_per_rad, double rotor_damping_Nms_per_rad) {
   mjModel* m = model_.get();
   mjData* d = data_.get();

@@ -139,6 +139,30 @@ TEST(Twin, HardStopCausesTrackingError_7_2_114_5) {
   EXPECT_FALSE(twin.moves()[0].positioning_s.has_value());
 }
 
+// The hardest impact: no load, the module's top speed (manual 3.5.3, 4300
+// deg/s at 24 V) into a post. The flange stops at it and bounces back (the
+// rotor's momentum stored in the compliance, A-TWIN-20) and coasts (the
+// motor is off after the tracking error), but never passes it.
+TEST(Twin, HardStopAtTopSpeedWithNoLoadIsNotPassed_7_2_114_5) {
+  for (double stop_deg : {20.0, 33.3, 47.1, 61.9}) {
+    SCOPED_TRACE("stop at " + std::to_string(stop_deg) + " deg");
+    TwinConfig c;
+    c.record_trace = false;
+    c.hard_stops = {HardStop{stop_deg}};
+    Twin twin(c);
+    write_u16(twin, 65, 1, 43000);
+    switch_on_and_move(twin, 90.0);
+    double furthest_deg = 0;
+    for (int i = 0; i < 250; ++i) { // 0.5 s
+      twin.run_cycle();
+      furthest_deg = std::max(furthest_deg, rad_to_deg(twin.plant().angle_rad()));
+    }
+    EXPECT_GT(furthest_deg, stop_deg - 2.0); // it got there
+    EXPECT_LT(furthest_deg, stop_deg + 1.5); // and not through
+    EXPECT_NE(twin.telemetry().error_code & 0x08, 0); // tracking error (manual 2.4, 114.5)
+  }
+}
+
 TEST(Twin, LinkDownWhileMotorOnIsAnError_5) {
   Twin twin(TwinConfig{});
   ProcessDataOut pd;
