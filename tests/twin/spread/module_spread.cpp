@@ -48,11 +48,12 @@ HoldFigures hold(Twin& twin, double settle_s, double measure_s) {
 
 ModuleModel module_with(const std::vector<std::pair<std::string, double>>& values) {
   ModelCard card = default_model_card();
-  for (const auto& [name, value] : values) {
+  for (const auto& entry : values) { // not a structured binding: clang 14 cannot capture one
+    const std::string& name = entry.first;
     auto it = std::find_if(card.constants.begin(), card.constants.end(),
                            [&](const ModelConstant& c) { return c.name == name; });
     if (it == card.constants.end()) throw std::invalid_argument("no constant " + name);
-    it->value = value;
+    it->value = entry.second;
   }
   return card.module_model();
 }
