@@ -63,6 +63,21 @@ struct Client {
   bool closing = false;  // close now, without answering more
 };
 
+// A complete request is in: what the client already sent (read or still in
+// the socket) holds the MBAP header and as many octets as its length field
+// counts (Modbus Messaging on TCP/IP 3.1.3). Such a client is working even
+// if the loop has not served it yet: under load a new client's first
+// request can wait in its socket while reconnecting clients queue behind it.
+bool request_waiting(const Client& c) {
+  std::vector<uint8_t> sent = c.in;
+  uint8_t peek[260];
+  const ssize_t n = recv(c.fd, peek, sizeof peek, MSG_PEEK | MSG_DONTWAIT);
+  if (n > 0) sent.insert(sent.end(), peek, peek + n);
+  if (sent.size() < 6) return false;
+  const std::size_t length = (std::size_t{sent[4]} << 8) | sent[5];
+  return sent.size() >= 6 + length;
+}
+
 } // namespace
 
 template <>
@@ -102,12 +117,14 @@ struct Front<ModbusOptions>::Impl {
   }
 
   // The limit is reached: the connection that has not completed a request
-  // for the longest makes room, unless every one is working (kWorkingWindow).
+  // for the longest makes room, unless every one is working (kWorkingWindow)
+  // or has a complete request waiting to be served.
   bool evict_one() {
     const auto now = Clock::now();
     auto victim = clients.end();
     for (auto it = clients.begin(); it != clients.end(); ++it) {
       if (it->completed_any && now - it->progress < kWorkingWindow) continue;
+      if (request_waiting(*it)) continue;
       if (victim == clients.end() || it->progress < victim->progress) victim = it;
     }
     if (victim == clients.end()) return false;

@@ -1,4 +1,4 @@
-"""Issue 40 "Done when": SIGKILL at random moments during ~20 s of
+"""Issue 40 "Done when": SIGKILL at random moments in twelve rounds of
 parameter writes (blocks ending with ParamDownloadStore, so each is also
 the master's backup), restarts and a device replacement: after every
 restart the device and the master's backup hold the last acknowledged value
@@ -21,10 +21,12 @@ state = tempfile.mkdtemp()
 args = ("--ports", "1", "--state-dir", state)
 acked, attempted = [1000], [1000]
 kills = replacements = 0
-end = time.monotonic() + 20.0
+# Bounded by kills, not by time: on a loaded or instrumented machine a
+# restart takes longer, and 20 s gave only 5 kills under ASan at load 11.
+end = time.monotonic() + 90.0
 s = Serve(exe, *args)
 check(store_block(s, [(66, 4, 1000)])[0] == 200, "first store refused")
-while time.monotonic() < end:
+while kills < 12 and time.monotonic() < end:
     stop = threading.Event()
 
     def writer(serve=s):
