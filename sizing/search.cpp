@@ -256,7 +256,9 @@ std::optional<Evaluation> fastest(const SizingRequest& rq_in, double load_gcm2, 
   std::optional<Evaluation> best;
   const double wait_s = make_parameter_set(rq, MotionSetting{}, load_gcm2).wait_ms * 1e-3;
   const double fixed_s = fixed_per_move_s(rq, load_gcm2);
-  const auto done = [&](const Candidate& c) { return best && c.travel_s + wait_s >= best->positioning_s * (1 - kFastestTolerance); };
+  const auto done = [&](const Candidate& c) {
+    return best && c.travel_s + wait_s >= best->positioning_s * (1 - kFastestTolerance);
+  };
   Speculation ahead(runner);
   for (std::size_t i = 0; reach(i); ++i) {
     Candidate& c = order[i];

@@ -3,6 +3,7 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -56,6 +57,8 @@ StoredMesh store_mesh(const std::string& name_in, const std::string& bytes, cons
   } catch (const std::invalid_argument& e) {
     throw ProjectError(e.what());
   }
+  static std::mutex storing; // two uploads of one name at once: the second sees the first's file
+  const std::lock_guard<std::mutex> lock(storing);
   std::error_code ec;
   fs::create_directories(folder, ec);
   if (ec) throw ProjectError(fmt::format("{}: cannot make the folder {} for it: {}", name, folder, ec.message()));

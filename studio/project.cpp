@@ -274,8 +274,10 @@ Json parts_of(const YAML::Node& load, const std::string& file) {
         p["file"] = mesh_path(dims, file);
       }
       for (const char* key : found->keys) {
-        // The parser checked the part: only a thickness (default 0.01 m, twin/specs.hpp) or a mesh's scale (1) may be left out.
-        p[key] = dims[key] ? Json(yaml_number(dims[key], file, key)) : Json(std::string(key) == "scale" ? MeshPart{}.scale : DiskLoad{}.thickness_m);
+        // The parser checked the part: only a thickness (default 0.01 m,
+        // twin/specs.hpp) or a mesh's scale (1) may be left out.
+        const double left_out = std::string(key) == "scale" ? MeshPart{}.scale : DiskLoad{}.thickness_m;
+        p[key] = dims[key] ? Json(yaml_number(dims[key], file, key)) : Json(left_out);
       }
       for (const char* key : {"at_m", "rpy_deg"}) {
         Json v = Json::array({0.0, 0.0, 0.0});
