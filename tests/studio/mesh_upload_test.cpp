@@ -109,7 +109,7 @@ TEST_F(StudioMeshUpload, ProjectWithAMeshRoundTripsAndSizesItsLoad) {
   EXPECT_NEAR(panel["parts"][1]["inertia_gcm2"].get<double>(), (0.1 * 0.02 * 0.02 / 6 + 0.1 * 0.05 * 0.05) * 1e7, 0.5);
 }
 
-TEST_F(StudioMeshUpload, ALoadFileNamingItsMeshRelativelyOpensWithTheFullPath) {
+TEST_F(StudioMeshUpload, RelativeMeshPathOpensAsAFullPath) {
   store_mesh("pin.stl", read_text_file(kData + "cube20_binary.stl"), folder());
   const std::string load = (dir_ / "load.yaml").string();
   std::ofstream(load) << "load:\n  parts:\n    - mesh: {file: meshes/pin.stl, mass_kg: 0.03, scale: 0.001}\n      at_m: [0.06, 0, 0.04]\n";
