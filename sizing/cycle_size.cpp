@@ -33,6 +33,10 @@ SizingRequest single_request(const CycleRequest& rq, const SetPlan& p, double dw
   s.thermal_margin_K = rq.thermal_margin_K;
   s.handshake_cycles = rq.handshake_cycles;
   s.on_simulation = rq.on_simulation;
+  // The searches run side by side; each may also look one candidate ahead
+  // (search.cpp Speculation): a search that ends first leaves its core to
+  // the other's look ahead. The answer does not depend on it.
+  s.search_threads = rq.threads;
   return s;
 }
 

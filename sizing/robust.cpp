@@ -131,9 +131,9 @@ std::string slowest_failure(const SizingRequest& rq, const std::vector<ModelCard
 UncertainSizing size_with_uncertainty(const SizingRequest& request, const ModelCard& card, int samples, uint64_t seed,
                                       int threads) {
   SizingRequest rq = request;
-  rq.keep_trace = false;
   UncertainSizing out;
-  out.result = size(rq);
+  out.result = size(rq); // with its trace when asked: kept when the nominal answer stays
+  rq.keep_trace = false;
   const std::vector<ModelCard> cards = latin_hypercube_cards(card, samples, seed);
   out.uncertainty = bands(card, samples, seed, outcome_of(out.result.evaluation),
                           run_samples(rq, cards, out.result.evaluation.set, threads));
@@ -165,7 +165,7 @@ UncertainSizing size_with_uncertainty(const SizingRequest& request, const ModelC
     out.result.simulations = simulations;
     out.uncertainty.robust = robust;
   }
-  if (request.keep_trace) {
+  if (request.keep_trace && out.result.evaluation.trace.empty()) {
     out.result.evaluation = evaluate(request, out.result.evaluation.set, true); // deterministic: the same run, with its trace
     ++out.result.simulations;
   }

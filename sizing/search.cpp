@@ -12,6 +12,7 @@
 //    infeasible too (more torque, more tracking error, more heat): it is
 //    skipped without a run (A-SIZE-10 states this monotonicity).
 #include <algorithm>
+#include <deque>
 #include <future>
 #include <map>
 #include <cmath>
@@ -149,9 +150,11 @@ struct Runner {
     return std::any_of(infeasible.begin(), infeasible.end(),
                        [&](const MotionSetting& f) { return dominates(c.setting, f); });
   }
+  // With SizingRequest::keep_trace each run keeps its trace, so the answer
+  // comes with its own and size() need not run it again (issue 37).
   Evaluation judged(const Candidate& c) const {
     const ParameterSetValues set = make_parameter_set(rq, c.setting, load_gcm2);
-    return judge ? judge(rq, set) : evaluate(rq, set, false);
+    return judge ? judge(rq, set) : evaluate(rq, set, rq.keep_trace);
   }
   // `ahead`: the candidate's evaluation when it was computed ahead (Speculation).
   Evaluation run(const Candidate& c, std::optional<Evaluation> ahead = std::nullopt) {
@@ -173,17 +176,20 @@ struct Runner {
       if (first_failure.empty()) first_failure = ev.binding_limit;
     }
     result.tried.push_back(ev);
+    result.tried.back().trace = {}; // the answer's alone is kept
     return ev;
   }
 };
 
-// With SizingRequest::search_threads > 1 (and no judge of its own) the
-// gentlest search evaluates, while it runs a candidate, the one it would run
-// next if this one taught it nothing, on another thread (issue 37). The
+// With SizingRequest::search_threads > 1 (and no judge of its own) both
+// searches evaluate, while they run a candidate, the one they would run
+// next if this one taught them nothing, on another thread (issue 37). The
 // search goes on exactly as without: a result computed ahead is taken only
 // when the search reaches that very candidate and decides to run it, else it
 // is dropped (evaluations are deterministic: the same set gives the same
 // evaluation on any thread). `simulations` counts the runs the search took.
+// Each runs on a thread of its own: one worker for all was tried and lost
+// (a dropped run still going delays the next one queued behind it).
 class Speculation {
  public:
   explicit Speculation(const Runner& runner) : runner_(runner), on_(runner.rq.search_threads > 1 && !runner.judge) {}
@@ -234,18 +240,44 @@ std::optional<Evaluation> fastest(const SizingRequest& rq_in, double load_gcm2, 
            std::tie(b.setting.accel_pct, b.setting.jerk_pct, b.setting.speed_dps);
   };
   std::make_heap(cs.begin(), cs.end(), later);
+  // The candidates in that order as far as the search (and its look ahead)
+  // reached: order[i] is the i-th popped (a deque keeps references valid).
+  std::deque<Candidate> order;
+  auto heap_end = cs.end();
+  const auto reach = [&](std::size_t i) {
+    while (order.size() <= i && heap_end != cs.begin()) {
+      std::pop_heap(cs.begin(), heap_end, later);
+      --heap_end;
+      order.push_back(*heap_end);
+    }
+    return i < order.size();
+  };
   Runner runner{rq, load_gcm2, result, judge, {}, {}, {}, {}};
   std::optional<Evaluation> best;
   const double wait_s = make_parameter_set(rq, MotionSetting{}, load_gcm2).wait_ms * 1e-3;
   const double fixed_s = fixed_per_move_s(rq, load_gcm2);
-  for (auto end = cs.end(); end != cs.begin(); --end) {
-    std::pop_heap(cs.begin(), end, later);
-    Candidate& c = *(end - 1);
-    if (best && c.travel_s + wait_s >= best->positioning_s * (1 - kFastestTolerance)) break;
+  const auto done = [&](const Candidate& c) {
+    return best && c.travel_s + wait_s >= best->positioning_s * (1 - kFastestTolerance);
+  };
+  Speculation ahead(runner);
+  for (std::size_t i = 0; reach(i); ++i) {
+    Candidate& c = order[i];
+    if (done(c)) break;
     with_proxies(rq, load_gcm2, fixed_s, c);
     if (runner.pruned(c)) continue;
     if (result.simulations >= kMaxRuns) break;
-    Evaluation ev = runner.run(c);
+    // The next one the search runs if this one teaches it nothing; not for
+    // the first run: the fastest candidate, often feasible, ends a search
+    // whose look ahead would only be waited for.
+    if (ahead.on() && result.simulations > 0 && result.simulations + 1 < kMaxRuns) {
+      for (std::size_t k = i + 1; reach(k) && !done(order[k]); ++k) {
+        with_proxies(rq, load_gcm2, fixed_s, order[k]); // a pure function of the candidate: computed ahead alike
+        if (runner.pruned(order[k])) continue;
+        ahead.start(k, order[k]);
+        break;
+      }
+    }
+    Evaluation ev = runner.run(c, ahead.take(i));
     if (ev.feasible && (!best || ev.positioning_s < best->positioning_s)) best = std::move(ev);
   }
   binding = runner.first_failure.empty() ? "module_limits" : runner.first_failure;
@@ -345,7 +377,7 @@ SizingResult search_gentlest(const SizingRequest& rq, double load_gcm2, const Se
   if (quick) {
     result.best_positioning_s = quick->positioning_s;
     result.best_cycle_s = quick->cycle_s;
-    result.evaluation = judge ? judge(rq, quick->set) : evaluate(rq, quick->set, false); // judged with the target: names it
+    result.evaluation = judge ? judge(rq, quick->set) : evaluate(rq, quick->set, rq.keep_trace); // judged with the target: names it
     ++result.simulations;
     result.evaluation.reason = fmt::format("the target cannot be met: the fastest feasible set positions in "
                                            "{:.1f} ms (cycle {:.1f} ms), limited by {}; {}",

@@ -121,7 +121,9 @@ SizingResult size(const SizingRequest& rq, const SetJudge& judge) {
   }
   result = (rq.max_positioning_ms || rq.max_cycle_ms) ? search_gentlest(rq, load_gcm2, judge)
                                                            : search_fastest(rq, load_gcm2, judge);
-  if (rq.keep_trace) {
+  // The search's runs keep their traces (search.cpp Runner::judged); an
+  // answer without one (a judge's, a failed search's) is run again with it.
+  if (rq.keep_trace && result.evaluation.trace.empty()) {
     result.evaluation = evaluate(rq, result.evaluation.set, true); // deterministic: the same run again, with its trace
     ++result.simulations;
   }

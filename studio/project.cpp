@@ -1,6 +1,7 @@
 #include "studio/project.hpp"
 
 #include <cmath>
+#include <filesystem>
 
 #include <fmt/format.h>
 
@@ -79,6 +80,12 @@ Json normalised_part(const Json& p, std::size_t k) {
     if (!p.contains(key)) throw ProjectError(fmt::format("{} ({}): {} missing", what, shape, key));
     out[key] = number(p[key], fmt::format("{} {}", what, key));
   }
+  if (shape == "mesh") { // the stored STL (mesh_upload.hpp)
+    if (!p.contains("file") || !p["file"].is_string() || p["file"].get<std::string>().empty()) {
+      throw ProjectError(what + " (mesh): no STL file yet: upload one");
+    }
+    out["file"] = p["file"];
+  }
   const auto at = p.contains("at_m") ? triple(p["at_m"], what + " at_m") : std::array<double, 3>{};
   const auto rpy = p.contains("rpy_deg") ? triple(p["rpy_deg"], what + " rpy_deg") : std::array<double, 3>{};
   out["at_m"] = at;
@@ -131,6 +138,7 @@ const std::vector<ShapeKeys>& part_shapes() {
       {"cylinder", {"mass_kg", "radius_m", "length_m"}},
       {"sphere", {"mass_kg", "radius_m"}},
       {"point", {"mass_kg"}},
+      {"mesh", {"mass_kg", "scale"}}, // plus its STL "file" (mesh_upload.hpp)
   };
   return shapes;
 }
@@ -191,6 +199,7 @@ std::string parts_yaml(const Json& parts, const std::string& indent, double mass
     const ShapeKeys& keys = shape_keys(p["shape"].get<std::string>(), "part");
     o += indent + "  - name: " + yaml_text(p["name"].get<std::string>()) + "\n";
     o += fmt::format("{}    {}: {{", indent, keys.shape);
+    if (p.contains("file")) o += "file: " + yaml_text(p["file"].get<std::string>()) + ", ";
     for (std::size_t i = 0; i < keys.keys.size(); ++i) {
       double v = p[keys.keys[i]].get<double>();
       if (i == 0) v *= mass_scale; // mass_kg
@@ -237,6 +246,16 @@ std::string project_yaml(const Json& state_in) {
 
 namespace {
 
+// A mesh part's STL as the state holds it: absolute (the load parser
+// resolves a relative one against the file's folder, so does this).
+std::string mesh_path(const YAML::Node& dims, const std::string& file) {
+  namespace fs = std::filesystem;
+  const fs::path given(dims["file"].as<std::string>());
+  const fs::path folder = fs::path(file).parent_path();
+  const fs::path base = folder.empty() ? fs::current_path() : fs::absolute(folder);
+  return (given.is_absolute() ? given : base / given).lexically_normal().string();
+}
+
 // The parts of a load node ({parts: [...]}, or no load) as the state holds them.
 Json parts_of(const YAML::Node& load, const std::string& file) {
   Json parts = Json::array();
@@ -247,12 +266,18 @@ Json parts_of(const YAML::Node& load, const std::string& file) {
       for (const ShapeKeys& s : part_shapes()) {
         if (part[s.shape]) found = &s;
       }
-      if (!found) yaml_fail(part, file, "the studio builds loads of disk, ring, box, cylinder, sphere and point parts only");
+      if (!found) yaml_fail(part, file, "the studio builds loads of disk, ring, box, cylinder, sphere, point and mesh parts only");
       p["shape"] = found->shape;
       const YAML::Node dims = part[found->shape];
+      if (std::string(found->shape) == "mesh") {
+        if (!dims["mass_kg"]) yaml_fail(dims, file, "the studio takes a mesh's mass_kg, not its density_kg_m3");
+        p["file"] = mesh_path(dims, file);
+      }
       for (const char* key : found->keys) {
-        // The parser checked the part: only a thickness may be left out, its default 0.01 m (twin/specs.hpp).
-        p[key] = dims[key] ? Json(yaml_number(dims[key], file, key)) : Json(DiskLoad{}.thickness_m);
+        // The parser checked the part: only a thickness (default 0.01 m,
+        // twin/specs.hpp) or a mesh's scale (1) may be left out.
+        const double left_out = std::string(key) == "scale" ? MeshPart{}.scale : DiskLoad{}.thickness_m;
+        p[key] = dims[key] ? Json(yaml_number(dims[key], file, key)) : Json(left_out);
       }
       for (const char* key : {"at_m", "rpy_deg"}) {
         Json v = Json::array({0.0, 0.0, 0.0});
@@ -304,9 +329,10 @@ Json state_from_project_text(const std::string& text, const std::string& file) {
   // The file as `size --load` (a load file) or `size --cycle` (a cycle file)
   // reads it: same keys, limits, errors.
   std::optional<double> tilt;
+  const std::string base_dir = std::filesystem::path(file).parent_path().string(); // as parse_load_file
   try {
-    if (cycle) tilt = sizing::parse_cycle_text(text, file, ".").world.mounting_tilt_deg;
-    else tilt = parse_load_text(text, file, ".").mounting_tilt_deg;
+    if (cycle) tilt = sizing::parse_cycle_text(text, file, base_dir).world.mounting_tilt_deg;
+    else tilt = parse_load_text(text, file, base_dir).mounting_tilt_deg;
   } catch (const ScenarioError& e) {
     throw ProjectError(e.what());
   } catch (const sizing::SizingInputError& e) {

@@ -16,6 +16,7 @@
 #include "renders/figure.hpp"
 #include "sizing/sizing.hpp"
 #include "studio/answer.hpp"
+#include "studio/mesh_upload.hpp"
 #include "studio/studio_assets.hpp"
 #include "twin/load_builder.hpp"
 
@@ -32,7 +33,8 @@ Json meta() {
   return {{"shapes", shapes},
           {"max_load_gcm2", max_load_gcm2()},
           {"min_voltage_V", sizing::min_voltage_V()},
-          {"max_voltage_V", sizing::max_voltage_V()}};
+          {"max_voltage_V", sizing::max_voltage_V()},
+          {"max_mesh_upload_bytes", kMaxMeshUploadBytes}};
 }
 
 std::string page(const Json& initial) {
@@ -138,6 +140,14 @@ void run_studio(const StudioOptions& o, const std::function<void(const std::stri
   download("/api/export/project", ".yaml", "application/yaml", [](const Json& s) { return project_yaml(s); });
   download("/api/export/csv", ".csv", "text/csv", [](const Json& s) { return answer_csv(s); });
   download("/api/export/scenario", "_scenario.yaml", "application/yaml", [](const Json& s) { return answer_scenario(s); });
+  // An STL for a mesh part: the body is the file, ?name= the name the user picked.
+  const std::string meshes = mesh_folder(o.project);
+  // A larger body is refused (413) before it is read; the page checks the size first and names the file and limit.
+  server.set_payload_max_length(kMaxMeshUploadBytes);
+  server.Post("/api/mesh", [&](const httplib::Request& req, httplib::Response& res) {
+    const StoredMesh m = store_mesh(req.get_param_value("name"), req.body, meshes);
+    res.set_content(Json{{"file", m.path}, {"triangles", m.triangles}, {"volume", m.volume}}.dump(), kJsonType);
+  });
   server.Get("/api/picture", [&](const httplib::Request& req, httplib::Response& res) {
     const Json state = state_of(req);
     std::lock_guard<std::mutex> lock(sizing_mutex);

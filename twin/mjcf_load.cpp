@@ -1,7 +1,9 @@
 #include "twin/mjcf_load.hpp"
 
 #include <filesystem>
+#include <mutex>
 #include <regex>
+#include <set>
 #include <stdexcept>
 
 #include "twin/mjcf_checks.hpp"
@@ -20,6 +22,34 @@ void blank_out(std::string& text, std::size_t begin, std::size_t end) {
   for (std::size_t i = begin; i < end && i < text.size(); ++i) {
     if (text[i] != '\n') text[i] = ' ';
   }
+}
+
+// The load validations that passed (issue 37). A twin composes its model,
+// and so reads its MJCF load, each time it is built (sizing builds one per
+// sampled model card); compiling the load alone makes MuJoCo's default
+// mjData (13 MB zeroed): half of `size --uncertainty`'s CPU time with an
+// MJCF load. The same text with the same meshes passes again, so it is
+// compiled once; a failure is not kept (it is compiled and thrown anew).
+class ValidatedLoads {
+ public:
+  bool contains(const std::string& key) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return passed_.count(key) > 0;
+  }
+  void add(const std::string& key) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (passed_.size() >= 64) passed_.clear(); // bounded in a long-running studio or server
+    passed_.insert(key);
+  }
+
+ private:
+  std::mutex mutex_;
+  std::set<std::string> passed_;
+};
+
+ValidatedLoads& validated_loads() {
+  static ValidatedLoads loads;
+  return loads;
 }
 
 // <mesh file="F"> inside the user's file: F relative to the file's folder
@@ -133,6 +163,9 @@ LoadXml mjcf_load_xml(const std::string& given_path, const std::string& module_a
     validation = "<mujoco model=\"load\"><compiler angle=\"radian\" autolimits=\"true\"/>" + base_assets +
                  "<worldbody>" + text + "\n</worldbody></mujoco>";
   }
+  std::string key = path + '\n' + prefix + '\n' + validation;
+  for (const VfsFile& f : parts.files) key += '\n' + f.name + '\n' + f.bytes;
+  if (validated_loads().contains(key)) return parts;
   try {
     const MjModelPtr alone = compile_mjcf(validation, path, parts.files);
     check_compiled_inertials(alone.get(), path); // masses MuJoCo derived from geoms (density x volume)
@@ -141,6 +174,7 @@ LoadXml mjcf_load_xml(const std::string& given_path, const std::string& module_a
     if (why.rfind(path + ": ", 0) == 0) why.erase(0, path.size() + 2);
     throw std::invalid_argument(mjcf_error_line(why, path, prefix));
   }
+  validated_loads().add(key);
   return parts;
 }
 

@@ -14,7 +14,8 @@
 namespace sreh {
 
 // The MJCF text without the module's drawing geoms (by name, as in
-// models/sreh50.xml); "led_band" (Plant::set_led_rgba) and the loads stay.
+// models/sreh50.xml), its lights and cameras; "led_band"
+// (Plant::set_led_rgba) and the loads stay.
 std::string without_drawing_geoms(const std::string& xml);
 
 // True when both models have the same kinematic tree, the same inertials on

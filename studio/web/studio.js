@@ -12,14 +12,14 @@
   const fmt = (v, d) => (v === null || v === undefined ? '-' : Number(v).toFixed(d));
   const shapeKeys = (shape) => META.shapes.find((s) => s.shape === shape).keys;
   const DEFAULT_DIMS = {mass_kg: 0.1, radius_m: 0.03, thickness_m: 0.01, inner_radius_m: 0.01, outer_radius_m: 0.03,
-                        x_m: 0.02, y_m: 0.02, z_m: 0.02, length_m: 0.03};
+                        x_m: 0.02, y_m: 0.02, z_m: 0.02, length_m: 0.03, scale: 0.001};
 
   let state = window.STUDIO.project;
   let pins = []; // [{state, answer}]
   let seq = 0;
   let timer = null;
   const timings = []; // request -> answer shown, ms (docs/performance-sizing.md)
-  window.studio = {timings, get state() { return state; }, get pins() { return pins; }, answer: null, pending: 0};
+  window.studio = {timings, get state() { return state; }, get pins() { return pins; }, answer: null, pending: 0, uploads: []};
 
   function fromHash() {
     const m = location.hash.match(/^#state=(.*)$/);
@@ -47,12 +47,15 @@
       `<label>${key} <input id="part-${k}-${key}" data-k="${k}" data-key="${key}" type="number" step="any" value="${p[key]}"></label>`).join('');
     const vec = (key, label) => [0, 1, 2].map((i) =>
       `<label>${label[i]} <input id="part-${k}-${key}-${i}" data-k="${k}" data-key="${key}" data-i="${i}" type="number" step="any" value="${p[key][i]}"></label>`).join('');
+    // A mesh part's STL: uploaded to the studio, which stores it with the project (docs/studio.md "STL meshes").
+    const stl = p.shape !== 'mesh' ? '' : `<div class="row"><label>STL file (ASCII or binary, closed) <input id="part-${k}-stl" data-stl="${k}" type="file" accept=".stl,.STL"></label>
+<span class="note">stored: <span id="part-${k}-file" title="${esc(p.file || '')}">${p.file ? esc(p.file.split('/').pop()) : 'none yet'}</span>; scale 0.001 for a file in mm</span></div>`;
     return `<fieldset class="part" id="part-${k}"><legend>Part ${k + 1}</legend>
 <div class="row"><label>name <input id="part-${k}-name" data-k="${k}" data-key="name" type="text" value="${esc(p.name)}"></label>
 <label>shape <select id="part-${k}-shape" data-k="${k}" data-key="shape">${opts}</select></label>
 <label><input id="part-${k}-payload" data-k="${k}" data-key="payload" type="checkbox"${p.payload ? ' checked' : ''}> payload (gripped in a cycle)</label>
 <button type="button" id="part-${k}-remove" data-remove="${k}">remove</button></div>
-<div class="row">${dims}</div>
+${stl}<div class="row">${dims}</div>
 <div class="row">${vec('at_m', ['at x m', 'y m', 'z m'])}</div>
 <div class="row">${vec('rpy_deg', ['roll deg', 'pitch deg', 'yaw deg'])}</div></fieldset>`;
   }
@@ -106,6 +109,7 @@
     else if (key === 'shape') {
       const old = p;
       const next = {name: old.name, shape: el.value, at_m: old.at_m, rpy_deg: old.rpy_deg, payload: old.payload};
+      if (el.value === 'mesh') next.file = old.file || '';
       for (const dim of shapeKeys(el.value)) next[dim] = old[dim] !== undefined ? old[dim] : DEFAULT_DIMS[dim];
       state.parts[k] = next;
       renderInputs();
@@ -118,6 +122,24 @@
       if (v === null) return;
       p[key] = v;
     }
+    changed();
+  }
+
+  // Sends the picked STL to the studio; its answer is the stored file, or
+  // what is wrong with it (shown in the error line, naming the file).
+  async function uploadMesh(k, file) {
+    const fail = (why) => { $('error').hidden = false; $('error').textContent = why; window.studio.uploads.push({name: file.name, error: why}); };
+    const limit = META.max_mesh_upload_bytes;
+    if (file.size > limit) {
+      fail(`${file.name}: ${(file.size / 1048576).toFixed(1)} MB, more than the ${limit / 1048576} MB an STL upload may have`);
+      return;
+    }
+    const r = await fetch('/api/mesh?name=' + encodeURIComponent(file.name), {method: 'POST', body: file});
+    const j = await r.json().catch(() => ({error: `${file.name}: the studio refused it (HTTP ${r.status})`}));
+    if (j.error) { fail(j.error); return; }
+    state.parts[k].file = j.file;
+    window.studio.uploads.push({name: file.name, file: j.file, triangles: j.triangles});
+    renderInputs();
     changed();
   }
 
@@ -328,8 +350,11 @@ binding limit: <b id="answer-binding">${esc(s.binding_limit_words)}</b></p>
   renderInputs();
   renderCompare();
   exportLinks();
-  $('parts').addEventListener('input', (e) => { if (e.target.type !== 'checkbox') onPartInput(e); });
-  $('parts').addEventListener('change', (e) => { if (e.target.tagName === 'SELECT' || e.target.type === 'checkbox') onPartInput(e); });
+  $('parts').addEventListener('input', (e) => { if (e.target.type !== 'checkbox' && e.target.type !== 'file') onPartInput(e); });
+  $('parts').addEventListener('change', (e) => {
+    if (e.target.type === 'file') { if (e.target.files.length) uploadMesh(Number(e.target.dataset.stl), e.target.files[0]); }
+    else if (e.target.tagName === 'SELECT' || e.target.type === 'checkbox') onPartInput(e);
+  });
   // A list's remove buttons: data-remove on a part, data-seg-remove on a segment.
   const removeOnClick = (id, key, list) => $(id).addEventListener('click', (e) => {
     const k = e.target.dataset[key];
