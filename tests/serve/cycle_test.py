@@ -30,7 +30,7 @@ try:
         two HTTP reads and read again unless all four agree. Equal brackets
         alone are not enough: a count dithering 3FFF -> 4000 -> 3FFF between
         them read 4000 over both Modbus clients and 3FFF over HTTP (a bare
-        Debian 12 root at nice 19, load 10; 2 of 4 runs). Three interfaces
+        Debian 12 root at nice 19, load 10; 2 of 3 runs). Three interfaces
         that disagree about a standing value never agree and fail below."""
         seen = None
         for _ in range(50):
