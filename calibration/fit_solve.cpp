@@ -41,7 +41,7 @@ Stage solve(const std::vector<FitCase>& cases, const ModelCard& start, const Unk
   // One trial per step: on the count-rough cost a trust-region step that
   // fails rarely succeeds shortened along the same direction, and each of
   // the line search's backtracks is a replay (3-4 per failed step on the
-  // 60 s log, 27 of its 42 s of whole-log stage; A-CAL-8). A failed step
+  // 60 s log, 27 of its 46 s of whole-log stage; A-CAL-8). A failed step
   // shrinks the trust region instead, which turns the next step too.
   so.max_num_line_search_step_size_iterations = 1;
   if (progress) so.callbacks.push_back(progress);
