@@ -100,15 +100,8 @@ int main(int argc, char** argv) {
   // its truths complete.
   for (int k = first; k < first + truths; ++k) {
     for (const double load : loads) {
-      Scenario plan = test::plan_scenario(load);
-      if (!moves.empty()) { // motor on, wait, hold, then 5 steps a move
-        std::vector<Step> kept(plan.steps.begin(), plan.steps.begin() + 3);
-        for (const double m : moves) {
-          const auto from = plan.steps.begin() + 3 + 5 * static_cast<std::ptrdiff_t>(m);
-          kept.insert(kept.end(), from, from + 5);
-        }
-        plan.steps = kept;
-      }
+      const Scenario plan =
+          moves.empty() ? test::plan_scenario(load) : test::plan_moves(load, std::vector<int>(moves.begin(), moves.end()));
       for (const double noise : noises) {
         const ModelCard truth = truth_card(k, names);
         const double cpu0 = cpu_s();

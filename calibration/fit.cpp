@@ -2,103 +2,28 @@
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
 
 #include <fmt/format.h>
 
 #include "calibration/fit_adequacy.hpp"
 #include "calibration/fit_cost.hpp"
 #include "calibration/fit_refit.hpp"
+#include "calibration/fit_solve.hpp"
+#include "io/parallel.hpp"
 
 namespace sreh {
 namespace {
 
-constexpr int kMaxSolves = 4;                  // restarts of the trust region
-constexpr double kRestartGain = 0.01;          // a restart must lower the cost by 1 %
 constexpr double kZ95 = 1.959963984540054;     // two-sided 95 % of the normal distribution
 constexpr double kWideHalfWidth = 0.25;        // an interval wider than +-25 % of the value: not identified
 constexpr double kStrongCorrelation = 0.95;    // |r| above this: the data cannot separate the two
 constexpr double kAtBound = 0.001;             // within 0.1 % of the range from a bound: at it
 constexpr int kLikelihoodProbes = 5;           // step-outs per side, each twice the last
 constexpr unsigned kRefitSeed = 36;            // the refit check's noise (A-CAL-12)
-constexpr double kIdentifiedHalfWidth = 0.10;  // after the refit check: identified within +-10 % (issue 36)
 // Logs longer than twice this are first fitted on their first kCoarse_s
 // (shared out in proportion to their lengths; the plan is ~9 s), then on
 // the whole from there (A-CAL-8).
 constexpr double kCoarse_s = 10.0;
-
-// Reports every solver iteration to FitOptions::progress, counting across
-// the restarts and stages (iteration 0 of a solve is its start, not an iteration).
-class IterationProgress final : public ceres::IterationCallback {
- public:
-  IterationProgress(const FitOptions& options, const int& done_before) : options_(options), done_before_(done_before) {}
-  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
-    if (s.iteration > 0) options_.progress(done_before_ + s.iteration, options_.max_iterations);
-    return ceres::SOLVER_CONTINUE;
-  }
-
- private:
-  const FitOptions& options_;
-  const int& done_before_; // iterations of the earlier solves
-};
-
-struct Stage {
-  std::unique_ptr<ReplayCost> cost;
-  ceres::Solver::Summary summary;
-  bool converged = false; // Ceres' own tolerances (function, gradient, parameter)
-};
-
-// Solves `cases` from x (updated in place), restarted while that pays
-// (A-CAL-3); `iterations` counts on across stages.
-Stage solve(const std::vector<FitCase>& cases, const ModelCard& start, const Unknowns& u, std::vector<double>& x,
-            const FitOptions& options, int max_iterations, int& iterations) {
-  const std::size_t n = x.size();
-  Stage stage;
-  stage.cost = std::make_unique<ReplayCost>(cases, start, u, options.threads, options.relative_step);
-  ceres::Problem::Options po;
-  po.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP; // read after the solve
-  ceres::Problem problem(po);
-  problem.AddResidualBlock(stage.cost.get(), nullptr, x.data());
-  for (std::size_t i = 0; i < n; ++i) {
-    problem.SetParameterLowerBound(x.data(), static_cast<int>(i), u.lo[i]);
-    problem.SetParameterUpperBound(x.data(), static_cast<int>(i), u.hi[i]);
-  }
-  ceres::Solver::Options so;
-  so.linear_solver_type = ceres::DENSE_QR;
-  so.max_num_iterations = max_iterations;
-  so.logging_type = ceres::SILENT;
-  so.minimizer_progress_to_stdout = false;
-  // Ceres' own tests end a solve (A-CAL-8, issue 36): a step that changes
-  // the cost by less than 1e-4 of it, or the scaled constants by less than
-  // 1e-4 (0.01 % of a start value, far inside any interval). Monotonic
-  // steps: on the count-rough cost a non-monotonic trust region wanders
-  // without end at the floor; a failed step shrinks it until the parameter
-  // test ends the solve, and the spread starts (not a wider step) guard
-  // against a dip it ends in. A fresh solve from the result restores a
-  // trust region that shrank on the roughness, as long as that still
-  // lowers the cost by 1 % (A-CAL-3).
-  so.function_tolerance = 1e-4;
-  so.parameter_tolerance = 1e-4;
-  so.num_threads = 1; // the replays are parallel already
-  so.use_nonmonotonic_steps = false;
-  // With bounds Ceres refines each trust-region step by a line search; its
-  // default cubic interpolation asks for the gradient, a whole Jacobian of
-  // 2n replays, at every trial step size. Quadratic interpolation needs the
-  // cost only, one replay per trial (A-CAL-8).
-  so.line_search_interpolation_type = ceres::QUADRATIC;
-  IterationProgress progress(options, iterations);
-  if (options.progress) so.callbacks.push_back(&progress);
-  for (int attempt = 0; attempt < kMaxSolves; ++attempt) {
-    ceres::Solve(so, &problem, &stage.summary);
-    iterations += static_cast<int>(stage.summary.iterations.size()) - 1;
-    if (stage.summary.termination_type != ceres::CONVERGENCE ||
-        !(stage.summary.final_cost < (1 - kRestartGain) * stage.summary.initial_cost)) {
-      break;
-    }
-  }
-  stage.converged = stage.summary.termination_type == ceres::CONVERGENCE;
-  return stage;
-}
 
 // The first kCoarse_s of the logs, shared out in proportion to their
 // lengths; empty when the logs are not longer than twice that.
@@ -201,58 +126,26 @@ std::vector<std::vector<double>> start_points(const Unknowns& u, const std::vect
   return starts;
 }
 
-// The refit check (A-CAL-12): a log the fitted card records, with the
-// log's noise, fitted again from `start` (one start, no probes). A constant
-// whose refit lands outside its interval is not identified; otherwise its
-// interval widens by the refit's distance, and an identified one must then
-// stay within +-kIdentifiedHalfWidth.
-void refit_check(const std::vector<FitCase>& cases, const ModelCard& start, const FitOptions& options,
-                 const std::vector<std::string>& names, FitResult& result) {
+// The refit check's fit (A-CAL-12): a log the fitted card records, with
+// the log's noise, fitted again from `start` (one start, no probes);
+// apply_refit (calibration/fit_refit.hpp) gives the verdict. `replays`
+// counts the synthetic logs' recordings.
+FitResult refit_of(const std::vector<FitCase>& cases, const ModelCard& start, const FitOptions& options,
+                   const std::vector<std::string>& names, const ModelCard& fitted, double noise_counts,
+                   std::size_t& replays) {
   FitOptions o = options;
   o.names = names;
   o.starts = 1;
   o.refit_check = false;
   o.likelihood_probes = false;
   o.progress = nullptr;
-  o.noise_counts = result.noise_counts;
+  o.noise_counts = noise_counts;
   // A long log's refit is of its first seconds (A-CAL-8): cheaper, and a
   // shorter log's error is the larger, so the check is on the safe side.
   const std::vector<FitCase> coarse = coarse_cases(cases);
   const std::vector<FitCase>& refit_cases = coarse.empty() ? cases : coarse;
-  const FitResult refit =
-      fit_model(synthetic_cases(refit_cases, result.card, result.noise_counts, kRefitSeed), start, o);
-  result.replays += refit.replays + refit_cases.size(); // and the synthetic logs' replays
-  for (std::size_t i = 0; i < result.constants.size(); ++i) {
-    FittedConstant& f = result.constants[i];
-    const ModelConstant* c = start.find(f.name);
-    const double r = refit.constants[i].value;
-    f.refit = r;
-    const double distance = std::abs(r - f.value);
-    if (r < f.ci95_lo || r > f.ci95_hi) { // fit_model then reports the card's range
-      if (f.note.empty()) {
-        f.note = fmt::format("a refit of a log the fitted model records ends {:+.1f} % away, outside the interval: "
-                             "the error on this log is larger than the interval says; the card's range stands",
-                             100 * (r / f.value - 1));
-      }
-      f.identified = false;
-    } else {
-      f.ci95_lo = std::max(c->range_lo, f.ci95_lo - distance);
-      f.ci95_hi = std::min(c->range_hi, f.ci95_hi + distance);
-      const double half = 0.5 * (f.ci95_hi - f.ci95_lo);
-      if (f.identified && half > kIdentifiedHalfWidth * std::abs(f.value)) {
-        f.identified = false;
-        f.note = fmt::format("with the refit's distance its interval is +-{:.0f} %, wider than {:.0f} %",
-                             100 * half / std::abs(f.value), 100 * kIdentifiedHalfWidth);
-      } else if (f.identified) {
-        // "Identified" promises +-kIdentifiedHalfWidth, no more: the
-        // benchmark's identified constants were up to 9.7 % off with
-        // narrower intervals (docs/calibration.md "Coverage").
-        const double floor_half = kIdentifiedHalfWidth * std::abs(f.value);
-        f.ci95_lo = std::max(c->range_lo, std::min(f.ci95_lo, f.value - floor_half));
-        f.ci95_hi = std::min(c->range_hi, std::max(f.ci95_hi, f.value + floor_half));
-      }
-    }
-  }
+  replays = refit_cases.size();
+  return fit_model(synthetic_cases(refit_cases, fitted, noise_counts, kRefitSeed), start, o);
 }
 
 struct StartOutcome {
@@ -287,31 +180,50 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
   const std::vector<FitCase> coarse = coarse_cases(cases);
   const std::vector<FitCase>& first_cases = coarse.empty() ? cases : coarse;
   const std::size_t first_positions = position_count(first_cases);
-  int iterations = 0;
-  std::vector<StartOutcome> outcomes;
-  std::unique_ptr<ReplayCost> first_cost; // the best start's, when the start stage is the whole fit
-  Stage best_stage;
-  for (const std::vector<double>& x0 : start_points(u, card_x, options.starts)) {
-    StartOutcome o{x0, 0, iterations};
-    const bool card_start = outcomes.empty();
-    Stage stage = solve(first_cases, start, u, o.x, options,
-                        card_start ? options.max_iterations : options.spread_start_iterations, iterations);
-    o.iterations = iterations - o.iterations;
+  // The starts are independent: they run concurrently, each on its share
+  // of the threads, and the best is chosen by cost alone (ties to the
+  // earlier start), so the result does not depend on the scheduling.
+  IterationProgress progress(options);
+  IterationProgress* reports = options.progress ? &progress : nullptr;
+  const std::vector<std::vector<double>> points = start_points(u, card_x, options.starts);
+  const int concurrent = std::min(std::max(1, options.threads), static_cast<int>(points.size()));
+  std::vector<StartOutcome> outcomes(points.size());
+  std::vector<Stage> stages(points.size());
+  io::parallel_for(points.size(), concurrent, [&](std::size_t k) {
+    StartOutcome& o = outcomes[k];
+    o.x = points[k];
+    SolveLimits limits;
+    limits.threads = std::max(1, options.threads / concurrent);
+    if (k > 0) { // a spread start: a few iterations, no restart
+      limits.max_iterations = options.spread_start_iterations;
+      limits.max_solves = 1;
+    } else {
+      limits.max_iterations = options.max_iterations;
+    }
+    stages[k] = solve(first_cases, start, u, o.x, options, limits, o.iterations, reports);
     std::vector<double> r(residual_count(first_cases, u));
     const double* params[] = {o.x.data()};
-    stage.cost->Evaluate(params, r.data(), nullptr); // remembered: no replay
+    stages[k].cost->Evaluate(params, r.data(), nullptr); // remembered: no replay
     o.sum_squares = sum_of_squares(r, first_positions);
-    result.replays += stage.cost->replays();
-    if (outcomes.empty() || o.sum_squares < outcomes.front().sum_squares) {
-      best_stage = std::move(stage);
-      outcomes.insert(outcomes.begin(), o);
-    } else {
-      outcomes.push_back(o);
-    }
+  });
+  int iterations = 0;
+  std::size_t best = 0;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    iterations += outcomes[k].iterations;
+    result.replays += stages[k].cost->replays();
+    if (outcomes[k].sum_squares < outcomes[best].sum_squares) best = k;
   }
+  Stage best_stage = std::move(stages[best]);
+  stages.clear();
+  // The best first, the others after it in start order.
+  std::rotate(outcomes.begin(), outcomes.begin() + static_cast<std::ptrdiff_t>(best),
+              outcomes.begin() + static_cast<std::ptrdiff_t>(best) + 1);
   std::vector<double> x = outcomes.front().x;
+  SolveLimits full;
+  full.max_iterations = options.max_iterations;
+  full.threads = std::max(1, options.threads);
   if (!best_stage.converged) { // a spread start that was best after its few iterations, or the limit: on to convergence
-    best_stage = solve(first_cases, start, u, x, options, options.max_iterations, iterations);
+    best_stage = solve(first_cases, start, u, x, options, full, iterations, reports);
     result.replays += best_stage.cost->replays();
     std::vector<double> r(residual_count(first_cases, u));
     const double* params[] = {x.data()};
@@ -319,7 +231,7 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
     outcomes.front().x = x;
     outcomes.front().sum_squares = sum_of_squares(r, first_positions);
   }
-  Stage stage = coarse.empty() ? std::move(best_stage) : solve(cases, start, u, x, options, options.max_iterations, iterations);
+  Stage stage = coarse.empty() ? std::move(best_stage) : solve(cases, start, u, x, options, full, iterations, reports);
   if (!coarse.empty()) result.replays += stage.cost->replays();
 
   // The Jacobian and residuals at the solution, for the intervals.
@@ -349,6 +261,7 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
   // consistent with the log as the best. sigma2_eff = rms^2 tau per row.
   const double sigma2_eff = result.rms_residual_deg * result.rms_residual_deg * cv.autocorrelation_rows;
   const double best_ss = sum_of_squares(position_r, positions);
+  const double start_ss = sum_of_squares(start_residuals, positions);
   const double joint_threshold = chi2_95(n) * sigma2_eff;
   const double single_threshold = chi2_95(1) * sigma2_eff;
 
@@ -361,87 +274,110 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
       result.correlation[i][j] = d > 0 ? cov(ii, jj) / d : 0.0;
     }
   }
-  for (std::size_t i = 0; i < n; ++i) {
-    const ModelConstant& c = result.card.constants[u.card_index[i]];
-    const ModelConstant& card_c = start.constants[u.card_index[i]];
-    FittedConstant f;
-    f.name = c.name;
-    f.unit = c.unit;
-    f.value = c.value;
-    f.start = card_c.value;
-    const auto ii = static_cast<Eigen::Index>(i);
-    const double half_u = kZ95 * std::sqrt(std::max(0.0, cov(ii, ii)));
-    double lo_u = std::max(u.lo[i], x[i] - half_u), hi_u = std::min(u.hi[i], x[i] + half_u);
-    // The curvature's interval assumes a smooth cost; on the replay's rough
-    // one, step out from the solution along the linearised profile path
-    // (constant i moved, the others as the covariance says they follow:
-    // x + t C[:, i] / C[i, i]) while the sum of squares stays within the
-    // single-constant threshold: a profile likelihood interval at one
-    // replay per probe, without a sub-fit per point.
-    Eigen::VectorXd path = cov.col(ii);
-    if (cov(ii, ii) > 0) path /= cov(ii, ii);
-    else path = Eigen::VectorXd::Unit(static_cast<Eigen::Index>(n), ii);
-    for (const int side : {-1, +1}) {
-      double step = std::max(half_u, 0.01 * (u.hi[i] - u.lo[i]));
-      double reached = side < 0 ? lo_u : hi_u;
-      for (int probe = 0; probe < (options.likelihood_probes ? kLikelihoodProbes : 0); ++probe) {
-        std::vector<double> xp = x;
-        for (std::size_t j = 0; j < n; ++j) {
-          xp[j] = std::clamp(x[j] + side * step * path(static_cast<Eigen::Index>(j)), u.lo[j], u.hi[j]);
-        }
-        if (xp[i] == x[i]) break;
-        std::vector<double> rp(positions);
-        residuals_into(cases, card_at(start, u, xp.data()), rp.data(), false);
-        ++result.replays;
-        if (sum_of_squares(rp, positions) - best_ss > single_threshold) break;
-        reached = side < 0 ? std::min(reached, xp[i]) : std::max(reached, xp[i]);
-        if (xp[i] == (side < 0 ? u.lo[i] : u.hi[i])) break;
-        step *= 2;
-      }
-      (side < 0 ? lo_u : hi_u) = reached;
-    }
-    f.likelihood_widened = lo_u < x[i] - half_u * (1 + 1e-9) || hi_u > x[i] + half_u * (1 + 1e-9);
-    // Every other start that ended inside the joint region is an equally
-    // good answer: the interval covers it, and if it lies outside the
-    // curvature's interval the starts disagree.
-    for (std::size_t k = 1; k < outcomes.size(); ++k) {
-      const double excess = outcomes[k].sum_squares - outcomes.front().sum_squares;
-      const double threshold = joint_threshold * static_cast<double>(first_positions) / static_cast<double>(positions);
-      if (excess > threshold) continue;
-      const double v = outcomes[k].x[i];
-      if (v < x[i] - half_u || v > x[i] + half_u) f.starts_disagree = true;
-      lo_u = std::min(lo_u, v);
-      hi_u = std::max(hi_u, v);
-    }
-    f.ci95_lo = f.likelihood_lo = lo_u * u.scale[i];
-    f.ci95_hi = f.likelihood_hi = hi_u * u.scale[i];
-    const double half = 0.5 * (f.ci95_hi - f.ci95_lo);
-    const double range = c.range_hi - c.range_lo;
-    f.at_bound = f.value <= c.range_lo + kAtBound * range || f.value >= c.range_hi - kAtBound * range;
-    // Why a constant is not identified, the first reason that applies.
-    if (cv.singular || half_u == 0) {
-      f.note = "the data do not move the position: no interval";
-    } else if (result.iterations == 0 || f.value == f.start) {
-      f.note = "the solve did not move it from the start";
-    } else if (f.at_bound) {
-      f.note = "at its bound: the module lies outside the card's range, or the model is wrong";
-    } else if (f.starts_disagree) {
-      f.note = "another start ends as well elsewhere: the interval covers both";
-    } else if (half > kWideHalfWidth * std::abs(f.value)) {
-      f.note = fmt::format("wide interval: +-{:.0f} % of the value", 100 * half / std::abs(f.value));
-    }
-    for (std::size_t j = 0; j < n && f.note.empty(); ++j) {
-      if (j != i && std::abs(result.correlation[i][j]) > kStrongCorrelation) {
-        f.note = fmt::format("correlated with {} (r = {:.2f})", names[j], result.correlation[i][j]);
-      }
-    }
-    f.identified = f.note.empty();
-    result.constants.push_back(f);
-  }
-
-  // Adequacy (A-CAL-10): the rms against the log's own floor.
+  // The intervals (one replay per likelihood probe, on one thread) and the
+  // refit check's fit (A-CAL-12) do not depend on each other: they run
+  // concurrently, and the refit's verdict is applied after both.
   result.noise_counts = options.noise_counts ? *options.noise_counts : estimated_noise_counts(cases);
-  if (options.refit_check) refit_check(cases, start, options, names, result);
+  FitResult refit;
+  std::size_t synthetic_replays = 0;
+  const ModelCard fitted = result.card;
+  io::parallel_for(options.refit_check ? 2 : 1, options.threads, [&](std::size_t task) {
+    if (task == 1) {
+      refit = refit_of(cases, start, options, names, fitted, result.noise_counts, synthetic_replays);
+      return;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      const ModelConstant& c = result.card.constants[u.card_index[i]];
+      const ModelConstant& card_c = start.constants[u.card_index[i]];
+      FittedConstant f;
+      f.name = c.name;
+      f.unit = c.unit;
+      f.value = c.value;
+      f.start = card_c.value;
+      const auto ii = static_cast<Eigen::Index>(i);
+      const double half_u = kZ95 * std::sqrt(std::max(0.0, cov(ii, ii)));
+      double lo_u = std::max(u.lo[i], x[i] - half_u), hi_u = std::min(u.hi[i], x[i] + half_u);
+      // The curvature's interval assumes a smooth cost; on the replay's rough
+      // one, step out from the solution along the linearised profile path
+      // (constant i moved, the others as the covariance says they follow:
+      // x + t C[:, i] / C[i, i]) while the sum of squares stays within the
+      // single-constant threshold: a profile likelihood interval at one
+      // replay per probe, without a sub-fit per point.
+      Eigen::VectorXd path = cov.col(ii);
+      if (cov(ii, ii) > 0) path /= cov(ii, ii);
+      else path = Eigen::VectorXd::Unit(static_cast<Eigen::Index>(n), ii);
+      for (const int side : {-1, +1}) {
+        double step = std::max(half_u, 0.01 * (u.hi[i] - u.lo[i]));
+        double reached = side < 0 ? lo_u : hi_u;
+        for (int probe = 0; probe < (options.likelihood_probes ? kLikelihoodProbes : 0); ++probe) {
+          std::vector<double> xp = x;
+          for (std::size_t j = 0; j < n; ++j) {
+            xp[j] = std::clamp(x[j] + side * step * path(static_cast<Eigen::Index>(j)), u.lo[j], u.hi[j]);
+          }
+          if (xp[i] == x[i]) break;
+          std::vector<double> rp(positions);
+          residuals_into(cases, card_at(start, u, xp.data()), rp.data(), false);
+          ++result.replays;
+          if (sum_of_squares(rp, positions) - best_ss > single_threshold) break;
+          reached = side < 0 ? std::min(reached, xp[i]) : std::max(reached, xp[i]);
+          if (xp[i] == (side < 0 ? u.lo[i] : u.hi[i])) break;
+          step *= 2;
+        }
+        (side < 0 ? lo_u : hi_u) = reached;
+      }
+      f.likelihood_widened = lo_u < x[i] - half_u * (1 + 1e-9) || hi_u > x[i] + half_u * (1 + 1e-9);
+      // Every other start that ended inside the joint region is an equally
+      // good answer: the interval covers it, and if it lies outside the
+      // curvature's interval the starts disagree.
+      for (std::size_t k = 1; k < outcomes.size(); ++k) {
+        const double excess = outcomes[k].sum_squares - outcomes.front().sum_squares;
+        const double threshold = joint_threshold * static_cast<double>(first_positions) / static_cast<double>(positions);
+        if (excess > threshold) continue;
+        const double v = outcomes[k].x[i];
+        if (v < x[i] - half_u || v > x[i] + half_u) f.starts_disagree = true;
+        lo_u = std::min(lo_u, v);
+        hi_u = std::max(hi_u, v);
+      }
+      // So is the start card itself when its sum of squares is inside the
+      // joint region: the data do not tell the fit from where it began.
+      bool start_as_good = false;
+      if (start_ss - best_ss <= joint_threshold) {
+        start_as_good = card_x[i] < x[i] - half_u || card_x[i] > x[i] + half_u;
+        lo_u = std::min(lo_u, card_x[i]);
+        hi_u = std::max(hi_u, card_x[i]);
+      }
+      f.ci95_lo = f.likelihood_lo = lo_u * u.scale[i];
+      f.ci95_hi = f.likelihood_hi = hi_u * u.scale[i];
+      const double half = 0.5 * (f.ci95_hi - f.ci95_lo);
+      const double range = c.range_hi - c.range_lo;
+      f.at_bound = f.value <= c.range_lo + kAtBound * range || f.value >= c.range_hi - kAtBound * range;
+      // Why a constant is not identified, the first reason that applies.
+      if (cv.singular || half_u == 0) {
+        f.note = "the data do not move the position: no interval";
+      } else if (result.iterations == 0 || f.value == f.start) {
+        f.note = "the solve did not move it from the start";
+      } else if (f.at_bound) {
+        f.note = "at its bound: the module lies outside the card's range, or the model is wrong";
+      } else if (start_as_good) {
+        f.note = "the start card explains the log as well: the data do not tell the fitted value from the start";
+      } else if (f.starts_disagree) {
+        f.note = "another start ends as well elsewhere: the interval covers both";
+      } else if (half > kWideHalfWidth * std::abs(f.value)) {
+        f.note = fmt::format("wide interval: +-{:.0f} % of the value", 100 * half / std::abs(f.value));
+      }
+      for (std::size_t j = 0; j < n && f.note.empty(); ++j) {
+        if (j != i && std::abs(result.correlation[i][j]) > kStrongCorrelation) {
+          f.note = fmt::format("correlated with {} (r = {:.2f})", names[j], result.correlation[i][j]);
+        }
+      }
+      f.identified = f.note.empty();
+      result.constants.push_back(f);
+    }
+  });
+  if (options.refit_check) {
+    apply_refit(refit, start, result);
+    result.replays += refit.replays + synthetic_replays;
+  }
   // A constant not identified has no interval to trust (issue 36): it
   // reports the card's range, which holds any module of the type.
   for (FittedConstant& f : result.constants) {

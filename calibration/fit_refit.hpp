@@ -20,4 +20,12 @@ namespace sreh {
 std::vector<FitCase> synthetic_cases(const std::vector<FitCase>& cases, const ModelCard& card, double noise_counts,
                                      unsigned seed);
 
+// The verdict of a refit (`refit`, one constant each, in `result`'s order)
+// on `result`: a constant whose refit lands outside its interval is not
+// identified; otherwise its interval widens by the refit's distance, and an
+// identified one must then stay within +-kIdentifiedHalfWidth of its value
+// and its interval is at least that wide.
+inline constexpr double kIdentifiedHalfWidth = 0.10; // issue 36's tolerance
+void apply_refit(const FitResult& refit, const ModelCard& start, FitResult& result);
+
 } // namespace sreh

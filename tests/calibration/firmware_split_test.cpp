@@ -13,6 +13,7 @@
 
 #include "calibration/fit.hpp"
 #include "calibration_rig.hpp"
+#include "done_when.hpp"
 #include "twin/firmware_motor.hpp"
 
 namespace sreh {
@@ -95,6 +96,7 @@ TEST(FirmwareSplit, MotorConstantsFromThePlan) {
       EXPECT_NEAR(f.value, t, 0.10 * t) << f.name;
     }
   }
+  test::expect_predicts_held_out(fit.card, truth, 0.05); // issue 36's done-when
 }
 
 } // namespace

@@ -185,5 +185,37 @@ TEST(FitHonesty, SeveralStartsReachTheMinimum) {
   EXPECT_GE(c.ci95_hi, t);
 }
 
+// Issue 36: the starts run concurrently and the refit beside the intervals;
+// the result must not depend on how many threads there are or how they
+// were scheduled (one thread runs everything in order).
+TEST(FitHonesty, TheResultDoesNotDependOnTheThreads) {
+  if (kSanitized) GTEST_SKIP() << "two fits from three starts with the refit check; checked in the Release stage";
+  const Scenario plan = short_plan(kPlanLoad_gcm2);
+  const ModelCard truth = test::card_with({{"coulomb_friction", 1.2 * default_model_card().find("coulomb_friction")->value},
+                                           {"stribeck_excess", 0.8 * default_model_card().find("stribeck_excess")->value}});
+  const auto cases = cases_for(test::record_log(plan, truth), plan, kPlanLoad_gcm2);
+  FitOptions options;
+  options.names = {"coulomb_friction", "stribeck_excess"};
+  options.threads = 1;
+  const FitResult one = fit_model(cases, default_model_card(), options);
+  options.threads = 3;
+  const FitResult three = fit_model(cases, default_model_card(), options);
+  EXPECT_EQ(one.iterations, three.iterations);
+  EXPECT_EQ(one.replays, three.replays);
+  EXPECT_EQ(one.rms_residual_deg, three.rms_residual_deg);
+  ASSERT_EQ(one.constants.size(), three.constants.size());
+  for (std::size_t i = 0; i < one.constants.size(); ++i) {
+    const FittedConstant& a = one.constants[i];
+    const FittedConstant& b = three.constants[i];
+    std::printf("%s: %g [%g, %g] refit %g %s\n", a.name.c_str(), a.value, a.ci95_lo, a.ci95_hi, a.refit.value_or(NAN),
+                a.identified ? "identified" : a.note.c_str());
+    EXPECT_EQ(a.value, b.value) << a.name;
+    EXPECT_EQ(a.ci95_lo, b.ci95_lo) << a.name;
+    EXPECT_EQ(a.ci95_hi, b.ci95_hi) << a.name;
+    EXPECT_EQ(a.refit, b.refit) << a.name;
+    EXPECT_EQ(a.identified, b.identified) << a.name;
+  }
+}
+
 } // namespace
 } // namespace sreh

@@ -1,0 +1,52 @@
+// Issue 36's done-when, shared by the calibration tests: what a fit of a
+// hidden truth must give (every reported 95 % interval holds the truth,
+// every constant flagged identified is within a tolerance) and what the
+// fitted card must predict (a held-out move: 135 deg with its own
+// parameter set, in no plan).
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <gtest/gtest.h>
+
+#include "calibration/fit.hpp"
+#include "calibration_rig.hpp"
+
+namespace sreh::test {
+
+// Every constant flagged identified is within `tolerance` of the truth, and
+// every reported 95 % interval (identified or not) contains it; at least
+// `identified` of them are identified.
+inline void expect_recovered(const FitResult& fit, const ModelCard& hidden, double tolerance, int identified) {
+  int flagged = 0;
+  for (const FittedConstant& f : fit.constants) {
+    const double truth = hidden.find(f.name)->value;
+    std::printf("%-22s truth %-10g start %-10g fit %-10g (%+.1f %%) ci95 [%g, %g] refit %g%s\n", f.name.c_str(), truth,
+                f.start, f.value, 100 * (f.value / truth - 1), f.ci95_lo, f.ci95_hi, f.refit.value_or(NAN),
+                f.identified ? "" : (" not identified: " + f.note).c_str());
+    EXPECT_LE(f.ci95_lo, truth) << f.name;
+    EXPECT_GE(f.ci95_hi, truth) << f.name;
+    if (f.identified) {
+      ++flagged;
+      EXPECT_NEAR(f.value, truth, tolerance * truth) << f.name;
+    }
+  }
+  EXPECT_GE(flagged, identified);
+}
+
+// The held-out move on the fitted card against the truth's: the maximum
+// tracking error within `tolerance`, the time into the window within
+// max(`tolerance`, 2 ms); with `load_gcm2` attached (and configured).
+inline void expect_predicts_held_out(const ModelCard& fitted, const ModelCard& hidden, double tolerance,
+                                     double load_gcm2 = 5000) {
+  const MoveRecord truth = held_out_move(hidden, load_gcm2);
+  const MoveRecord predicted = held_out_move(fitted, load_gcm2);
+  ASSERT_TRUE(truth.in_window_s && predicted.in_window_s);
+  std::printf("held-out: tracking %.5f vs %.5f deg, in window %.4f vs %.4f s\n", predicted.max_tracking_error_deg,
+              truth.max_tracking_error_deg, *predicted.in_window_s, *truth.in_window_s);
+  EXPECT_NEAR(predicted.max_tracking_error_deg, truth.max_tracking_error_deg, tolerance * truth.max_tracking_error_deg);
+  EXPECT_NEAR(*predicted.in_window_s, *truth.in_window_s, std::max(tolerance * *truth.in_window_s, 0.002));
+}
+
+} // namespace sreh::test
