@@ -64,7 +64,7 @@ TEST(CalibrationCases, FrictionAndDriveTrainWithoutLoad) {
   test::expect_predicts_held_out(fit.card, truth, 0.05, 0);
 }
 
-TEST(CalibrationCases, FrictionAndDriveTrainWithoutLoadWithOneCountOfNoise) {
+TEST(CalibrationCases, FrictionWithoutLoadWithOneCountOfNoise) {
   if (kSanitized) GTEST_SKIP() << "a fit from three starts with the refit check; checked in the Release stage";
   const Scenario plan = test::plan_moves(0, kMoves);
   const ModelCard truth = friction_truth();
