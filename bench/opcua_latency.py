@@ -39,6 +39,10 @@ def run(with_opcua):
 
     def mover():  # manual 3.2: Move held until Done, released until Ready
         plc.write_registers(1010, pd_out_registers(motor_on=1), slave=1)
+        # Ready before the first Move (manual 3.2 T1): a Move in MotorOff is
+        # an error (114.6.4) and the port would never move at all.
+        while not stop.is_set() and not plc.read_holding_registers(1001, 4, slave=1).registers[3] >> 8 & 2:
+            time.sleep(0.004)
         target = 0
         while not stop.is_set():
             target = 16384 if target == 0 else 0
