@@ -149,7 +149,7 @@ void Plant::set_drive_train_state() {
                                     (1.0 - c.gear_efficiency) * std::abs(transmitted_Nm);
 }
 
-// A-TWIN-47: the mesh damping d and the rotor's drag b, integrated
+// A-TWIN-48: the mesh damping d and the rotor's drag b, integrated
 // linearly implicitly, (M + h D) a = f - D v, as MuJoCo's Euler does with
 // dof damping, but visible to its constraint solver: the force -D v goes in
 // as an applied force and h D onto the mass matrix's diagonal (armature).
