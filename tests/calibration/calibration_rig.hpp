@@ -15,6 +15,18 @@
 
 namespace sreh::test {
 
+// The plan's load in the calibration tests: the rated 15000 g cm^2.
+inline constexpr double kPlanLoad_gcm2 = 15000;
+
+// A fit of seconds to a minute of CPU in Release is many minutes under
+// AddressSanitizer: the sanitizer stage runs the cheap checks only, and the
+// heavy fits skip there (checked in the Release stage).
+#if defined(SREH_SANITIZED)
+inline constexpr bool kSanitized = true;
+#else
+inline constexpr bool kSanitized = false;
+#endif
+
 inline Scenario plan_scenario(double load_gcm2) {
   PlanRequest p;
   p.load_gcm2 = load_gcm2;

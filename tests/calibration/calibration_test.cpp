@@ -17,6 +17,9 @@
 namespace sreh {
 namespace {
 
+using test::kPlanLoad_gcm2;
+using test::kSanitized;
+
 // The hidden module (examples/calibration/hidden_module.yaml): five
 // friction, stiffness and damping constants moved by 24-35 % inside their
 // ranges (issue 35: the values follow the card's drive layout).
@@ -30,8 +33,6 @@ ModelCard hidden_card() {
 
 // The plan with the heaviest load the module takes (manual 3.5.6): the
 // flange's ringing after fast stops shows stiffness and damping best.
-constexpr double kPlanLoad_gcm2 = 15000;
-
 std::vector<FitCase> cases_for(const MasterLog& log, const Scenario& plan) {
   FitCase c;
   c.log = log;
@@ -50,14 +51,6 @@ TEST(Replay, TheRecordingModelGivesTheLogBackBitForBit) {
 
 using test::expect_predicts_held_out;
 using test::expect_recovered;
-
-// A fit of 10-20 s of CPU in Release is minutes under AddressSanitizer:
-// the sanitizer stage (CI) runs the cheap fit below instead.
-#if defined(SREH_SANITIZED)
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
 
 // The fit itself, cheaply, everywhere: one constant from the first moves of the plan.
 TEST(Calibration, OneConstantFromAShortLog) {

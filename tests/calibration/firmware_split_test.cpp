@@ -19,13 +19,8 @@
 namespace sreh {
 namespace {
 
-constexpr double kPlanLoad_gcm2 = 15000;
-
-#if defined(SREH_SANITIZED)
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
+using test::kPlanLoad_gcm2;
+using test::kSanitized;
 
 std::size_t differing_rows(const MasterLog& a, const MasterLog& b) {
   EXPECT_EQ(a.rows.size(), b.rows.size());

@@ -19,15 +19,8 @@
 namespace sreh {
 namespace {
 
-constexpr double kPlanLoad_gcm2 = 15000;
-
-// Fits of seconds in Release are minutes under AddressSanitizer: the
-// sanitizer stage runs the cheap checks only (as calibration_test does).
-#if defined(SREH_SANITIZED)
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
+using test::kPlanLoad_gcm2;
+using test::kSanitized;
 
 std::vector<FitCase> cases_for(const MasterLog& log, const Scenario& plan, double load_gcm2) {
   FitCase c;

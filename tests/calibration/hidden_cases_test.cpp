@@ -19,11 +19,7 @@
 namespace sreh {
 namespace {
 
-#if defined(SREH_SANITIZED)
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
+using test::kSanitized;
 
 const std::vector<int> kMoves{0, 1, 2, 7};
 
