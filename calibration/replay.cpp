@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "device_logic/parameter_table.hpp"
+#include "scenarios/runner.hpp"
 
 namespace sreh {
 namespace {
@@ -76,6 +77,30 @@ ReplayTrack replay(const ReplaySetup& setup, const ModuleModel& module, const Ma
     track.pd_in.push_back(twin.last_row().pd_in);
   }
   return track;
+}
+
+MasterLog record_master_log(Scenario scenario, const ModuleModel& module) {
+  scenario.world.module = module;
+  MasterLog log;
+  log.path = "recorded.csv";
+  log.has_temperature = true;
+  std::optional<double> polled_C;
+  RunOptions o;
+  o.trace_sink = [&](const TraceRow& r) {
+    MasterLogRow row;
+    row.t_s = r.t_s;
+    row.pd_out = r.pd_out;
+    row.pd_in = r.pd_in;
+    row.temperature_C = polled_C;
+    polled_C.reset();
+    row.line = static_cast<int>(log.rows.size()) + 2; // after the header, as the file would number it
+    log.rows.push_back(row);
+  };
+  o.on_isdu_read = [&](uint16_t index, uint8_t subindex, const IsduResult& result) {
+    if (index == 112 && subindex == 0 && result.ok() && result.data.size() == 1) polled_C = 0.5 * result.data[0]; // manual 6.4
+  };
+  run_scenario(scenario, o);
+  return log;
 }
 
 } // namespace sreh

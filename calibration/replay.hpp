@@ -39,4 +39,9 @@ struct ReplayTrack {
 
 ReplayTrack replay(const ReplaySetup& setup, const ModuleModel& module, const MasterLog& log);
 
+// The master log `scenario` gives on a module with `module`'s constants, in
+// memory as `run --master-log` writes it: one row per cycle, a polled
+// temperature (index 112, manual 6.4) on the row after the read.
+MasterLog record_master_log(Scenario scenario, const ModuleModel& module);
+
 } // namespace sreh

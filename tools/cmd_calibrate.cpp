@@ -15,11 +15,13 @@
 #include "calibration/calibrate.hpp"
 #include "calibration/fit_output.hpp"
 #include "calibration/plan.hpp"
+#include "calibration/plan_sensitivity.hpp"
 #include "calibration/report.hpp"
 #include "io/atomic_file.hpp"
 #include "io/cpus.hpp"
 #include "io/output_path.hpp"
 #include "scenarios/load_file.hpp"
+#include "scenarios/scenario_parser.hpp"
 #include "tools/command.hpp"
 #include "tools/progress.hpp"
 
@@ -71,9 +73,24 @@ int plan_command(const CalibrateArgs& a) {
   } catch (const CalibrationInputError& e) {
     throw InputError(e.what());
   }
+  // What each move shows (issue 36), measured before anything is written:
+  // a --model that does not read is refused with the plan unwritten.
+  ModelCard card;
+  try {
+    card = a.request.model.empty() ? default_model_card() : apply_model_file(default_model_card(), a.request.model);
+  } catch (const ModelCardError& e) {
+    throw InputError(fmt::format("--model {}", e.what()));
+  }
+  std::vector<std::string> names = default_fit_names();
+  names.insert(names.end(), {"rotor_inertia", "torque_constant", "winding_resistance", "velocity_bandwidth",
+                             "position_ratio", "integral_ratio"});
+  const PlanSensitivity shows =
+      plan_sensitivity(parse_scenario_text(text, a.plan, ""), card, names, std::max(1, io::usable_cpus()));
   io::write_file_atomic(a.plan, [&](std::ostream& out) { out << text; });
   std::cout << "wrote " << a.plan << " (the identification program: run it on the module with the master logging, "
-            << "then calibrate the logs with --setup " << a.plan << ")\n";
+            << "then calibrate the logs with --setup " << a.plan << ")\n"
+            << format_plan_sensitivity(shows)
+            << "The default fit is the first five; the others with --fit NAME,... (docs/calibration.md).\n";
   return 0;
 }
 

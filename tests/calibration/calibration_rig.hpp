@@ -75,26 +75,7 @@ inline Scenario heating_scenario(double load_gcm2, double time_scale) {
 // temperatures on the next row as `run --master-log` writes them; with a
 // seed, one wire count of uniform noise added to every logged position.
 inline MasterLog record_log(Scenario scenario, const ModelCard& card, std::optional<unsigned> noise_seed = {}) {
-  scenario.world.module = card.module_model();
-  MasterLog log;
-  log.path = "recorded.csv";
-  log.has_temperature = true;
-  std::optional<double> polled_C;
-  RunOptions o;
-  o.trace_sink = [&](const TraceRow& r) {
-    MasterLogRow row;
-    row.t_s = r.t_s;
-    row.pd_out = r.pd_out;
-    row.pd_in = r.pd_in;
-    row.temperature_C = polled_C;
-    polled_C.reset();
-    row.line = static_cast<int>(log.rows.size()) + 2;
-    log.rows.push_back(row);
-  };
-  o.on_isdu_read = [&](uint16_t index, uint8_t subindex, const IsduResult& result) {
-    if (index == 112 && subindex == 0 && result.ok() && result.data.size() == 1) polled_C = 0.5 * result.data[0]; // manual 6.4
-  };
-  run_scenario(scenario, o);
+  MasterLog log = record_master_log(std::move(scenario), card.module_model());
   if (noise_seed) {
     std::mt19937 rng(*noise_seed);
     std::uniform_int_distribution<int> count(-1, 1);
