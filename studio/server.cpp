@@ -23,7 +23,13 @@
 namespace sreh::studio {
 namespace {
 
-constexpr const char* kJsonType = "application/json";
+// With a charset the studio's JSON goes uncompressed: cpp-httplib compresses
+// a body of exactly "application/json" (as any text/) when the browser
+// accepts it, and Chromium accepts brotli, which this library runs at
+// quality 11: 60-130 ms for a single move's ~85 kB answer, more than the
+// answer itself often takes, to save nothing over the loopback (issue 37,
+// docs/performance-sizing.md).
+constexpr const char* kJsonType = "application/json; charset=utf-8";
 
 // What the page needs to know besides the state: the shapes and the limits
 // (read from the sizing, never retyped in the script).
