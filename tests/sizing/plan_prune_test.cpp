@@ -81,7 +81,7 @@ std::vector<Beyond> just_beyond(const SizingRequest& rq, double load_gcm2, doubl
 
 class PlanPrune : public ::testing::TestWithParam<Case> {};
 
-TEST_P(PlanPrune, SetsBeyondTheBoundMissTheTargetWhenRun_3_5_2) {
+TEST_P(PlanPrune, BeyondBoundMisses_3_5_2) {
   const SizingRequest rq = request(GetParam());
   const double load_gcm2 = validate(rq);
   const double wait_s = make_parameter_set(rq, MotionSetting{}, load_gcm2).wait_ms * 1e-3;
@@ -105,7 +105,7 @@ TEST_P(PlanPrune, SetsBeyondTheBoundMissTheTargetWhenRun_3_5_2) {
 // Every run the search made (kept in `tried`) positions no earlier than its
 // planned travel plus the waiting time: the bound holds for the sets the
 // search did run, feasible or not.
-TEST_P(PlanPrune, EveryRunPositionsNoEarlierThanTravelPlusWait_3_5_2) {
+TEST_P(PlanPrune, RunsMeetBound_3_5_2) {
   const SizingRequest rq = request(GetParam());
   const SizingResult r = size(rq);
   ASSERT_EQ(r.objective, "gentlest");
@@ -120,11 +120,11 @@ TEST_P(PlanPrune, EveryRunPositionsNoEarlierThanTravelPlusWait_3_5_2) {
   EXPECT_GT(completed, 0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Targets, PlanPrune,
-                         ::testing::Values(Case{"move90_5000g_300ms", 90.0, 5000.0, 0.0, 300.0, 0.0},
-                                           Case{"move60_4000g_260ms", 60.0, 4000.0, 0.3, 260.0, 0.0},
-                                           Case{"move45_8000g_250ms", 45.0, 8000.0, 0.0, 250.0, 0.0},
-                                           Case{"cycle120_3000g_900ms", 120.0, 3000.0, 0.1, 0.0, 900.0}),
+INSTANTIATE_TEST_SUITE_P(Cases, PlanPrune,
+                         ::testing::Values(Case{"m90_5000g_300ms", 90.0, 5000.0, 0.0, 300.0, 0.0},
+                                           Case{"m60_4000g_260ms", 60.0, 4000.0, 0.3, 260.0, 0.0},
+                                           Case{"m45_8000g_250ms", 45.0, 8000.0, 0.0, 250.0, 0.0},
+                                           Case{"c120_3000g_900ms", 120.0, 3000.0, 0.1, 0.0, 900.0}),
                          [](const ::testing::TestParamInfo<Case>& p) { return std::string(p.param.name); });
 
 } // namespace
