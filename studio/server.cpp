@@ -6,7 +6,9 @@
 #include <cctype>
 #include <chrono>
 #include <ctime>
+#include <memory>
 #include <mutex>
+#include <string>
 #include <thread>
 
 #include <fmt/format.h>
@@ -24,6 +26,24 @@ namespace sreh::studio {
 namespace {
 
 constexpr const char* kJsonType = "application/json";
+
+// Every response goes out as it is, never compressed: cpp-httplib compresses
+// a JSON or text/ body when the client accepts it, and Chromium accepts
+// brotli, which the library runs at quality 11: 60-130 ms for a single
+// move's ~85 kB answer (more than the answer itself often takes), 0.5 s for
+// a report, to save nothing over the loopback (issue 37,
+// docs/performance-sizing.md). A body of known length from a content
+// provider is written as it is.
+void reply(httplib::Response& res, std::string body, const std::string& type) {
+  if (body.empty()) {
+    res.set_content(body, type);
+    return;
+  }
+  auto kept = std::make_shared<const std::string>(std::move(body));
+  res.set_content_provider(kept->size(), type, [kept](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+    return sink.write(kept->data() + offset, length);
+  });
+}
 
 // What the page needs to know besides the state: the shapes and the limits
 // (read from the sizing, never retyped in the script).
@@ -92,9 +112,9 @@ void run_studio(const StudioOptions& o, const std::function<void(const std::stri
       what = e.what();
     }
     res.status = 400;
-    res.set_content(Json{{"error", what}}.dump(), kJsonType);
+    reply(res, Json{{"error", what}}.dump(), kJsonType);
   });
-  server.Get("/", [&](const httplib::Request&, httplib::Response& res) { res.set_content(html, "text/html; charset=utf-8"); });
+  server.Get("/", [&](const httplib::Request&, httplib::Response& res) { reply(res, html, "text/html; charset=utf-8"); });
   server.Get(R"(/assets/([A-Za-z0-9._-]+))", [](const httplib::Request& req, httplib::Response& res) {
     const std::string name = req.matches[1];
     const std::string_view body = find_studio_asset(name);
@@ -102,7 +122,7 @@ void run_studio(const StudioOptions& o, const std::function<void(const std::stri
       res.status = 404;
       return;
     }
-    res.set_content(std::string(body), content_type_for(name));
+    reply(res, std::string(body), content_type_for(name));
   });
   server.Post("/api/answer", [&](const httplib::Request& req, httplib::Response& res) {
     const Json state = state_of(req);
@@ -119,11 +139,11 @@ void run_studio(const StudioOptions& o, const std::function<void(const std::stri
     // Wall time (includes waiting for another tab's sizing) and this thread's CPU time (docs/performance-sizing.md).
     a["elapsed_ms"] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     a["cpu_ms"] = cpu_ms;
-    res.set_content(a.dump(), kJsonType);
+    reply(res, a.dump(), kJsonType);
   });
   // The progress of the answer being computed (a cycle takes seconds): its simulations so far.
   server.Get("/api/progress", [&](const httplib::Request&, httplib::Response& res) {
-    res.set_content(Json{{"simulations", simulations.load()}}.dump(), kJsonType);
+    reply(res, Json{{"simulations", simulations.load()}}.dump(), kJsonType);
   });
   auto download = [&](const char* path, const char* ext, const char* type, auto make) {
     server.Get(path, [&, ext, type, make](const httplib::Request& req, httplib::Response& res) {
@@ -134,7 +154,7 @@ void run_studio(const StudioOptions& o, const std::function<void(const std::stri
         body = make(state);
       }
       res.set_header("Content-Disposition", fmt::format("attachment; filename=\"{}{}\"", file_stem(state), ext));
-      res.set_content(body, type);
+      reply(res, body, type);
     });
   };
   download("/api/export/project", ".yaml", "application/yaml", [](const Json& s) { return project_yaml(s); });
@@ -146,17 +166,17 @@ void run_studio(const StudioOptions& o, const std::function<void(const std::stri
   server.set_payload_max_length(kMaxMeshUploadBytes);
   server.Post("/api/mesh", [&](const httplib::Request& req, httplib::Response& res) {
     const StoredMesh m = store_mesh(req.get_param_value("name"), req.body, meshes);
-    res.set_content(Json{{"file", m.path}, {"triangles", m.triangles}, {"volume", m.volume}}.dump(), kJsonType);
+    reply(res, Json{{"file", m.path}, {"triangles", m.triangles}, {"volume", m.volume}}.dump(), kJsonType);
   });
   server.Get("/api/picture", [&](const httplib::Request& req, httplib::Response& res) {
     const Json state = state_of(req);
     std::lock_guard<std::mutex> lock(sizing_mutex);
-    res.set_content(load_picture_png(state), "image/png");
+    reply(res, load_picture_png(state), "image/png");
   });
   server.Get("/report", [&](const httplib::Request& req, httplib::Response& res) {
     const Json state = state_of(req);
     std::lock_guard<std::mutex> lock(sizing_mutex);
-    res.set_content(answer_report(state, o.version), "text/html; charset=utf-8");
+    reply(res, answer_report(state, o.version), "text/html; charset=utf-8");
   });
   const int port = o.port == 0 ? server.bind_to_any_port(o.host) : (server.bind_to_port(o.host, o.port) ? o.port : -1);
   if (port < 0) throw std::runtime_error(fmt::format("--http {}:{}: cannot listen there", o.host, o.port));
