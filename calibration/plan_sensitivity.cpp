@@ -47,6 +47,7 @@ double moved(ModelCard& card, const std::string& name, double relative) {
 
 PlanSensitivity plan_sensitivity(const Scenario& plan, const ModelCard& card, const std::vector<std::string>& names,
                                  int threads) {
+  if (names.empty()) throw std::invalid_argument("plan_sensitivity: no constants named");
   const MasterLog log = record_master_log(plan, card.module_model());
   const ReplaySetup setup = replay_setup(log, plan.world.load, &plan);
 
@@ -68,7 +69,6 @@ PlanSensitivity plan_sensitivity(const Scenario& plan, const ModelCard& card, co
 
   // Replay 0 with the card, replay 1 with names[0] moved by the jitter's
   // step, replay i + 2 with names[i] moved.
-  if (names.empty()) throw std::invalid_argument("plan_sensitivity: no constants named");
   std::vector<ReplayTrack> tracks(names.size() + 2);
   result.constants.resize(names.size() + 1);
   io::parallel_for(tracks.size(), threads, [&](std::size_t i) {
