@@ -2,7 +2,7 @@
 // known answer on this plan? Logs the fitted model would have recorded
 // (the logged process data output replayed through the fitted card, the
 // log's quantisation, a fresh draw of the log's noise each) are fitted
-// again, each from its own start. Their distances from the fitted value
+// again as the log was, each from starts of its own. Their distances from the fitted value
 // are draws of the estimator's error near this point (the replay is a
 // rugged function of the constants: a quantised encoder, stick-slip, the
 // log's counts; a solve ends where its start and the roughness take it),
