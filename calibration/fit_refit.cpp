@@ -17,7 +17,12 @@ std::vector<FitCase> synthetic_cases(const std::vector<FitCase>& cases, const Mo
   std::mt19937 rng(seed);
   std::normal_distribution<double> noise(0.0, noise_counts);
   for (FitCase& c : out) {
-    const ReplayTrack track = replay(c.setup, module, c.log);
+    // Recorded at a finer physics step than the fit replays with: the
+    // module is continuous, and the twin's step is a model error the fit
+    // makes on its log and must make on these (A-CAL-12).
+    ReplaySetup module_setup = c.setup;
+    module_setup.config.physics_dt_s /= kSyntheticStepDivisor;
+    const ReplayTrack track = replay(module_setup, module, c.log);
     for (std::size_t k = 0; k < c.log.rows.size(); ++k) {
       MasterLogRow& row = c.log.rows[k];
       ProcessDataIn in = decode_in(track.pd_in[k]);

@@ -17,8 +17,12 @@
 namespace sreh {
 
 // The cases with every logged position (and polled temperature) replaced by
-// what `card` gives, plus Gaussian noise of `noise_counts` (one sigma),
-// rounded to whole wire counts and seeded by `seed` (deterministic).
+// what `card` gives at a kSyntheticStepDivisor times finer physics step
+// than the cases' (a real module has no step: the refits must see the
+// discretisation the fit's replay makes), plus Gaussian noise of
+// `noise_counts` (one sigma), rounded to whole wire counts and seeded by
+// `seed` (deterministic).
+inline constexpr double kSyntheticStepDivisor = 4;
 std::vector<FitCase> synthetic_cases(const std::vector<FitCase>& cases, const ModelCard& card, double noise_counts,
                                      unsigned seed);
 
