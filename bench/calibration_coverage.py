@@ -55,7 +55,7 @@ def verdict(r, ranges, multiple):
     # Identified before the bootstrap: the CSV's note is empty or the
     # bootstrap's own "wide interval: the refits ..." (the earlier reasons
     # come first and keep their note).
-    before = r["note"] == "" or r["note"].startswith("wide interval: the refits")
+    before = r["adequate"] == "1" and (r["note"] == "" or r["note"].startswith("wide interval: the refits"))
     identified = before and not wide
     blo, bhi, bhalf = max(rlo, lo), min(rhi, hi), 100 * 0.5 * (hi - lo) / abs(v)
     if identified:

@@ -127,8 +127,9 @@ std::vector<std::vector<double>> start_points(const Unknowns& u, const std::vect
   return starts;
 }
 
-// Refit b of the bootstrap (A-CAL-12): a log the fitted card records, with
-// draw b of the log's noise, fitted again as the log was (the same start
+// Refit b of the bootstrap (A-CAL-12): a log the fitted card records at
+// 1 / (kFirstStepDivisor + b) of the physics step, with draw b of the log's
+// noise, fitted again as the log was (the same start
 // card and number of starts, its spread points the sequence's next ones;
 // no probes, no bootstrap of its own); apply_bootstrap
 // (calibration/fit_refit.hpp) turns the refits into intervals. A long log's
@@ -145,7 +146,9 @@ FitResult refit_of(const std::vector<FitCase>& cases, const ModelCard& start, co
   o.noise_counts = noise_counts;
   const std::vector<FitCase> coarse = coarse_cases(cases);
   const unsigned seed = kRefitSeed + static_cast<unsigned>(b);
-  FitResult refit = fit_model(synthetic_cases(coarse.empty() ? cases : coarse, fitted, noise_counts, seed), start, o);
+  FitResult refit = fit_model(synthetic_cases(coarse.empty() ? cases : coarse, fitted, noise_counts, seed,
+                                                               kFirstStepDivisor + b),
+                              start, o);
   refit.replays += cases.size(); // the synthetic logs' recordings
   return refit;
 }
@@ -381,6 +384,15 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
   });
   apply_bootstrap(refits, start, result);
   for (const FitResult& refit : refits) result.replays += refit.replays;
+  // A log the model does not explain (A-CAL-10) identifies nothing: the
+  // intervals assume the model's form is right.
+  result.floor_rms_deg = residual_floor_deg(result.noise_counts);
+  result.adequate = result.rms_residual_deg <= kInadequateRatio * result.floor_rms_deg;
+  for (FittedConstant& f : result.constants) {
+    if (result.adequate || !f.identified) continue;
+    f.identified = false;
+    f.note = "the model does not explain this log: no interval is honest";
+  }
   // A constant not identified has no interval to trust (issue 36): it
   // reports the card's range, which holds any module of the type.
   for (FittedConstant& f : result.constants) {
@@ -389,8 +401,6 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
     f.ci95_lo = std::min(c->range_lo, f.ci95_lo);
     f.ci95_hi = std::max(c->range_hi, f.ci95_hi);
   }
-  result.floor_rms_deg = residual_floor_deg(result.noise_counts);
-  result.adequate = result.rms_residual_deg <= kInadequateRatio * result.floor_rms_deg;
   if (!result.adequate) {
     const std::vector<LogSegment> segments = log_segments(cases, position_r);
     const auto worst = std::max_element(segments.begin(), segments.end(),

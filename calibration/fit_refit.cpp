@@ -11,7 +11,7 @@
 namespace sreh {
 
 std::vector<FitCase> synthetic_cases(const std::vector<FitCase>& cases, const ModelCard& card, double noise_counts,
-                                     unsigned seed) {
+                                     unsigned seed, int step_divisor) {
   std::vector<FitCase> out = cases;
   const ModuleModel module = card.module_model();
   std::mt19937 rng(seed);
@@ -21,7 +21,7 @@ std::vector<FitCase> synthetic_cases(const std::vector<FitCase>& cases, const Mo
     // module is continuous, and the twin's step is a model error the fit
     // makes on its log and must make on these (A-CAL-12).
     ReplaySetup module_setup = c.setup;
-    module_setup.config.physics_dt_s /= kSyntheticStepDivisor;
+    module_setup.config.physics_dt_s /= step_divisor;
     const ReplayTrack track = replay(module_setup, module, c.log);
     for (std::size_t k = 0; k < c.log.rows.size(); ++k) {
       MasterLogRow& row = c.log.rows[k];

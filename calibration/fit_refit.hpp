@@ -17,14 +17,17 @@
 namespace sreh {
 
 // The cases with every logged position (and polled temperature) replaced by
-// what `card` gives at a kSyntheticStepDivisor times finer physics step
-// than the cases' (a real module has no step: the refits must see the
-// discretisation the fit's replay makes), plus Gaussian noise of
+// what `card` gives at a `step_divisor` times finer physics step than the
+// cases' (a real module has no step: the refits must see the
+// discretisation the fit's replay makes, and each step gives its own
+// realisation of the count-level roughness), plus Gaussian noise of
 // `noise_counts` (one sigma), rounded to whole wire counts and seeded by
 // `seed` (deterministic).
-inline constexpr double kSyntheticStepDivisor = 4;
 std::vector<FitCase> synthetic_cases(const std::vector<FitCase>& cases, const ModelCard& card, double noise_counts,
-                                     unsigned seed);
+                                     unsigned seed, int step_divisor);
+// Refit b's log is recorded at the fit's physics step divided by
+// kFirstStepDivisor + b.
+inline constexpr int kFirstStepDivisor = 3;
 
 // The t distribution's two-sided 95 % quantile with `dof` degrees of freedom.
 double t95(int dof);
