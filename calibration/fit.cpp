@@ -106,15 +106,13 @@ double sum_of_squares(const std::vector<double>& r, std::size_t count) {
 
 // The starts of a fit (issue 36): the start card, then points spread over
 // the ranges by an additive recurrence (Roberts' R-sequence: each constant
-// stepped by its own irrational fraction of its range), deterministic; the
-// spread points from the sequence's (1 + offset)-th on.
-std::vector<std::vector<double>> start_points(const Unknowns& u, const std::vector<double>& card_x, int count,
-                                              int offset) {
+// stepped by its own irrational fraction of its range), deterministic.
+std::vector<std::vector<double>> start_points(const Unknowns& u, const std::vector<double>& card_x, int count) {
   std::vector<std::vector<double>> starts{card_x};
   const std::size_t n = card_x.size();
   double phi = 2; // the plastic-number generalisation: phi^(n+1) = phi + 1
   for (int k = 0; k < 30; ++k) phi = std::pow(1 + phi, 1.0 / static_cast<double>(n + 1));
-  for (int k = 1 + offset; k < count + offset; ++k) {
+  for (int k = 1; k < count; ++k) {
     std::vector<double> x(n);
     for (std::size_t i = 0; i < n; ++i) {
       const double f = std::fmod(0.5 + static_cast<double>(k) / std::pow(phi, static_cast<double>(i + 1)), 1.0);
@@ -129,17 +127,16 @@ std::vector<std::vector<double>> start_points(const Unknowns& u, const std::vect
 
 // Refit b of the bootstrap (A-CAL-12): a log the fitted card records at
 // 1 / (kFirstStepDivisor + b) of the physics step, with draw b of the log's
-// noise, fitted again as the log was (the same start
-// card and number of starts, its spread points the sequence's next ones;
-// no probes, no bootstrap of its own); apply_bootstrap
+// noise, fitted again from `from` (one start solved to convergence, no
+// probes, no bootstrap of its own); apply_bootstrap
 // (calibration/fit_refit.hpp) turns the refits into intervals. A long log's
 // refit is of its first seconds (A-CAL-8): cheaper, and a shorter log's
 // error is the larger, so the interval is on the safe side.
-FitResult refit_of(const std::vector<FitCase>& cases, const ModelCard& start, const FitOptions& options,
+FitResult refit_of(const std::vector<FitCase>& cases, const ModelCard& from, const FitOptions& options,
                    const std::vector<std::string>& names, const ModelCard& fitted, double noise_counts, int b) {
   FitOptions o = options;
   o.names = names;
-  o.start_offset = options.start_offset + (b + 1) * std::max(0, options.starts - 1);
+  o.starts = 1;
   o.bootstrap = 0;
   o.likelihood_probes = false;
   o.progress = nullptr;
@@ -148,7 +145,7 @@ FitResult refit_of(const std::vector<FitCase>& cases, const ModelCard& start, co
   const unsigned seed = kRefitSeed + static_cast<unsigned>(b);
   FitResult refit = fit_model(synthetic_cases(coarse.empty() ? cases : coarse, fitted, noise_counts, seed,
                                                                kFirstStepDivisor + b),
-                              start, o);
+                              from, o);
   refit.replays += cases.size(); // the synthetic logs' recordings
   return refit;
 }
@@ -190,7 +187,7 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
   // earlier start), so the result does not depend on the scheduling.
   IterationProgress progress(options);
   IterationProgress* reports = options.progress ? &progress : nullptr;
-  const std::vector<std::vector<double>> points = start_points(u, card_x, options.starts, options.start_offset);
+  const std::vector<std::vector<double>> points = start_points(u, card_x, options.starts);
   const int concurrent = std::min(std::max(1, options.threads), static_cast<int>(points.size()));
   std::vector<StartOutcome> outcomes(points.size());
   std::vector<Stage> stages(points.size());
@@ -282,16 +279,23 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
   // The intervals (one replay per likelihood probe, on one thread) and the
   // bootstrap's refits (A-CAL-12) do not depend on each other: they run
   // concurrently, and the bootstrap widens the intervals after all of them.
-  // Each refit is the fit's own procedure (its starts, the best kept), from
-  // the start card and spread points of its own, the sequence's next ones.
+  // Refit b starts from the start card (b = 0) or the b-th spread point of
+  // the ranges (the points the fit's own starts use), one start each: where
+  // the data leave a constant flat and the fit ended near its start, the
+  // refits from elsewhere end elsewhere and show it (the fit's own three
+  // starts from every refit would all keep the card's, which on a flat
+  // constant is a refit started at its own answer: CalibrationCases.
+  // TruthRecordedAtAFinerPhysicsStep, damping).
   result.noise_counts = options.noise_counts ? *options.noise_counts : estimated_noise_counts(cases);
   const std::size_t refit_count = static_cast<std::size_t>(std::max(0, options.bootstrap));
+  const std::vector<std::vector<double>> refit_starts = start_points(u, card_x, static_cast<int>(refit_count));
   std::vector<FitResult> refits(refit_count);
   const ModelCard fitted = result.card;
   io::parallel_for(1 + refit_count, options.threads, [&](std::size_t task) {
     if (task > 0) {
       const std::size_t b = task - 1;
-      refits[b] = refit_of(cases, start, options, names, fitted, result.noise_counts, static_cast<int>(b));
+      refits[b] = refit_of(cases, card_at(start, u, refit_starts[b].data()), options, names, fitted, result.noise_counts,
+                           static_cast<int>(b));
       return;
     }
     for (std::size_t i = 0; i < n; ++i) {

@@ -39,15 +39,15 @@ struct FitOptions {
   // the best goes on (A-CAL-8).
   int starts = 3;
   int spread_start_iterations = 8;
-  int start_offset = 0; // the spread points from the sequence's (1 + start_offset)-th (a bootstrap refit's own)
   // The logged position's noise, wire counts (one sigma), as stated by the
   // user; unset: estimated from the log (calibration/fit_adequacy.hpp).
   std::optional<double> noise_counts;
   // The bootstrap (A-CAL-12, calibration/fit_refit.hpp): `bootstrap` logs
   // the fitted model records (with a fresh draw of the log's noise each)
-  // are fitted again as the log was (the start card and `starts` - 1 spread
-  // points of each refit's own); their distances from the fit widen each
-  // constant's interval. 0: none (the likelihood interval alone).
+  // are fitted again, each from one start (the start card, then spread
+  // points of the ranges) solved to convergence; their distances from the
+  // fit widen each constant's interval. 0: none (the likelihood interval
+  // alone).
   int bootstrap = kDefaultBootstrap;
   // The likelihood probes widening the intervals (A-CAL-4); off in the
   // bootstrap's own fits, which need the values only.
