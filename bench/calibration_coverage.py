@@ -25,7 +25,7 @@ import statistics
 from collections import defaultdict
 
 T95 = [12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228]
-WIDE = 0.25  # an interval wider than +-25 % of the value: not identified
+WIDE = 0.10  # an interval wider than +-10 % of the value: not identified (--wide)
 
 
 def card_ranges():
@@ -52,10 +52,11 @@ def verdict(r, ranges, multiple):
     lo, hi = min(lo, v - half), max(hi, v + half)
     rlo, rhi = ranges[r["constant"]]
     wide = 0.5 * (hi - lo) > WIDE * abs(v)
+    # A CSV of a binary with a wider limit: its likelihood-stage "wide interval" note is re-judged here.
     # Identified before the bootstrap: the CSV's note is empty or the
     # bootstrap's own "wide interval: the refits ..." (the earlier reasons
     # come first and keep their note).
-    before = r["adequate"] == "1" and (r["note"] == "" or r["note"].startswith("wide interval: the refits"))
+    before = r["adequate"] == "1" and (r["note"] == "" or r["note"].startswith("wide interval"))
     identified = before and not wide
     blo, bhi, bhalf = max(rlo, lo), min(rhi, hi), 100 * 0.5 * (hi - lo) / abs(v)
     if identified:
@@ -108,6 +109,7 @@ def main():
     ap.add_argument("csv")
     ap.add_argument("--multiple", type=float, default=None)
     ap.add_argument("--truths", default=None, help="A-B: only truths A..B")
+    ap.add_argument("--wide", type=float, default=None, help="the identified half-width limit, fraction (0.10)")
     a = ap.parse_args()
     with open(a.csv, newline="") as f:
         rows = list(csv.DictReader(f))
@@ -117,13 +119,16 @@ def main():
     if not rows:
         raise SystemExit(f"{a.csv}: no rows")
     ranges = card_ranges()
+    if a.wide:
+        global WIDE
+        WIDE = a.wide
     key = lambda r: (r["load_gcm2"], r["noise_counts"], r["truth"])
     cpu = {key(r): float(r["cpu_s"]) for r in rows}
     inadequate = {key(r) for r in rows if r["adequate"] == "0"}
     truths = sorted({int(r["truth"]) for r in rows})
     print(f"{len(cpu)} fits (truths {truths[0]}..{truths[-1]}); CPU per fit: median {statistics.median(cpu.values()):.1f} s, "
           f"largest {max(cpu.values()):.1f} s; flagged inadequate: {len(inadequate)}; "
-          f"multiple: {a.multiple if a.multiple else 't95(B)'}")
+          f"multiple: {a.multiple if a.multiple else 't95(B)'}; identified within +-{100 * WIDE:.0f} %")
     by_load = defaultdict(list)
     overall = defaultdict(list)
     for r in rows:

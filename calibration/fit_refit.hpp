@@ -36,8 +36,11 @@ double t95(int dof);
 // constant each, in `result`'s order): each constant's interval becomes the
 // hull of its likelihood interval and value +- t95(B) * rms distance of the
 // refits (within the range), and an identified constant whose interval is
-// then wider than +-kWideHalfWidth is not identified.
-inline constexpr double kWideHalfWidth = 0.25; // an interval wider than +-25 % of the value: not identified
+// then wider than +-kWideHalfWidth is not identified. "Identified" promises
+// issue 36's tolerance, within 10 % of the truth, at 95 %: an interval of
+// +-25 % did not (the 2 s plan without a load: Coulomb friction +30.8 %
+// with +-24 %, A-CAL-12).
+inline constexpr double kWideHalfWidth = 0.10; // an interval wider than +-10 % of the value: not identified
 void apply_bootstrap(const std::vector<FitResult>& refits, const ModelCard& start, FitResult& result);
 
 } // namespace sreh
