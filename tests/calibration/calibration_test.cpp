@@ -83,7 +83,9 @@ TEST(Calibration, HiddenConstantsComeBackAndPredictAHeldOutMove) {
               fit.start_rms_residual_deg, fit.iterations, fit.replays, fit.solver_message.c_str());
   EXPECT_TRUE(fit.converged);
   EXPECT_TRUE(fit.adequate) << fit.inadequacy;
-  expect_recovered(fit, hidden, 0.10, 0); // none need be identified (docs/calibration.md)
+  // The bootstrap identifies Coulomb friction here (+-9 %, 1.2 % off;
+  // docs/calibration.md): at least one, so an uninformative fit fails.
+  expect_recovered(fit, hidden, 0.10, 1);
   expect_predicts_held_out(fit.card, hidden, 0.05);
 
   // FIT.yaml is a model file --model reads: the fitted values come back
