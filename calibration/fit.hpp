@@ -20,9 +20,9 @@ struct FitCase {
 };
 
 // Refits of the bootstrap by default (A-CAL-12): three distances, the t
-// distribution's 95 % multiple 3.18 (four would give 2.78, at a fourth
-// more CPU: each refit is a whole fit of the log, or of a long log's first
-// 10 s).
+// distribution's 95 % multiple 3.18 (four would give 2.78 at a third more
+// of the bootstrap's CPU: each refit is a whole fit of the log, or of a
+// long log's first 10 s).
 inline constexpr int kDefaultBootstrap = 3;
 
 struct FitOptions {
