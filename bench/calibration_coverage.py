@@ -101,7 +101,7 @@ def table(title, groups, ranges, multiple):
         name = key if isinstance(key, str) else f"{key[0]:g} g cm^2, noise {key[1]:g}: {key[2]}"
         print(f"| {name} | {n} | {pct(covered, n)} | {ident} | {pct(ident_cov, ident)} | {med(half_ident)} | "
               f"{med(half_all)} | {pct(boot_cov, n)} | {med(err_ident)} | "
-              f"{max(err_ident) if err_ident else 0:.1f} % | {med(err_all)} |")
+              f"{f'{max(err_ident):.1f} %' if err_ident else '-'} | {med(err_all)} |")
 
 
 def main():
