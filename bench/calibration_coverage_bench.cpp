@@ -8,7 +8,7 @@
 // docs/calibration.md "Coverage". Run it with bench/calibration_coverage.sh.
 //
 //   calibration_coverage_bench [--truths N] [--first K] [--loads 0,5000,15000]
-//     [--noise 0,1] [--moves I,J,...] [--starts S] [--threads T] [--csv FILE]
+//     [--noise 0,1] [--moves I,J,...] [--starts S] [--bootstrap B] [--threads T] [--csv FILE]
 // --moves: the plan's moves to keep, by index (0..17, in the plan's order;
 // default all), with the plan's parameter sets and first hold.
 #include <sys/resource.h>
@@ -20,6 +20,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <fmt/format.h>
 
 #include "calibration/fit.hpp"
 #include "tests/calibration/calibration_rig.hpp"
@@ -59,7 +61,7 @@ ModelCard truth_card(int k, const std::vector<std::string>& names) {
 } // namespace
 
 int main(int argc, char** argv) {
-  int truths = 20, first = 0, starts = 3, threads = 2;
+  int truths = 20, first = 0, starts = 3, threads = 2, bootstrap = kDefaultBootstrap;
   std::vector<double> moves;
   std::string moves_text = "all";
   std::vector<double> loads{0, 5000, 15000}, noises{0, 1};
@@ -80,6 +82,7 @@ int main(int argc, char** argv) {
     }
     else if (a == "--starts") starts = std::atoi(argv[i + 1]);
     else if (a == "--threads") threads = std::atoi(argv[i + 1]);
+    else if (a == "--bootstrap") bootstrap = std::atoi(argv[i + 1]);
     else if (a == "--csv") csv_path = argv[i + 1];
     else {
       std::fprintf(stderr, "calibration_coverage_bench: unknown option %s\n", argv[i]);
@@ -93,8 +96,8 @@ int main(int argc, char** argv) {
   }
   if (!csv_path || std::ftell(csv) == 0) {
     std::fprintf(csv, "load_gcm2,noise_counts,truth,moves,constant,truth_value,fitted,ci95_lo,ci95_hi,covered,identified,"
-                      "error_pct,note,likelihood_lo,likelihood_hi,likelihood_covered,refit,rms_deg,floor_deg,adequate,iterations,"
-                      "replays,cpu_s\n");
+                      "error_pct,note,likelihood_lo,likelihood_hi,likelihood_covered,bootstrap_lo,bootstrap_hi,bootstrap_covered,"
+                      "refits,rms_deg,floor_deg,adequate,iterations,replays,cpu_s\n");
   }
   // Truth by truth, each at every load and noise: a run stopped early has
   // its truths complete.
@@ -113,6 +116,7 @@ int main(int argc, char** argv) {
         options.names = names;
         options.starts = starts;
         options.threads = threads;
+        options.bootstrap = bootstrap;
         const FitResult fit = fit_model({c}, default_model_card(), options);
         const double cpu = cpu_s() - cpu0;
         for (const FittedConstant& f : fit.constants) {
@@ -121,11 +125,15 @@ int main(int argc, char** argv) {
           for (char& ch : note) {
             if (ch == ',') ch = ';';
           }
-          std::fprintf(csv, "%g,%g,%d,%s,%s,%.6g,%.6g,%.6g,%.6g,%d,%d,%.2f,%s,%.6g,%.6g,%d,%.6g,%.6f,%.6f,%d,%d,%zu,%.1f\n",
+          std::string refits; // space-separated: one CSV field
+          for (const double r : f.refits) refits += (refits.empty() ? "" : " ") + fmt::format("{:.6g}", r);
+          std::fprintf(csv,
+                       "%g,%g,%d,%s,%s,%.6g,%.6g,%.6g,%.6g,%d,%d,%.2f,%s,%.6g,%.6g,%d,%.6g,%.6g,%d,%s,%.6f,%.6f,%d,%d,%zu,%.1f\n",
                        load, noise, k, moves_text.c_str(), f.name.c_str(), t, f.value, f.ci95_lo, f.ci95_hi,
                        f.ci95_lo <= t && t <= f.ci95_hi ? 1 : 0, f.identified ? 1 : 0, 100 * (f.value / t - 1),
                        note.c_str(), f.likelihood_lo, f.likelihood_hi, f.likelihood_lo <= t && t <= f.likelihood_hi ? 1 : 0,
-                       f.refit.value_or(NAN), fit.rms_residual_deg, fit.floor_rms_deg, fit.adequate ? 1 : 0, fit.iterations,
+                       f.bootstrap_lo, f.bootstrap_hi, f.bootstrap_lo <= t && t <= f.bootstrap_hi ? 1 : 0, refits.c_str(),
+                       fit.rms_residual_deg, fit.floor_rms_deg, fit.adequate ? 1 : 0, fit.iterations,
                        fit.replays, cpu);
         }
         std::fflush(csv);

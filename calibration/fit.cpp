@@ -15,11 +15,10 @@ namespace sreh {
 namespace {
 
 constexpr double kZ95 = 1.959963984540054;     // two-sided 95 % of the normal distribution
-constexpr double kWideHalfWidth = 0.25;        // an interval wider than +-25 % of the value: not identified
 constexpr double kStrongCorrelation = 0.95;    // |r| above this: the data cannot separate the two
 constexpr double kAtBound = 0.001;             // within 0.1 % of the range from a bound: at it
 constexpr int kLikelihoodProbes = 5;           // step-outs per side, each twice the last
-constexpr unsigned kRefitSeed = 36;            // the refit check's noise (A-CAL-12)
+constexpr unsigned kRefitSeed = 36;            // the bootstrap's noise, refit b's seed kRefitSeed + b (A-CAL-12)
 // Logs longer than twice this are first fitted on their first kCoarse_s
 // (shared out in proportion to their lengths; the plan is ~9 s), then on
 // the whole from there (A-CAL-8).
@@ -126,26 +125,29 @@ std::vector<std::vector<double>> start_points(const Unknowns& u, const std::vect
   return starts;
 }
 
-// The refit check's fit (A-CAL-12): a log the fitted card records, with
-// the log's noise, fitted again from `start` (one start, no probes);
-// apply_refit (calibration/fit_refit.hpp) gives the verdict. `replays`
-// counts the synthetic logs' recordings.
-FitResult refit_of(const std::vector<FitCase>& cases, const ModelCard& start, const FitOptions& options,
-                   const std::vector<std::string>& names, const ModelCard& fitted, double noise_counts,
-                   std::size_t& replays) {
+// Refit b of the bootstrap (A-CAL-12): a log the fitted card records at
+// 1 / (kFirstStepDivisor + b) of the physics step, with draw b of the log's
+// noise, fitted again from `from` (one start solved to convergence, no
+// probes, no bootstrap of its own); apply_bootstrap
+// (calibration/fit_refit.hpp) turns the refits into intervals. A long log's
+// refit is of its first seconds (A-CAL-8): cheaper, and a shorter log's
+// error is the larger, so the interval is on the safe side.
+FitResult refit_of(const std::vector<FitCase>& cases, const ModelCard& from, const FitOptions& options,
+                   const std::vector<std::string>& names, const ModelCard& fitted, double noise_counts, int b) {
   FitOptions o = options;
   o.names = names;
   o.starts = 1;
-  o.refit_check = false;
+  o.bootstrap = 0;
   o.likelihood_probes = false;
   o.progress = nullptr;
   o.noise_counts = noise_counts;
-  // A long log's refit is of its first seconds (A-CAL-8): cheaper, and a
-  // shorter log's error is the larger, so the check is on the safe side.
   const std::vector<FitCase> coarse = coarse_cases(cases);
-  const std::vector<FitCase>& refit_cases = coarse.empty() ? cases : coarse;
-  replays = refit_cases.size();
-  return fit_model(synthetic_cases(refit_cases, fitted, noise_counts, kRefitSeed), start, o);
+  const unsigned seed = kRefitSeed + static_cast<unsigned>(b);
+  FitResult refit = fit_model(synthetic_cases(coarse.empty() ? cases : coarse, fitted, noise_counts, seed,
+                                                               kFirstStepDivisor + b),
+                              from, o);
+  refit.replays += cases.size(); // the synthetic logs' recordings
+  return refit;
 }
 
 struct StartOutcome {
@@ -275,15 +277,25 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
     }
   }
   // The intervals (one replay per likelihood probe, on one thread) and the
-  // refit check's fit (A-CAL-12) do not depend on each other: they run
-  // concurrently, and the refit's verdict is applied after both.
+  // bootstrap's refits (A-CAL-12) do not depend on each other: they run
+  // concurrently, and the bootstrap widens the intervals after all of them.
+  // Refit b starts from the start card (b = 0) or the b-th spread point of
+  // the ranges (the points the fit's own starts use), one start each: where
+  // the data leave a constant flat and the fit ended near its start, the
+  // refits from elsewhere end elsewhere and show it (the fit's own three
+  // starts from every refit would all keep the card's, which on a flat
+  // constant is a refit started at its own answer: CalibrationCases.
+  // TruthRecordedAtAFinerPhysicsStep, damping).
   result.noise_counts = options.noise_counts ? *options.noise_counts : estimated_noise_counts(cases);
-  FitResult refit;
-  std::size_t synthetic_replays = 0;
+  const std::size_t refit_count = static_cast<std::size_t>(std::max(0, options.bootstrap));
+  const std::vector<std::vector<double>> refit_starts = start_points(u, card_x, static_cast<int>(refit_count));
+  std::vector<FitResult> refits(refit_count);
   const ModelCard fitted = result.card;
-  io::parallel_for(options.refit_check ? 2 : 1, options.threads, [&](std::size_t task) {
-    if (task == 1) {
-      refit = refit_of(cases, start, options, names, fitted, result.noise_counts, synthetic_replays);
+  io::parallel_for(1 + refit_count, options.threads, [&](std::size_t task) {
+    if (task > 0) {
+      const std::size_t b = task - 1;
+      refits[b] = refit_of(cases, card_at(start, u, refit_starts[b].data()), options, names, fitted, result.noise_counts,
+                           static_cast<int>(b));
       return;
     }
     for (std::size_t i = 0; i < n; ++i) {
@@ -374,9 +386,16 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
       result.constants.push_back(f);
     }
   });
-  if (options.refit_check) {
-    apply_refit(refit, start, result);
-    result.replays += refit.replays + synthetic_replays;
+  apply_bootstrap(refits, start, result);
+  for (const FitResult& refit : refits) result.replays += refit.replays;
+  // A log the model does not explain (A-CAL-10) identifies nothing: the
+  // intervals assume the model's form is right.
+  result.floor_rms_deg = residual_floor_deg(result.noise_counts);
+  result.adequate = result.rms_residual_deg <= kInadequateRatio * result.floor_rms_deg;
+  for (FittedConstant& f : result.constants) {
+    if (result.adequate || !f.identified) continue;
+    f.identified = false;
+    f.note = "the model does not explain this log: no interval is honest";
   }
   // A constant not identified has no interval to trust (issue 36): it
   // reports the card's range, which holds any module of the type.
@@ -386,8 +405,6 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
     f.ci95_lo = std::min(c->range_lo, f.ci95_lo);
     f.ci95_hi = std::max(c->range_hi, f.ci95_hi);
   }
-  result.floor_rms_deg = residual_floor_deg(result.noise_counts);
-  result.adequate = result.rms_residual_deg <= kInadequateRatio * result.floor_rms_deg;
   if (!result.adequate) {
     const std::vector<LogSegment> segments = log_segments(cases, position_r);
     const auto worst = std::max_element(segments.begin(), segments.end(),

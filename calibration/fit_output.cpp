@@ -79,7 +79,7 @@ nlohmann::json fit_json(const FitResult& fit) {
     if (!f.note.empty()) c["note"] = f.note;
     c["at_bound"] = f.at_bound;
     c["starts_disagree"] = f.starts_disagree;
-    if (f.refit) c["refit"] = *f.refit; // A-CAL-12
+    if (!f.refits.empty()) c["refits"] = f.refits; // the bootstrap, A-CAL-12
     constants[f.name] = c;
   }
   nlohmann::json correlation = nlohmann::json::array();

@@ -177,6 +177,10 @@ SREH_REGISTER_COMMAND(57, [](CLI::App& app, int& exit_code) {
                   "Solver starts: the start card, and spread points of the ranges (the best goes on; a constant on "
                   "which they disagree is not identified)")
       ->check(CLI::Range(1, 16))->capture_default_str();
+  cmd->add_option("--bootstrap", r.options.bootstrap,
+                  "Refits of logs the fitted model records, from other starts: their spread is the intervals' "
+                  "(0: the likelihood's interval alone)")
+      ->check(CLI::Range(0, 16))->capture_default_str();
   cmd->add_option_function<double>(
          "--noise-counts", [args](double v) { args->request.options.noise_counts = v; },
          "The logged position's noise, wire counts (one sigma) [default: estimated from the log]")

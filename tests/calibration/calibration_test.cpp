@@ -61,7 +61,7 @@ TEST(Calibration, OneConstantFromAShortLog) {
   FitOptions options;
   options.names = {"coulomb_friction"};
   options.starts = 1;          // cheap: the solve itself
-  options.refit_check = false;
+  options.bootstrap = 0;
   const FitResult fit = fit_model(cases, default_model_card(), options);
   std::printf("%d iterations, %zu replays, %s\n", fit.iterations, fit.replays, fit.solver_message.c_str());
   ASSERT_EQ(fit.constants.size(), 1u);
@@ -83,7 +83,9 @@ TEST(Calibration, HiddenConstantsComeBackAndPredictAHeldOutMove) {
               fit.start_rms_residual_deg, fit.iterations, fit.replays, fit.solver_message.c_str());
   EXPECT_TRUE(fit.converged);
   EXPECT_TRUE(fit.adequate) << fit.inadequacy;
-  expect_recovered(fit, hidden, 0.10, 0); // the refit check flags all five on this plan (docs/calibration.md)
+  // The bootstrap identifies Coulomb friction here (+-9 %, 1.2 % off;
+  // docs/calibration.md): at least one, so an uninformative fit fails.
+  expect_recovered(fit, hidden, 0.10, 1);
   expect_predicts_held_out(fit.card, hidden, 0.05);
 
   // FIT.yaml is a model file --model reads: the fitted values come back
@@ -110,7 +112,7 @@ TEST(Calibration, HiddenConstantsComeBackAndPredictAHeldOutMove) {
 // twin's thermal clock 20 times fast (2 minutes of heating, 25.5 to 29
 // degC), what a real module shows in a log of that length.
 TEST(Calibration, ThermalConstantsFromThePolledTemperature) {
-  if (kSanitized) GTEST_SKIP() << "three starts and the refit check, minutes instrumented; checked in the Release stage";
+  if (kSanitized) GTEST_SKIP() << "three starts and the bootstrap, minutes instrumented; checked in the Release stage";
   const Scenario plan = test::heating_scenario(kPlanLoad_gcm2, 20);
   const ModelCard hidden = test::card_with({{"winding_heat_capacity", 13.44},            // +12 %
                                             {"winding_to_housing_resistance", 3.36}});  // +12 %

@@ -82,8 +82,8 @@ TEST(FirmwareSplit, MotorConstantsFromThePlan) {
               fit.iterations, fit.replays);
   for (const FittedConstant& f : fit.constants) {
     const double t = truth.find(f.name)->value;
-    std::printf("%-20s truth %-10g start %-10g fit %-10g (%+.1f %%) ci95 [%g, %g] refit %g %s\n", f.name.c_str(), t, f.start,
-                f.value, 100 * (f.value / t - 1), f.ci95_lo, f.ci95_hi, f.refit.value_or(NAN),
+    std::printf("%-20s truth %-10g start %-10g fit %-10g (%+.1f %%) ci95 [%g, %g] refits %s %s\n", f.name.c_str(), t, f.start,
+                f.value, 100 * (f.value / t - 1), f.ci95_lo, f.ci95_hi, test::refits_text(f).c_str(),
                 f.identified ? "identified" : f.note.c_str());
     EXPECT_LE(f.ci95_lo, t) << f.name;
     EXPECT_GE(f.ci95_hi, t) << f.name;

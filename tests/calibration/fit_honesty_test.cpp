@@ -15,6 +15,7 @@
 #include "calibration/fit_adequacy.hpp"
 #include "calibration/fit_output.hpp"
 #include "calibration_rig.hpp"
+#include "done_when.hpp"
 
 namespace sreh {
 namespace {
@@ -123,7 +124,7 @@ TEST(FitAdequacy, AWrongLoadIsFlaggedWithItsSegment) {
   FitOptions options;
   options.names = {"coulomb_friction"};
   options.starts = 1;
-  options.refit_check = false; // adequacy only
+  options.bootstrap = 0; // adequacy only
   const FitResult right = fit_model(cases_for(log, plan, kStated_gcm2), default_model_card(), options);
   const FitResult wrong = fit_model(cases_for(heavy_log, plan, kStated_gcm2), default_model_card(), options);
   std::printf("right load: rms %.5f deg, floor %.5f; 5 %% more: rms %.5f deg\n%s\n", right.rms_residual_deg,
@@ -178,11 +179,12 @@ TEST(FitHonesty, SeveralStartsReachTheMinimum) {
   EXPECT_GE(c.ci95_hi, t);
 }
 
-// Issue 36: the starts run concurrently and the refit beside the intervals;
+// Issue 36: the starts run concurrently and the bootstrap's refits beside the
+// intervals;
 // the result must not depend on how many threads there are or how they
 // were scheduled (one thread runs everything in order).
 TEST(FitHonesty, TheResultDoesNotDependOnTheThreads) {
-  if (kSanitized) GTEST_SKIP() << "two fits from three starts with the refit check; checked in the Release stage";
+  if (kSanitized) GTEST_SKIP() << "two fits from three starts with the bootstrap; checked in the Release stage";
   const Scenario plan = short_plan(kPlanLoad_gcm2);
   const ModelCard truth = test::card_with({{"coulomb_friction", 1.2 * default_model_card().find("coulomb_friction")->value},
                                            {"stribeck_excess", 0.8 * default_model_card().find("stribeck_excess")->value}});
@@ -200,12 +202,12 @@ TEST(FitHonesty, TheResultDoesNotDependOnTheThreads) {
   for (std::size_t i = 0; i < one.constants.size(); ++i) {
     const FittedConstant& a = one.constants[i];
     const FittedConstant& b = three.constants[i];
-    std::printf("%s: %g [%g, %g] refit %g %s\n", a.name.c_str(), a.value, a.ci95_lo, a.ci95_hi, a.refit.value_or(NAN),
+    std::printf("%s: %g [%g, %g] refits %s %s\n", a.name.c_str(), a.value, a.ci95_lo, a.ci95_hi, test::refits_text(a).c_str(),
                 a.identified ? "identified" : a.note.c_str());
     EXPECT_EQ(a.value, b.value) << a.name;
     EXPECT_EQ(a.ci95_lo, b.ci95_lo) << a.name;
     EXPECT_EQ(a.ci95_hi, b.ci95_hi) << a.name;
-    EXPECT_EQ(a.refit, b.refit) << a.name;
+    EXPECT_EQ(a.refits, b.refits) << a.name;
     EXPECT_EQ(a.identified, b.identified) << a.name;
   }
 }

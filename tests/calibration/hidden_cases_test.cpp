@@ -1,6 +1,6 @@
 // Issue 36's done-when, the hidden-style cases the other calibration tests
 // do not cover: a truth the fit never starts from is recorded, the log is
-// fitted from the card as `calibrate` does (three starts, the refit check),
+// fitted from the card as `calibrate` does (three starts, the bootstrap),
 // and every reported 95 % interval must hold the truth, every constant
 // flagged identified be within 10 %, and the fitted card predict a held-out
 // move (135 deg on its own parameter set, at 5000 g cm^2, or without a load
@@ -51,7 +51,7 @@ FitResult fit_and_print(const std::vector<FitCase>& cases, const FitOptions& opt
 // must come back not identified, with a range that holds the truth; the
 // held-out move is then one without a load too.
 TEST(CalibrationCases, FrictionAndDriveTrainWithoutLoad) {
-  if (kSanitized) GTEST_SKIP() << "a fit from three starts with the refit check; checked in the Release stage";
+  if (kSanitized) GTEST_SKIP() << "a fit from three starts with the bootstrap; checked in the Release stage";
   const Scenario plan = test::plan_moves(0, kMoves);
   const ModelCard truth = friction_truth();
   const FitResult fit = fit_and_print({case_for(test::record_log(plan, truth), plan, 0)}, FitOptions{});
@@ -61,7 +61,7 @@ TEST(CalibrationCases, FrictionAndDriveTrainWithoutLoad) {
 }
 
 TEST(CalibrationCases, FrictionWithoutLoadWithOneCountOfNoise) {
-  if (kSanitized) GTEST_SKIP() << "a fit from three starts with the refit check; checked in the Release stage";
+  if (kSanitized) GTEST_SKIP() << "a fit from three starts with the bootstrap; checked in the Release stage";
   const Scenario plan = test::plan_moves(0, kMoves);
   const ModelCard truth = friction_truth();
   const FitResult fit = fit_and_print({case_for(test::record_log(plan, truth, 36u), plan, 0)}, FitOptions{});
@@ -74,7 +74,7 @@ TEST(CalibrationCases, FrictionWithoutLoadWithOneCountOfNoise) {
 // (25 us) is fitted with the twin's own (100 us). The replay is then never
 // bit-exact, as with a real module.
 TEST(CalibrationCases, TruthRecordedAtAFinerPhysicsStep) {
-  if (kSanitized) GTEST_SKIP() << "a fit from three starts with the refit check; checked in the Release stage";
+  if (kSanitized) GTEST_SKIP() << "a fit from three starts with the bootstrap; checked in the Release stage";
   constexpr double kLoad_gcm2 = 15000;
   const Scenario plan = test::plan_moves(kLoad_gcm2, kMoves);
   Scenario finer = plan;
@@ -89,7 +89,7 @@ TEST(CalibrationCases, TruthRecordedAtAFinerPhysicsStep) {
 // Loop tuning from logs at two configured loads (issue 36: at one load the
 // bandwidth and the ratios trade off, correlations 0.95-0.98).
 TEST(CalibrationCases, LoopTuningFromTwoLoads) {
-  if (kSanitized) GTEST_SKIP() << "a fit from three starts with the refit check; checked in the Release stage";
+  if (kSanitized) GTEST_SKIP() << "a fit from three starts with the bootstrap; checked in the Release stage";
   const ModelCard truth = test::card_with({{"velocity_bandwidth", 1060},  // +6 %
                                            {"position_ratio", 0.27},      // +8 %
                                            {"integral_ratio", 0.36}});    // +20 %
@@ -103,7 +103,7 @@ TEST(CalibrationCases, LoopTuningFromTwoLoads) {
   options.names = {"velocity_bandwidth", "position_ratio", "integral_ratio"};
   const FitResult fit = fit_and_print(cases, options);
   EXPECT_TRUE(fit.adequate) << fit.inadequacy;
-  test::expect_recovered(fit, truth, 0.10, 0);
+  test::expect_recovered(fit, truth, 0.10, 1); // the bandwidth (+-3 %, docs/calibration.md)
   // Issue 36 asks 5 %: at 5000 g cm^2, between the two loads, the fitted
   // tuning's time into the window came 2.6 ms (5.4 %) late, tracking 1.2 %
   // (docs/calibration.md "Hidden-style cases"); 6 % guards what is reached.
@@ -114,7 +114,7 @@ TEST(CalibrationCases, LoopTuningFromTwoLoads) {
 // 2): the default fit must not pass it off as a module that fits: the log
 // is not explained, or a constant ends at its bound, both reported.
 TEST(CalibrationCases, AFivePercentLoadErrorIsFlagged) {
-  if (kSanitized) GTEST_SKIP() << "a fit from three starts with the refit check; checked in the Release stage";
+  if (kSanitized) GTEST_SKIP() << "a fit from three starts with the bootstrap; checked in the Release stage";
   constexpr double kStated_gcm2 = 5000;
   const Scenario plan = test::plan_moves(kStated_gcm2, kMoves);
   Scenario heavier = plan; // the PLC's sets still configured for the stated load
