@@ -1,5 +1,5 @@
 // Which move of the identification program shows which constant (issue 36:
-// "`calibrate --plan` prints which segment identifies which constant").
+// "`calibrate --plan` prints which segment identifies which constant", A-CAL-13).
 // Measured, not declared: the plan is run on the card and its master log
 // replayed once with the card and once per constant moved 10 % inside its
 // range; the twin's position change, row by row, is shared out over the
