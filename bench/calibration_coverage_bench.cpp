@@ -30,6 +30,10 @@ namespace {
 
 using namespace sreh;
 
+constexpr const char* kUsage =
+    "usage: calibration_coverage_bench [--truths N] [--first K] [--loads 0,5000,15000] [--noise 0,1]\n"
+    "  [--moves I,J,...] [--starts S] [--bootstrap B] [--threads T] [--csv FILE]\n";
+
 std::vector<double> numbers(const char* text) {
   std::vector<double> v;
   std::stringstream ss(text);
@@ -67,8 +71,15 @@ int main(int argc, char** argv) {
   std::vector<double> loads{0, 5000, 15000}, noises{0, 1};
   std::vector<std::string> names = default_fit_names();
   const char* csv_path = nullptr;
-  for (int i = 1; i + 1 < argc; i += 2) {
+  for (int i = 1; i < argc; i += 2) {
     const std::string a = argv[i];
+    if (a == "--help" || a == "-h" || i + 1 == argc) {
+      // Every option takes a value; a lone one (or --help) must not start a two-hour run.
+      const bool help = a == "--help" || a == "-h";
+      if (!help) std::fprintf(stderr, "calibration_coverage_bench: %s needs a value\n", a.c_str());
+      std::fputs(kUsage, help ? stdout : stderr);
+      return help ? 0 : 2;
+    }
     if (a == "--truths") truths = std::atoi(argv[i + 1]);
     else if (a == "--first") first = std::atoi(argv[i + 1]);
     else if (a == "--loads") loads = numbers(argv[i + 1]);
