@@ -182,9 +182,12 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
   const std::vector<FitCase> coarse = coarse_cases(cases);
   const std::vector<FitCase>& first_cases = coarse.empty() ? cases : coarse;
   const std::size_t first_positions = position_count(first_cases);
-  // The starts are independent: they run concurrently, each on its share
-  // of the threads, and the best is chosen by cost alone (ties to the
-  // earlier start), so the result does not depend on the scheduling.
+  // The starts are independent: they run concurrently, and the best is
+  // chosen by cost alone (ties to the earlier start), so the result does
+  // not depend on the scheduling. Each may use every thread for its
+  // Jacobians: the spread starts end early, and the card's start, solved
+  // on, would otherwise leave the other cores idle (a third of a 60 s log's
+  // wall time).
   IterationProgress progress(options);
   IterationProgress* reports = options.progress ? &progress : nullptr;
   const std::vector<std::vector<double>> points = start_points(u, card_x, options.starts);
@@ -195,7 +198,7 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
     StartOutcome& o = outcomes[k];
     o.x = points[k];
     SolveLimits limits;
-    limits.threads = std::max(1, options.threads / concurrent);
+    limits.threads = std::max(1, options.threads);
     if (k > 0) { // a spread start: a few iterations, no restart
       limits.max_iterations = options.spread_start_iterations;
       limits.max_solves = 1;
@@ -298,6 +301,44 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
                            static_cast<int>(b));
       return;
     }
+    // The curvature's interval assumes a smooth cost; on the replay's rough
+    // one, step out from the solution along the linearised profile path
+    // (constant i moved, the others as the covariance says they follow:
+    // x + t C[:, i] / C[i, i]) while the sum of squares stays within the
+    // single-constant threshold: a profile likelihood interval at one
+    // replay per probe, without a sub-fit per point. Each constant's two
+    // sides are a chain of probes of their own: the 2n chains run
+    // concurrently (beside the refits; a 60 s log's probes are 60 s
+    // replays), each writing only its own slot.
+    std::vector<double> reached(2 * n);
+    std::vector<std::size_t> probe_replays(2 * n, 0);
+    io::parallel_for(2 * n, options.likelihood_probes ? options.threads : 1, [&](std::size_t chain) {
+      const std::size_t i = chain / 2;
+      const int side = chain % 2 == 0 ? -1 : +1;
+      const auto ii = static_cast<Eigen::Index>(i);
+      const double half_u = kZ95 * std::sqrt(std::max(0.0, cov(ii, ii)));
+      Eigen::VectorXd path = cov.col(ii);
+      if (cov(ii, ii) > 0) path /= cov(ii, ii);
+      else path = Eigen::VectorXd::Unit(static_cast<Eigen::Index>(n), ii);
+      double step = std::max(half_u, 0.01 * (u.hi[i] - u.lo[i]));
+      double reach = side < 0 ? std::max(u.lo[i], x[i] - half_u) : std::min(u.hi[i], x[i] + half_u);
+      for (int probe = 0; probe < (options.likelihood_probes ? kLikelihoodProbes : 0); ++probe) {
+        std::vector<double> xp = x;
+        for (std::size_t j = 0; j < n; ++j) {
+          xp[j] = std::clamp(x[j] + side * step * path(static_cast<Eigen::Index>(j)), u.lo[j], u.hi[j]);
+        }
+        if (xp[i] == x[i]) break;
+        std::vector<double> rp(positions);
+        residuals_into(cases, card_at(start, u, xp.data()), rp.data(), false);
+        ++probe_replays[chain];
+        if (sum_of_squares(rp, positions) - best_ss > single_threshold) break;
+        reach = side < 0 ? std::min(reach, xp[i]) : std::max(reach, xp[i]);
+        if (xp[i] == (side < 0 ? u.lo[i] : u.hi[i])) break;
+        step *= 2;
+      }
+      reached[chain] = reach;
+    });
+    for (const std::size_t count : probe_replays) result.replays += count;
     for (std::size_t i = 0; i < n; ++i) {
       const ModelConstant& c = result.card.constants[u.card_index[i]];
       const ModelConstant& card_c = start.constants[u.card_index[i]];
@@ -308,35 +349,7 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
       f.start = card_c.value;
       const auto ii = static_cast<Eigen::Index>(i);
       const double half_u = kZ95 * std::sqrt(std::max(0.0, cov(ii, ii)));
-      double lo_u = std::max(u.lo[i], x[i] - half_u), hi_u = std::min(u.hi[i], x[i] + half_u);
-      // The curvature's interval assumes a smooth cost; on the replay's rough
-      // one, step out from the solution along the linearised profile path
-      // (constant i moved, the others as the covariance says they follow:
-      // x + t C[:, i] / C[i, i]) while the sum of squares stays within the
-      // single-constant threshold: a profile likelihood interval at one
-      // replay per probe, without a sub-fit per point.
-      Eigen::VectorXd path = cov.col(ii);
-      if (cov(ii, ii) > 0) path /= cov(ii, ii);
-      else path = Eigen::VectorXd::Unit(static_cast<Eigen::Index>(n), ii);
-      for (const int side : {-1, +1}) {
-        double step = std::max(half_u, 0.01 * (u.hi[i] - u.lo[i]));
-        double reached = side < 0 ? lo_u : hi_u;
-        for (int probe = 0; probe < (options.likelihood_probes ? kLikelihoodProbes : 0); ++probe) {
-          std::vector<double> xp = x;
-          for (std::size_t j = 0; j < n; ++j) {
-            xp[j] = std::clamp(x[j] + side * step * path(static_cast<Eigen::Index>(j)), u.lo[j], u.hi[j]);
-          }
-          if (xp[i] == x[i]) break;
-          std::vector<double> rp(positions);
-          residuals_into(cases, card_at(start, u, xp.data()), rp.data(), false);
-          ++result.replays;
-          if (sum_of_squares(rp, positions) - best_ss > single_threshold) break;
-          reached = side < 0 ? std::min(reached, xp[i]) : std::max(reached, xp[i]);
-          if (xp[i] == (side < 0 ? u.lo[i] : u.hi[i])) break;
-          step *= 2;
-        }
-        (side < 0 ? lo_u : hi_u) = reached;
-      }
+      double lo_u = reached[2 * i], hi_u = reached[2 * i + 1];
       f.likelihood_widened = lo_u < x[i] - half_u * (1 + 1e-9) || hi_u > x[i] + half_u * (1 + 1e-9);
       // Every other start that ended inside the joint region is an equally
       // good answer: the interval covers it, and if it lies outside the
