@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
 
 #include <fmt/format.h>
 
@@ -236,6 +237,28 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
     outcomes.front().x = x;
     outcomes.front().sum_squares = sum_of_squares(r, first_positions);
   }
+  // The bootstrap's refits (A-CAL-12) need the fitted card only. On a long
+  // log the whole-log stage rarely moves the first stage's answer (its
+  // steps on the count-rough cost fail one replay at a time, one core
+  // busy): the refits start now from that answer, and are kept only if the
+  // whole-log stage ends exactly there; otherwise they are run again from
+  // where it ended. The result is the same either way.
+  result.noise_counts = options.noise_counts ? *options.noise_counts : estimated_noise_counts(cases);
+  const std::size_t refit_count = static_cast<std::size_t>(std::max(0, options.bootstrap));
+  const std::vector<std::vector<double>> refit_starts = start_points(u, card_x, static_cast<int>(refit_count));
+  auto refits_of = [&](const ModelCard& fitted) {
+    std::vector<FitResult> out(refit_count);
+    io::parallel_for(refit_count, options.threads, [&](std::size_t b) {
+      out[b] = refit_of(cases, card_at(start, u, refit_starts[b].data()), options, names, fitted, result.noise_counts,
+                        static_cast<int>(b));
+    });
+    return out;
+  };
+  const std::vector<double> first_stage_x = x;
+  std::future<std::vector<FitResult>> early_refits;
+  if (!coarse.empty() && refit_count > 0) {
+    early_refits = std::async(std::launch::async, refits_of, card_at(start, u, x.data()));
+  }
   Stage stage = coarse.empty() ? std::move(best_stage) : solve(cases, start, u, x, options, full, iterations, reports);
   if (!coarse.empty()) result.replays += stage.cost->replays();
 
@@ -279,28 +302,23 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
       result.correlation[i][j] = d > 0 ? cov(ii, jj) / d : 0.0;
     }
   }
-  // The intervals (one replay per likelihood probe, on one thread) and the
-  // bootstrap's refits (A-CAL-12) do not depend on each other: they run
-  // concurrently, and the bootstrap widens the intervals after all of them.
-  // Refit b starts from the start card (b = 0) or the b-th spread point of
-  // the ranges (the points the fit's own starts use), one start each: where
-  // the data leave a constant flat and the fit ended near its start, the
-  // refits from elsewhere end elsewhere and show it (the fit's own three
-  // starts from every refit would all keep the card's, which on a flat
-  // constant is a refit started at its own answer: CalibrationCases.
-  // TruthRecordedAtAFinerPhysicsStep, damping).
-  result.noise_counts = options.noise_counts ? *options.noise_counts : estimated_noise_counts(cases);
-  const std::size_t refit_count = static_cast<std::size_t>(std::max(0, options.bootstrap));
-  const std::vector<std::vector<double>> refit_starts = start_points(u, card_x, static_cast<int>(refit_count));
-  std::vector<FitResult> refits(refit_count);
-  const ModelCard fitted = result.card;
-  io::parallel_for(1 + refit_count, options.threads, [&](std::size_t task) {
-    if (task > 0) {
-      const std::size_t b = task - 1;
-      refits[b] = refit_of(cases, card_at(start, u, refit_starts[b].data()), options, names, fitted, result.noise_counts,
-                           static_cast<int>(b));
-      return;
-    }
+  // The intervals (likelihood probes) and the bootstrap's refits do not
+  // depend on each other: they run concurrently, and the bootstrap widens
+  // the intervals after all of them. Refit b starts from the start card
+  // (b = 0) or the b-th spread point of the ranges (the points the fit's
+  // own starts use), one start each: where the data leave a constant flat
+  // and the fit ended near its start, the refits from elsewhere end
+  // elsewhere and show it (the fit's own three starts from every refit
+  // would all keep the card's, which on a flat constant is a refit started
+  // at its own answer: CalibrationCases.TruthRecordedAtAFinerPhysicsStep,
+  // damping).
+  std::future<std::vector<FitResult>> refits_running;
+  if (early_refits.valid() && x == first_stage_x) {
+    refits_running = std::move(early_refits);
+  } else if (refit_count > 0) {
+    refits_running = std::async(std::launch::async, refits_of, result.card);
+  }
+  {
     // The curvature's interval assumes a smooth cost; on the replay's rough
     // one, step out from the solution along the linearised profile path
     // (constant i moved, the others as the covariance says they follow:
@@ -398,7 +416,9 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
       f.identified = f.note.empty();
       result.constants.push_back(f);
     }
-  });
+  }
+  const std::vector<FitResult> refits = refits_running.valid() ? refits_running.get() : std::vector<FitResult>{};
+  if (early_refits.valid()) early_refits.wait(); // started from a point the whole-log stage left: not used
   apply_bootstrap(refits, start, result);
   for (const FitResult& refit : refits) result.replays += refit.replays;
   // A log the model does not explain (A-CAL-10) identifies nothing: the
