@@ -72,8 +72,10 @@ void Plant::adopt_model(BuiltModel built) {
   twist_dof_ = m->jnt_dofadr[twist];
   actuator_ = require_id(m, mjOBJ_ACTUATOR, "motor", file);
   led_geom_ = require_id(m, mjOBJ_GEOM, "led_band", file);
-  ghost_mocap_ = m->body_mocapid[require_id(m, mjOBJ_BODY, "setpoint_ghost", file)];
-  if (ghost_mocap_ < 0) {
+  // The lean model of a twin never drawn has no ghost (A-TWIN-42).
+  const int ghost = mj_name2id(m, mjOBJ_BODY, "setpoint_ghost");
+  ghost_mocap_ = ghost >= 0 ? m->body_mocapid[ghost] : -1;
+  if (ghost >= 0 && ghost_mocap_ < 0) {
     throw std::invalid_argument(file + ": body \"setpoint_ghost\" must be a mocap body");
   }
   block_eq_ = mj_name2id(m, mjOBJ_EQUALITY, "flange_block"); // optional: stand-in models may lack it
@@ -262,6 +264,7 @@ void Plant::set_led_rgba(const std::array<float, 4>& rgba) {
 
 void Plant::set_ghost_angle(double angle_rad) {
   ghost_angle_rad_ = angle_rad;
+  if (ghost_mocap_ < 0) return; // the lean model: nothing draws it
   // Joint axis is -z: a flange angle q is a rotation by -q about world z.
   double* quat = data_->mocap_quat + 4 * ghost_mocap_;
   quat[0] = std::cos(-angle_rad / 2);

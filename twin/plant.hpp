@@ -117,7 +117,7 @@ class Plant {
   mjData* data() { return data_.get(); }
   const mjData* data() const { return data_.get(); }
   void set_led_rgba(const std::array<float, 4>& rgba);   // geom "led_band"
-  void set_ghost_angle(double angle_rad);                // mocap "setpoint_ghost", physical frame
+  void set_ghost_angle(double angle_rad);                // mocap "setpoint_ghost" (if the model has it), physical frame
   double ghost_angle_rad() const { return ghost_angle_rad_; } // what set_ghost_angle last set
 
  private:
@@ -142,7 +142,7 @@ class Plant {
   int twist_dof_ = 0;
   int actuator_ = 0;
   int led_geom_ = 0;
-  int ghost_mocap_ = 0;
+  int ghost_mocap_ = -1; // -1: no ghost (the lean model)
   int block_eq_ = -1; // equality "flange_block"
   double ghost_angle_rad_ = 0;
   double load_inertia_kgm2_ = 0;
