@@ -1,5 +1,6 @@
 #include "twin/model_lean.hpp"
 
+#include <charconv>
 #include <cstring>
 #include <regex>
 #include <vector>
@@ -122,29 +123,103 @@ bool same_actuators_and_equalities(const mjModel* a, const mjModel* b) {
 
 } // namespace
 
+namespace {
+
+std::string text(double v) {
+  char buf[32];
+  const auto res = std::to_chars(buf, buf + sizeof buf, v); // shortest form that reads back bit for bit
+  return std::string(buf, res.ptr);
+}
+
+// The inertial MuJoCo computed for body `i`, as MJCF.
+std::string inertial_xml(const mjModel* m, int i) {
+  const mjtNum* p = m->body_ipos + 3 * i;
+  const mjtNum* q = m->body_iquat + 4 * i;
+  const mjtNum* d = m->body_inertia + 3 * i;
+  return "<inertial pos=\"" + text(p[0]) + " " + text(p[1]) + " " + text(p[2]) + "\" quat=\"" + text(q[0]) + " " +
+         text(q[1]) + " " + text(q[2]) + " " + text(q[3]) + "\" mass=\"" + text(m->body_mass[i]) + "\" diaginertia=\"" +
+         text(d[0]) + " " + text(d[1]) + " " + text(d[2]) + "\"/>";
+}
+
+// Issue 37: the geoms of the moving bodies (the flange's drawing and the
+// load's shapes) out, each moving body with mass given the inertial MuJoCo
+// derived for it in `compiled` (the model of this very text) instead. Body
+// ids are the order of the <body> tags in the text (MuJoCo numbers bodies
+// depth first, as written).
+std::string without_moving_geoms(const std::string& xml, const mjModel* compiled) {
+  static const std::regex comment(R"re(<!--[\s\S]*?-->)re");
+  static const std::regex element(R"re(<body\b[^>]*?(/?)>|</body>|<geom\b[^>]*?/>|<geom\b[^>]*>[\s\S]*?</geom>|<inertial\b)re");
+  const std::string plain = std::regex_replace(xml, comment, "");
+  const Moving moving = moving_bodies(compiled);
+  auto replaced = [&](int body) {
+    return body > 0 && body < compiled->nbody && moving.rank[static_cast<std::size_t>(body)] >= 0 &&
+           compiled->body_mass[body] > 0;
+  };
+  // First pass: which bodies carry an <inertial> of their own (it stays, and
+  // their geoms never counted).
+  std::vector<char> has_inertial(static_cast<std::size_t>(compiled->nbody), 0);
+  int next = 1;
+  std::vector<int> open{0};
+  for (auto it = std::sregex_iterator(plain.begin(), plain.end(), element); it != std::sregex_iterator(); ++it) {
+    const std::string tag = it->str();
+    if (tag.rfind("<body", 0) == 0) {
+      if ((*it)[1].length() == 0) open.push_back(next);
+      ++next;
+    } else if (tag == "</body>") {
+      if (open.size() > 1) open.pop_back();
+    } else if (tag == "<inertial" && open.back() < compiled->nbody) {
+      has_inertial[static_cast<std::size_t>(open.back())] = 1;
+    }
+  }
+  if (next != compiled->nbody) return xml; // the text is not this model's: unchanged
+  // Second pass: the geoms of replaced bodies out, their inertials in.
+  std::string out;
+  std::size_t last = 0;
+  next = 1;
+  open.assign(1, 0);
+  for (auto it = std::sregex_iterator(plain.begin(), plain.end(), element); it != std::sregex_iterator(); ++it) {
+    const std::string tag = it->str();
+    const auto at = static_cast<std::size_t>(it->position(0));
+    const auto after = at + static_cast<std::size_t>(it->length(0));
+    if (tag.rfind("<body", 0) == 0) {
+      const int body = next++;
+      out += plain.substr(last, after - last);
+      last = after;
+      if ((*it)[1].length() == 0) {
+        open.push_back(body);
+        if (replaced(body) && !has_inertial[static_cast<std::size_t>(body)]) out += inertial_xml(compiled, body);
+      }
+    } else if (tag == "</body>") {
+      if (open.size() > 1) open.pop_back();
+    } else if (tag.rfind("<geom", 0) == 0 && replaced(open.back())) {
+      out += plain.substr(last, at - last);
+      last = after;
+    }
+  }
+  return out + plain.substr(last);
+}
+
 std::string without_drawing_geoms(const std::string& xml) {
   static const std::regex drawing(
       R"re(<geom\s+name="(table|floor_[nsew]|plate|housing|connector|collar|flange|bore|mark|stop_lug|ghost_pointer|ghost_tip)"[^>]*/>)re");
   // Lights and cameras too: mj_camlight places them in every step (~4 % of
   // a sizing run's CPU time, issue 37); nothing else in mj_step reads them.
   static const std::regex light_or_camera(R"re(<(light|camera)\s[^>]*/>)re");
+  return std::regex_replace(std::regex_replace(xml, drawing, ""), light_or_camera, "");
+}
+
+} // namespace
+
+std::string lean_xml(const std::string& xml, const mjModel* compiled) {
   // The two bodies without dynamics (issue 37): the housing, welded to the
-  // world, whose LED band goes onto the world body (Plant::set_led_rgba sets
-  // its colour; nothing reads its pose undrawn), and the set-point ghost, a
-  // mocap body (Plant::set_ghost_angle then only keeps the angle). Each
-  // step computes every body's pose; a body holding another is left alone.
-  static const std::regex housing(R"re(<body\s+name="housing"[^>]*>((?:(?!<body)[\s\S])*?)</body>)re");
+  // world, with its LED band (Plant keeps the LED's colour itself when the
+  // model has no band), and the set-point ghost, a mocap body
+  // (Plant::set_ghost_angle then only keeps the angle). A body holding
+  // another is left alone.
+  static const std::regex housing(R"re(<body\s+name="housing"[^>]*>(?:(?!<body)[\s\S])*?</body>)re");
   static const std::regex ghost(R"re(<body\s+name="setpoint_ghost"[^>]*>(?:(?!<body)[\s\S])*?</body>)re");
-  static const std::regex led(R"re(<geom\s+name="led_band"[^>]*/>)re");
-  std::string out = std::regex_replace(std::regex_replace(xml, drawing, ""), light_or_camera, "");
-  std::smatch body;
-  if (std::regex_search(out, body, housing)) {
-    std::smatch band;
-    const std::string inside = body[1].str();
-    const std::string kept = std::regex_search(inside, band, led) ? band.str() : std::string();
-    out = body.prefix().str() + kept + body.suffix().str();
-  }
-  return std::regex_replace(out, ghost, "");
+  const std::string fewer = without_drawing_geoms(without_moving_geoms(xml, compiled));
+  return std::regex_replace(std::regex_replace(fewer, housing, ""), ghost, "");
 }
 
 bool same_dynamics(const mjModel* a, const mjModel* b) {
