@@ -349,12 +349,9 @@ ModelKey model_key(const ComposedModel& composed, double physics_dt_s, const Mec
   return ModelKey{composed.xml, composed.files, static_cast<int>(detail), physics_dt_s, mechanics};
 }
 
-// Compiled, with the card's drive train and the physics step (contacts only with hard stops).
-MjModelPtr compiled(const ModelKey& key, bool contacts, const std::string& origin) {
-  const auto detail = static_cast<Detail>(key.detail);
-  const std::string xml = detail == Detail::Full    ? key.xml
-                          : detail == Detail::Coarse ? without_texture_detail(key.xml)
-                                                     : without_drawing_geoms(without_texture_detail(key.xml));
+// Compiled from `xml` (the key's text, as drawn or coarse), with the card's
+// drive train and the physics step (contacts only with hard stops).
+MjModelPtr compiled(const std::string& xml, const ModelKey& key, bool contacts, const std::string& origin) {
   MjModelPtr model = compile_mjcf(xml, origin, key.files);
   mjModel* m = model.get();
   m->opt.timestep = key.physics_dt_s;
@@ -364,7 +361,19 @@ MjModelPtr compiled(const ModelKey& key, bool contacts, const std::string& origi
   }
   return model;
 }
-} // namespace
+
+// A-TWIN-42: the lean model only where it steps exactly as the coarse one
+// (same_dynamics); else, or if its text does not compile, the coarse one.
+MjModelPtr leanest(const std::string& coarse_xml, MjModelPtr coarse, const ModelKey& key, const std::string& origin) {
+  try {
+    MjModelPtr lean = compiled(lean_xml(coarse_xml, coarse.get()), key, false, origin);
+    if (same_dynamics(lean.get(), coarse.get())) return lean;
+  } catch (const std::exception&) {
+    // a load's text the lean edit breaks: drawn as it is
+  }
+  return coarse;
+}
+} // namespace} // namespace
 
 double built_load_inertia_kgm2(const LoadSpec& load, const std::vector<HardStop>& hard_stops, double physics_dt_s,
                                const MechanicsConstants& mechanics, const std::string& module_model_path) {
@@ -397,11 +406,9 @@ BuiltModel build(const LoadSpec& load, const std::vector<HardStop>& hard_stops, 
   ModelKey key = model_key(composed, physics_dt_s, mechanics, detail);
   if (std::optional<BuiltModel> kept = cached_model(key)) return std::move(*kept); // issue 31: compiled once
   BuiltModel built;
-  built.model = compiled(key, !hard_stops.empty(), origin);
-  if (detail == Detail::Lean) { // A-TWIN-42: lean only where it steps exactly as the full model
-    MjModelPtr coarse = compiled(model_key(composed, physics_dt_s, mechanics, Detail::Coarse), !hard_stops.empty(), origin);
-    if (!same_dynamics(built.model.get(), coarse.get())) built.model = std::move(coarse);
-  }
+  const std::string xml = detail == Detail::Full ? key.xml : without_texture_detail(key.xml);
+  built.model = compiled(xml, key, !hard_stops.empty(), origin);
+  if (detail == Detail::Lean) built.model = leanest(xml, std::move(built.model), key, origin);
   mjModel* m = built.model.get();
   // The module's own joints: "rotor" and "flange" (the compliance).
   if (m->njnt != 2) {

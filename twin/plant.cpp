@@ -71,9 +71,11 @@ void Plant::adopt_model(BuiltModel built) {
   twist_qpos_ = m->jnt_qposadr[twist];
   twist_dof_ = m->jnt_dofadr[twist];
   actuator_ = require_id(m, mjOBJ_ACTUATOR, "motor", file);
-  led_geom_ = require_id(m, mjOBJ_GEOM, "led_band", file);
-  ghost_mocap_ = m->body_mocapid[require_id(m, mjOBJ_BODY, "setpoint_ghost", file)];
-  if (ghost_mocap_ < 0) {
+  led_geom_ = mj_name2id(m, mjOBJ_GEOM, "led_band"); // the lean model has none (A-TWIN-42)
+  // The lean model of a twin never drawn has no ghost (A-TWIN-42).
+  const int ghost = mj_name2id(m, mjOBJ_BODY, "setpoint_ghost");
+  ghost_mocap_ = ghost >= 0 ? m->body_mocapid[ghost] : -1;
+  if (ghost >= 0 && ghost_mocap_ < 0) {
     throw std::invalid_argument(file + ": body \"setpoint_ghost\" must be a mocap body");
   }
   block_eq_ = mj_name2id(m, mjOBJ_EQUALITY, "flange_block"); // optional: stand-in models may lack it
@@ -256,12 +258,15 @@ void Plant::set_flange_blocked(bool blocked) {
 bool Plant::flange_blocked() const { return block_eq_ >= 0 && model_->eq_active[block_eq_] != 0; }
 
 void Plant::set_led_rgba(const std::array<float, 4>& rgba) {
+  led_rgba_ = rgba;
+  if (led_geom_ < 0) return; // the lean model: nothing draws it
   float* dst = model_->geom_rgba + 4 * led_geom_;
   for (int i = 0; i < 4; ++i) dst[i] = rgba[static_cast<std::size_t>(i)];
 }
 
 void Plant::set_ghost_angle(double angle_rad) {
   ghost_angle_rad_ = angle_rad;
+  if (ghost_mocap_ < 0) return; // the lean model: nothing draws it
   // Joint axis is -z: a flange angle q is a rotation by -q about world z.
   double* quat = data_->mocap_quat + 4 * ghost_mocap_;
   quat[0] = std::cos(-angle_rad / 2);

@@ -2,7 +2,6 @@
 // a gripper on the flange picks up or releases a part. MuJoCo fixes a
 // body's mass and inertia when the model is compiled, so the model is
 // rebuilt with the new load and takes over the state of the old one.
-#include <array>
 
 #include "twin/plant.hpp"
 
@@ -18,8 +17,6 @@ void Plant::set_load(const LoadSpec& load) {
   const double rotor_v = old_d->qvel[rotor_dof_], twist_v = old_d->qvel[twist_dof_];
   const bool blocked = flange_blocked();
   const double block_angle = block_eq_ >= 0 ? old_m->eq_data[mjNEQDATA * block_eq_] : 0.0;
-  std::array<float, 4> led{};
-  for (int i = 0; i < 4; ++i) led[static_cast<std::size_t>(i)] = old_m->geom_rgba[4 * led_geom_ + i];
 
   adopt_model(std::move(built));
   config_.load = load;
@@ -34,7 +31,7 @@ void Plant::set_load(const LoadSpec& load) {
     model_->eq_data[mjNEQDATA * block_eq_] = block_angle;
     model_->eq_active[block_eq_] = 1;
   }
-  set_led_rgba(led);
+  set_led_rgba(led_rgba_);
   set_ghost_angle(ghost_angle_rad_);
   mj_forward(model_.get(), d);
 }

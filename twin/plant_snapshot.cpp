@@ -25,14 +25,12 @@ std::string world_difference(const WorldSpec& now, const WorldSpec& then) {
 PlantSnapshot Plant::snapshot() const {
   if (failed_) throw std::runtime_error("plant: snapshot after a MuJoCo failure");
   std::shared_ptr<const mjData> copy(mj_copyData(nullptr, model_.get(), data_.get()), MjDataDeleter{});
-  std::array<float, 4> led{};
-  for (int i = 0; i < 4; ++i) led[static_cast<std::size_t>(i)] = model_->geom_rgba[4 * led_geom_ + i];
   return PlantSnapshot{
       .world = config_,
       .data = std::move(copy),
       .flange_blocked = flange_blocked(),
       .block_angle_rad = block_eq_ >= 0 ? model_->eq_data[mjNEQDATA * block_eq_] : 0.0,
-      .led_rgba = led,
+      .led_rgba = led_rgba_,
       .drive = drive_,
       .supply = supply_,
       .thermal = thermal_,

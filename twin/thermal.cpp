@@ -25,22 +25,32 @@ double Thermal::steady_winding_C(double loss_W) const {
   return spec_.ambient_C + loss_W * (constants_.winding_to_housing_K_per_W + constants_.housing_to_ambient_K_per_W);
 }
 
+const Thermal::Matrix& Thermal::matrix(double h) {
+  if (matrix_.h == h) return matrix_;
+  Matrix& k = matrix_;
+  k.h = h;
+  const double gw = 1.0 / constants_.winding_to_housing_K_per_W;
+  k.ga = 1.0 / constants_.housing_to_ambient_K_per_W;
+  k.cw = constants_.winding_capacity_J_per_K / h;
+  k.ch = constants_.housing_capacity_J_per_K / h;
+  k.a11 = k.cw + gw;
+  k.a12 = -gw;
+  k.a21 = -gw;
+  k.a22 = k.ch + gw + k.ga;
+  k.det = k.a11 * k.a22 - k.a12 * k.a21;
+  return k;
+}
+
 void Thermal::step(double dt_s, double loss_W) {
   // Backward Euler on the 2x2 linear system: stable for any time_scale.
   //   Cw dTw = P - (Tw - Th) / Rwh
   //   Ch dTh = (Tw - Th) / Rwh - (Th - Ta) / Rha
-  const double h = dt_s * spec_.time_scale;
-  const double gw = 1.0 / constants_.winding_to_housing_K_per_W;
-  const double ga = 1.0 / constants_.housing_to_ambient_K_per_W;
-  const double cw = constants_.winding_capacity_J_per_K / h;
-  const double ch = constants_.housing_capacity_J_per_K / h;
   // [cw + gw, -gw; -gw, ch + gw + ga] [Tw; Th] = [cw Tw + P; ch Th + ga Ta]
-  const double a11 = cw + gw, a12 = -gw, a21 = -gw, a22 = ch + gw + ga;
-  const double b1 = cw * winding_C_ + loss_W;
-  const double b2 = ch * housing_C_ + ga * spec_.ambient_C;
-  const double det = a11 * a22 - a12 * a21;
-  winding_C_ = (b1 * a22 - a12 * b2) / det;
-  housing_C_ = (a11 * b2 - a21 * b1) / det;
+  const Matrix& k = matrix(dt_s * spec_.time_scale);
+  const double b1 = k.cw * winding_C_ + loss_W;
+  const double b2 = k.ch * housing_C_ + k.ga * spec_.ambient_C;
+  winding_C_ = (b1 * k.a22 - k.a12 * b2) / k.det;
+  housing_C_ = (k.a11 * b2 - k.a21 * b1) / k.det;
 }
 
 } // namespace sreh

@@ -29,10 +29,18 @@ class Thermal {
   const ThermalConstants& constants() const { return constants_; }
 
  private:
+  // Backward Euler's matrix for a step h: the same numbers as computed in
+  // every step, computed once per step size (issue 37: a step's divisions).
+  struct Matrix {
+    double h = 0, ga = 0, cw = 0, ch = 0, a11 = 0, a12 = 0, a21 = 0, a22 = 0, det = 0;
+  };
+  const Matrix& matrix(double h);
+
   ThermalSpec spec_;
   ThermalConstants constants_;
   double winding_C_;
   double housing_C_;
+  Matrix matrix_;
 };
 
 } // namespace sreh
