@@ -1,6 +1,6 @@
 #!/bin/sh
 # The gentlest search's answers of two builds, case by case (issue 37,
-# A-SIZE-27): `size --json` of every case of a gentle_proxy.py case file
+# A-SIZE-26): `size --json` of every case of a gentle_proxy.py case file
 # (key=value words) with BEFORE and AFTER, compared with cmp; where they
 # differ only in `simulations` (the runs taken) the answer is the same, else
 # the recommended sets and RMS torques are printed.

@@ -1,4 +1,4 @@
-"""The gentlest search's proxy error (issue 37, A-SIZE-27).
+"""The gentlest search's proxy error (issue 37, A-SIZE-26).
 
 Makes the cases (120 random single moves from a fixed seed, the 12 gentlest
 `size` cases of docs/performance-sizing.md and the studio's 20 edits), runs

@@ -1,4 +1,4 @@
-// The gentlest search's proxy against the twin (issue 37, A-SIZE-27): for
+// The gentlest search's proxy against the twin (issue 37, A-SIZE-26): for
 // each single-move case, the sets the gentlest search would consider, in
 // its order, run in the twin until their proxy is `--window` beyond the
 // best feasible set's, one CSV row per run: the proxy (TorqueProxy), the
@@ -54,7 +54,7 @@ SizeOptions parse_case(const std::string& line) {
   return o;
 }
 
-// The proxy before issue 37's A-SIZE-27: RMS of the planned acceleration
+// The proxy before issue 37's A-SIZE-26: RMS of the planned acceleration
 // (48 midpoint samples of the move) over the cycle, inertia and friction left out.
 double acceleration_proxy(const SizingRequest& rq, const MotionSetting& s, double load_gcm2, double hold_s) {
   const Profile p = Profile::rest_to_rest(internal_counts_to_rad(deg_to_wire_counts(rq.angle_deg) * kInternalPerWireCount),

@@ -32,9 +32,11 @@ TorqueProxy::TorqueProxy(const SizingRequest& rq, double load_gcm2) {
 }
 
 // A-TWIN-24: the axis tilted, the load's centre of mass at angle a around
-// it feels -m g r sin(tilt) cos(a); the drive holds it with the opposite.
+// it (at flange angle 0 along +x, the largest torque) needs m g r sin(tilt)
+// cos(a) from the drive, against the direction of travel while the load is
+// on that side (the sign as the twin's trace shows it, A-SIZE-26).
 double TorqueProxy::gravity_Nm(double flange_rad) const {
-  return gravity_max_Nm_ * std::cos(flange_rad + com_angle_rad_);
+  return -gravity_max_Nm_ * std::cos(flange_rad + com_angle_rad_);
 }
 
 // The rotor's dry friction grows by (1 - efficiency) x the torque the gear
@@ -81,7 +83,7 @@ double TorqueProxy::cycle_rms_Nm(const Profile& move, double hold_s) const {
   // At rest the drive keeps pushing the way it moved, the rotor's dry
   // friction holding it (up to the breakaway) as it held the move's last
   // instant: the hold torque is the gravity torque plus the breakaway in
-  // the direction of the move just made (measured in the twin, A-SIZE-27).
+  // the direction of the move just made (measured in the twin, A-SIZE-26).
   const double g_end = gravity_Nm(end_rad) + breakaway_Nm_, g_start = gravity_Nm(0.0) - breakaway_Nm_;
   const double total_s = 2.0 * (move.duration_s() + hold_s);
   return total_s > 0 ? std::sqrt((out + back + hold_s * (g_end * g_end + g_start * g_start)) / total_s) : 0.0;

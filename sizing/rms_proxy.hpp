@@ -1,5 +1,5 @@
 // The RMS torque of a single move's cycle as its plan predicts it (issue 37):
-// the order and the window of the gentlest search (A-SIZE-10, A-SIZE-27).
+// the order and the window of the gentlest search (A-SIZE-10, A-SIZE-26).
 // From the planned profile and the model card only, no simulation: the
 // motor torque (referred to the output) the drive must give to follow the
 // plan exactly, with the drive train as the twin models it (A-TWIN-4,
@@ -20,9 +20,9 @@
 namespace sreh::sizing {
 
 // The gentlest search runs every set whose proxy is within this fraction
-// of the best feasible set's proxy (A-SIZE-27: the measured spread of the
+// of the best feasible set's proxy (A-SIZE-26: the measured spread of the
 // simulated RMS over the proxy, with its margin).
-inline constexpr double kGentleProxyWindow = 0.03;
+inline constexpr double kGentleProxyWindow = 0.02;
 
 class TorqueProxy {
  public:

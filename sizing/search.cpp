@@ -318,7 +318,7 @@ namespace {
 
 // The grid points meeting the target (as a bound on the worst positioning
 // time), lowest proxy first: the plan's RMS torque over the cycle
-// (TorqueProxy, A-SIZE-27), then the shorter travel. `grid`: the points the
+// (TorqueProxy, A-SIZE-26), then the shorter travel. `grid`: the points the
 // planner looked at.
 std::vector<Candidate> gentle_order(const SizingRequest& rq, double load_gcm2, int& grid) {
   const ParameterSetValues probe = make_parameter_set(rq, MotionSetting{}, load_gcm2);
