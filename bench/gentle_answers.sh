@@ -15,13 +15,18 @@ while IFS= read -r line; do
   args=$(echo "$line" | sed -e 's/angle=/--angle-deg /; s/loadfile=/--load /; s/load=/--load-gcm2 /' \
     -e 's/pos=/--max-positioning-ms /; s/cycle=/--max-cycle-ms /; s/dwell=/--dwell-s /' \
     -e 's/V=/--voltage-V /; s/tilt=/--mounting-tilt-deg /')
-  # shellcheck disable=SC2086
-  "$before" size $args --json > "$out/b_$n.json" || true
-  # shellcheck disable=SC2086
-  "$after" size $args --json > "$out/a_$n.json" || true
-  rb=$(grep -o '"simulations": [0-9]*' "$out/b_$n.json" | grep -o '[0-9]*$')
-  ra=$(grep -o '"simulations": [0-9]*' "$out/a_$n.json" | grep -o '[0-9]*$')
-  runs_before=$((runs_before + rb)) runs_after=$((runs_after + ra))
+  # Outputs already there (a run cut short) are kept; a refused load gives none.
+  for side in b a; do
+    if [ ! -s "$out/${side}_$n.json" ]; then
+      exe=$before
+      [ "$side" = a ] && exe=$after
+      # shellcheck disable=SC2086
+      "$exe" size $args --json > "$out/${side}_$n.json" 2> "$out/${side}_$n.err" || true
+    fi
+  done
+  rb=$(grep -o '"simulations": [0-9]*' "$out/b_$n.json" | grep -o '[0-9]*$' || true)
+  ra=$(grep -o '"simulations": [0-9]*' "$out/a_$n.json" | grep -o '[0-9]*$' || true)
+  runs_before=$((runs_before + ${rb:-0})) runs_after=$((runs_after + ${ra:-0}))
   if cmp -s "$out/b_$n.json" "$out/a_$n.json"; then
     same=$((same + 1))
   elif [ "$(sed 's/"simulations": [0-9]*//' "$out/b_$n.json" | md5sum)" = "$(sed 's/"simulations": [0-9]*//' "$out/a_$n.json" | md5sum)" ]; then

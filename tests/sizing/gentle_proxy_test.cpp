@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <optional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,8 @@ struct Case {
   double angle_deg, load_gcm2, dwell_s, max_positioning_ms;
   double arm_kg = 0, arm_radius_m = 0; // given: an eccentric mass on a horizontal axis instead of the inertia
 };
+
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
 
 SizingRequest request(const Case& c) {
   SizingRequest rq;
