@@ -10,6 +10,10 @@
 // CASES.txt: one case a line, `key=value` words: angle (deg), load (g cm^2)
 // or loadfile (a load file), pos or cycle (the required positioning or
 // cycle time, ms), dwell (s), V (supply), tilt (deg from vertical).
+// With PROXY_TRACE="SPEED ACCEL JERK" in the environment: that set of the
+// first case run once, its trace (time, set-point, position, speed,
+// torque) written to OUT.csv (how the hold and cruise torques of
+// docs/performance-sizing.md were seen).
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -107,7 +111,7 @@ int run(int argc, char** argv) {
     else if (k == "--max-runs") max_runs = std::stoi(argv[i + 1]);
     else { std::cerr << "unknown option " << k << "\n"; return 2; }
   }
-  if (std::getenv("PROXY_TRACE")) { // debugging: PROXY_TRACE="speed acc jerk" dumps the first case's run
+  if (std::getenv("PROXY_TRACE")) {
     std::ifstream in1(argv[1]);
     std::string line;
     std::getline(in1, line);

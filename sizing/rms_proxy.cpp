@@ -32,9 +32,9 @@ TorqueProxy::TorqueProxy(const SizingRequest& rq, double load_gcm2) {
 }
 
 // A-TWIN-24: the axis tilted, the load's centre of mass at angle a around
-// it (at flange angle 0 along +x, the largest torque) needs m g r sin(tilt)
-// cos(a) from the drive, against the direction of travel while the load is
-// on that side (the sign as the twin's trace shows it, A-SIZE-26).
+// the axis (a = 0 along +x: the largest torque); the drive holds it with
+// -m g r sin(tilt) cos(a), the sign as the twin's trace shows it (the rated
+// arm at rest at 0 deg: -0.11 N m, A-SIZE-26).
 double TorqueProxy::gravity_Nm(double flange_rad) const {
   return -gravity_max_Nm_ * std::cos(flange_rad + com_angle_rad_);
 }

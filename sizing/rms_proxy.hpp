@@ -7,10 +7,10 @@
 // the rotor's Coulomb friction, its viscous drag, the gear's loss growing
 // with the torque it transmits, and gravity on the load when the axis is
 // not vertical; at rest between moves the gravity torque and the friction's
-// breakaway the drive keeps pushing against. What it
-// leaves out (the controller's tracking, the gear's spring and backlash,
-// cogging, Stribeck near standstill, the 2 ms sampling of the trace) is
-// what bench/gentle_proxy measures.
+// breakaway the drive keeps pushing against. What it leaves out (the
+// controller's tracking, the gear's spring and backlash, cogging, Stribeck
+// near standstill, the 2 ms sampling of the trace) is what
+// bench/gentle_proxy.py measures.
 #pragma once
 #include <vector>
 
@@ -34,11 +34,10 @@ class TorqueProxy {
   // request's angle): out, `hold_s` at rest, back, `hold_s` at rest, N m.
   double cycle_rms_Nm(const Profile& move, double hold_s) const;
 
+ private:
   // The torque the plan asks for at one instant of a move that started at
   // flange angle `start_rad` in direction `direction` (+1 / -1), N m.
   double torque_Nm(const KinematicState& along, double direction, double start_rad) const;
-
- private:
   double move_torque_sq_integral(const Profile& move, double direction, double start_rad) const;
   double gravity_Nm(double flange_rad) const;
 

@@ -42,11 +42,10 @@ constexpr int kMaxRuns = 60; // a safety bound; the searches stop far earlier
 struct Candidate {
   MotionSetting setting;
   double travel_s = 0;
-  double rms_proxy = 0;     // RMS of the planned acceleration over one move, rad/s^2
   double heat_proxy = 0;    // mean of acc^2 over the whole cycle (moves, settling, handshakes, dwells)
   double torque_proxy = 0;  // max over the move of |acc| / motor capability at that speed (J-free)
   double rms_Nm = 0;        // the gentlest search's: the plan's RMS torque over the cycle (TorqueProxy)
-  bool proxies = false;     // the three proxies computed (with_proxies)
+  bool proxies = false;     // the proxies computed (with_proxies)
 };
 
 double round_tenth(double v) { return std::round(v * 10.0) / 10.0; } // the device stores 0.1 units
@@ -79,7 +78,6 @@ void with_proxies(const SizingRequest& rq, double load_gcm2, double fixed_s, Can
     const double cap = motor.max_torque_Nm(std::abs(st.vel_rad_s), rq.world.supply.voltage_V, st.acc_rad_s2 * st.vel_rad_s >= 0 ? 1.0 : -1.0);
     c.torque_proxy = std::max(c.torque_proxy, std::abs(st.acc_rad_s2) / std::max(cap, 1e-6));
   }
-  c.rms_proxy = std::sqrt(sq / kSamples);
   c.heat_proxy = sq / kSamples * c.travel_s / (c.travel_s + fixed_s);
   c.proxies = true;
 }
