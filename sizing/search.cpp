@@ -25,6 +25,7 @@
 #include "device_logic/motor_model.hpp"
 #include "device_logic/planner.hpp"
 #include "device_logic/units.hpp"
+#include "sizing/rms_proxy.hpp"
 #include "sizing/sizing.hpp"
 
 namespace sreh::sizing {
@@ -36,18 +37,15 @@ constexpr double kLevels_pct[] = {100, 92, 85, 78, 71, 65, 59, 53, 48, 43, 38, 3
 // Stop the fastest search once no remaining point can be faster by more
 // than this fraction (well inside the 0.5 % the issue asks for).
 constexpr double kFastestTolerance = 0.001;
-// Gentlest: keep trying points whose RMS proxy is within this fraction of
-// the best found point's proxy (the real RMS may order them differently).
-constexpr double kGentleProxySlack = 0.03;
 constexpr int kMaxRuns = 60; // a safety bound; the searches stop far earlier
 
 struct Candidate {
   MotionSetting setting;
   double travel_s = 0;
-  double rms_proxy = 0;     // RMS of the planned acceleration over one move, rad/s^2
   double heat_proxy = 0;    // mean of acc^2 over the whole cycle (moves, settling, handshakes, dwells)
   double torque_proxy = 0;  // max over the move of |acc| / motor capability at that speed (J-free)
-  bool proxies = false;     // the three proxies computed (with_proxies)
+  double rms_Nm = 0;        // the gentlest search's: the plan's RMS torque over the cycle (TorqueProxy)
+  bool proxies = false;     // the proxies computed (with_proxies)
 };
 
 double round_tenth(double v) { return std::round(v * 10.0) / 10.0; } // the device stores 0.1 units
@@ -65,10 +63,13 @@ Profile planned(const SizingRequest& rq, const MotionSetting& s, double load_gcm
 // planner is deterministic). The fastest search needs them only for the
 // candidates it reaches (issue 31: computing them for all 21952 grid points
 // was ~10 % of a sweep's CPU time), the gentlest one for all.
-void with_proxies(const SizingRequest& rq, double load_gcm2, double fixed_s, Candidate& c) {
+// With `rms`, the plan's RMS torque too (the gentlest search's order).
+void with_proxies(const SizingRequest& rq, double load_gcm2, double fixed_s, Candidate& c,
+                  const TorqueProxy* rms = nullptr) {
   if (c.proxies) return;
   const MotorModel& motor = rq.world.module.drive.motor;
   const Profile p = planned(rq, c.setting, load_gcm2);
+  if (rms) c.rms_Nm = rms->cycle_rms_Nm(p, fixed_s);
   constexpr int kSamples = 48;
   double sq = 0;
   for (int k = 0; k < kSamples; ++k) {
@@ -77,7 +78,6 @@ void with_proxies(const SizingRequest& rq, double load_gcm2, double fixed_s, Can
     const double cap = motor.max_torque_Nm(std::abs(st.vel_rad_s), rq.world.supply.voltage_V, st.acc_rad_s2 * st.vel_rad_s >= 0 ? 1.0 : -1.0);
     c.torque_proxy = std::max(c.torque_proxy, std::abs(st.acc_rad_s2) / std::max(cap, 1e-6));
   }
-  c.rms_proxy = std::sqrt(sq / kSamples);
   c.heat_proxy = sq / kSamples * c.travel_s / (c.travel_s + fixed_s);
   c.proxies = true;
 }
@@ -312,10 +312,13 @@ SizingResult search_fastest(const SizingRequest& rq, double load_gcm2, const Set
   return result;
 }
 
-SizingResult search_gentlest(const SizingRequest& rq, double load_gcm2, const SetJudge& judge) {
-  SizingResult result;
-  result.recommended = true;
-  result.objective = "gentlest";
+namespace {
+
+// The grid points meeting the target (as a bound on the worst positioning
+// time), lowest proxy first: the plan's RMS torque over the cycle
+// (TorqueProxy, A-SIZE-26), then the shorter travel. `grid`: the points the
+// planner looked at.
+std::vector<Candidate> gentle_order(const SizingRequest& rq, double load_gcm2, int& grid) {
   const ParameterSetValues probe = make_parameter_set(rq, MotionSetting{}, load_gcm2);
   const double wait_s = probe.wait_ms * 1e-3;
   // The target as a bound on the worst positioning time.
@@ -326,23 +329,37 @@ SizingResult search_gentlest(const SizingRequest& rq, double load_gcm2, const Se
   }
 
   std::vector<Candidate> cs = candidates(rq, load_gcm2);
-  result.candidates = static_cast<int>(cs.size());
+  grid = static_cast<int>(cs.size());
   std::erase_if(cs, [&](const Candidate& c) { return c.travel_s + wait_s > max_pos_s; });
   const double fixed_s = fixed_per_move_s(rq, load_gcm2);
-  for (Candidate& c : cs) with_proxies(rq, load_gcm2, fixed_s, c);
-  // Lowest RMS first: the planned acceleration's RMS over the whole cycle,
-  // a proxy of the RMS torque the twin then measures.
-  auto cycle_proxy = [&](const Candidate& c) { return std::sqrt(c.heat_proxy); };
+  const TorqueProxy rms(rq, load_gcm2);
+  for (Candidate& c : cs) with_proxies(rq, load_gcm2, fixed_s, c, &rms);
   std::sort(cs.begin(), cs.end(), [&](const Candidate& a, const Candidate& b) {
-    const double pa = cycle_proxy(a), pb = cycle_proxy(b);
-    if (pa != pb) return pa < pb;
+    if (a.rms_Nm != b.rms_Nm) return a.rms_Nm < b.rms_Nm;
     return a.travel_s < b.travel_s;
   });
+  return cs;
+}
+
+} // namespace
+
+std::vector<PlannedSet> gentlest_order(const SizingRequest& rq, double load_gcm2) {
+  int grid = 0;
+  std::vector<PlannedSet> out;
+  for (const Candidate& c : gentle_order(rq, load_gcm2, grid)) out.push_back({c.setting, c.travel_s, c.rms_Nm});
+  return out;
+}
+
+SizingResult search_gentlest(const SizingRequest& rq, double load_gcm2, const SetJudge& judge) {
+  SizingResult result;
+  result.recommended = true;
+  result.objective = "gentlest";
+  const std::vector<Candidate> cs = gentle_order(rq, load_gcm2, result.candidates);
   Runner runner{rq, load_gcm2, result, judge, {}, {}, {}, {}};
   std::optional<Evaluation> best;
   double best_proxy = 0;
   Speculation ahead(runner);
-  const auto beyond = [&](const Candidate& c) { return best && cycle_proxy(c) > best_proxy * (1 + kGentleProxySlack); };
+  const auto beyond = [&](const Candidate& c) { return best && c.rms_Nm > best_proxy * (1 + kGentleProxyWindow); };
   for (std::size_t i = 0; i < cs.size(); ++i) {
     const Candidate& c = cs[i];
     if (beyond(c)) break;
@@ -358,7 +375,7 @@ SizingResult search_gentlest(const SizingRequest& rq, double load_gcm2, const Se
     Evaluation ev = runner.run(c, ahead.take(i));
     if (ev.feasible && (!best || ev.rms_torque_Nm < best->rms_torque_Nm)) {
       best = std::move(ev);
-      best_proxy = cycle_proxy(c);
+      best_proxy = c.rms_Nm;
     }
   }
   if (best) {
