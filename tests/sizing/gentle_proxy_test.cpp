@@ -92,7 +92,7 @@ TEST_P(Window, FindsTheLowestSimulatedRmsOfTwiceTheWindow) {
 }
 
 // Those of the 152 cases measured that need the widest window (A-SIZE-26):
-// a short move, where the hold between moves weighs most (1.6 % needed);
+// a short move, slow sets chattering while they cruise (1.6 % needed);
 // a long dwell, where the torque the friction holds varies from set to
 // set (1.1 %); a horizontal eccentric arm, gravity in the proxy (1.1 %).
 INSTANTIATE_TEST_SUITE_P(Cases, Window,
