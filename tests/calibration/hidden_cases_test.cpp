@@ -129,5 +129,41 @@ TEST(CalibrationCases, AFivePercentLoadErrorIsFlagged) {
   test::expect_recovered(fit, default_model_card(), 0.10, 0);
 }
 
+// The same 5 % load error with the load fitted too (`--fit load`: the
+// default constants and the load, A-CAL-14): the load is recovered, its
+// interval holds the 5250 g cm^2 carried and excludes the 5000 stated, the
+// fit explains the log, and the fitted card with the fitted load predicts
+// the held-out move (on a set configured for the stated load, as the PLC's
+// are).
+TEST(CalibrationCases, AFivePercentLoadErrorIsRecoveredWithFitLoad) {
+  if (kSanitized) GTEST_SKIP() << "a fit from three starts with the bootstrap; checked in the Release stage";
+  constexpr double kStated_gcm2 = 5000;
+  constexpr double kCarried_gcm2 = 5250;
+  const Scenario plan = test::plan_moves(kStated_gcm2, kMoves);
+  Scenario heavier = plan;
+  heavier.world.load = InertiaLoad{kCarried_gcm2};
+  FitOptions options;
+  options.names = {"load"};
+  const FitResult fit = fit_and_print({case_for(test::record_log(heavier, default_model_card()), plan, kStated_gcm2)},
+                                      options);
+  for (const std::string& note : fit.notes) std::printf("note: %s\n", note.c_str());
+  EXPECT_TRUE(fit.adequate) << fit.inadequacy;
+  ASSERT_EQ(fit.constants.size(), default_fit_names().size() + 1);
+  const FittedConstant& load = fit.constants.back();
+  ASSERT_TRUE(load.load);
+  EXPECT_EQ(load.name, "load_inertia");
+  EXPECT_NEAR(load.start, kStated_gcm2, 0.5); // as MuJoCo computes it
+  EXPECT_TRUE(load.identified) << load.note;
+  EXPECT_NEAR(load.value, kCarried_gcm2, 0.02 * kCarried_gcm2);
+  EXPECT_GT(load.ci95_lo, kStated_gcm2); // the stated load is excluded: the error is named
+  ASSERT_EQ(fit.load_scale.size(), 1u);
+  EXPECT_NEAR(fit.load_scale[0] * load.start, load.value, 1e-9 * load.value);
+  bool named = false;
+  for (const std::string& note : fit.notes) named = named || note.starts_with("the module carries 52");
+  EXPECT_TRUE(named) << "no note naming the carried load";
+  test::expect_recovered(fit, default_model_card(), 0.10, 0, kCarried_gcm2);
+  test::expect_predicts_held_out(fit.card, default_model_card(), 0.05, kCarried_gcm2, load.value, kStated_gcm2);
+}
+
 } // namespace
 } // namespace sreh
