@@ -22,6 +22,11 @@ namespace {
 using test::kSanitized;
 
 const std::vector<int> kMoves{0, 1, 2, 7};
+// The loop-tuning case adds the moves `calibrate --plan` at 15000 g cm^2
+// names for the loop constants (move 3, to -120 deg on set 4; move 14, to
+// 10 deg on set 7: 19 % and 9 % of the velocity bandwidth's change, 13 %
+// and 10 % of the integral ratio's).
+const std::vector<int> kLoopMoves{0, 1, 2, 3, 7, 14};
 
 // Friction and drive train 24-35 % off the card, inside the ranges (the
 // worked example's hidden module).
@@ -87,7 +92,8 @@ TEST(CalibrationCases, TruthRecordedAtAFinerPhysicsStep) {
 }
 
 // Loop tuning from logs at two configured loads (issue 36: at one load the
-// bandwidth and the ratios trade off, correlations 0.95-0.98).
+// bandwidth and the ratios trade off, correlations 0.95-0.98), of the
+// moves that show the loop constants (kLoopMoves).
 TEST(CalibrationCases, LoopTuningFromTwoLoads) {
   if (kSanitized) GTEST_SKIP() << "a fit from three starts with the bootstrap; checked in the Release stage";
   const ModelCard truth = test::card_with({{"velocity_bandwidth", 1060},  // +6 %
@@ -95,7 +101,7 @@ TEST(CalibrationCases, LoopTuningFromTwoLoads) {
                                            {"integral_ratio", 0.36}});    // +20 %
   std::vector<FitCase> cases;
   for (const double load : {0.0, 15000.0}) {
-    const Scenario plan = test::plan_moves(load, kMoves);
+    const Scenario plan = test::plan_moves(load, kLoopMoves);
     cases.push_back(case_for(test::record_log(plan, truth), plan, load));
     cases.back().log.path = load == 0 ? "no_load.csv" : "heavy.csv";
   }
@@ -104,10 +110,14 @@ TEST(CalibrationCases, LoopTuningFromTwoLoads) {
   const FitResult fit = fit_and_print(cases, options);
   EXPECT_TRUE(fit.adequate) << fit.inadequacy;
   test::expect_recovered(fit, truth, 0.10, 1); // the bandwidth (+-3 %, docs/calibration.md)
-  // Issue 36 asks 5 %: at 5000 g cm^2, between the two loads, the fitted
-  // tuning's time into the window came 2.6 ms (5.4 %) late, tracking 1.2 %
-  // (docs/calibration.md "Hidden-style cases"); 6 % guards what is reached.
-  test::expect_predicts_held_out(fit.card, truth, 0.06);
+  // Issue 36's 5 % and max(5 %, 2 ms) at 5000 g cm^2, between the two
+  // loads. The time into the window is the end of a stick-slip creep back
+  // after the overshoot, set by the integral action: on moves 0, 1, 2, 7
+  // alone the integral ratio came +4 % and the time 2.6 ms (5.4 %) late;
+  // with moves 3 and 14 -0.9 ms. It is a rough function of the loop
+  // constants (docs/calibration.md "Loop tuning: the held-out move's time
+  // into the window").
+  test::expect_predicts_held_out(fit.card, truth, 0.05);
 }
 
 // A module carrying 5 % more than the stated 5000 g cm^2 (issue 36 point
