@@ -188,9 +188,9 @@ std::string unknown_name(const ModelCard& start, const Unknowns& u, std::size_t 
   return u.is_load(i) ? u.load_name[i] : start.constants[u.card_index[i]].name;
 }
 
-constexpr const char* at_bound_load =
-    "at its bound: the module carries a load 30 % or more away from the stated one (or the heaviest it may carry), "
-    "or the model is wrong";
+constexpr const char* kLoadAtBound =
+    "the module carries a load 30 % or more away from the stated one (or the heaviest it may carry), or the model is "
+    "wrong";
 
 // The fitted load against the stated one, in words (A-CAL-14).
 std::string load_verdict(const FittedConstant& f) {
@@ -224,7 +224,7 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
   std::vector<std::string> names = options.names.empty() || load_only ? by_default.names : options.names;
   if (load_only) names.insert(names.end(), options.names.begin(), options.names.end());
   const Unknowns u = unknowns_of(start, names, cases);
-  const std::size_t n = names.size();
+  const std::size_t n = u.card_index.size(); // a load named once is one unknown per stated load
   std::vector<double> card_x(n, 1.0);
   for (std::size_t i = 0; i < n; ++i) {
     if (!u.is_load(i)) card_x[i] = std::clamp(start.constants[u.card_index[i]].value / u.scale[i], u.lo[i], u.hi[i]);
@@ -428,7 +428,8 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
       } else if (result.iterations == 0 || f.value == f.start) {
         f.note = "the solve did not move it from the start";
       } else if (f.at_bound) {
-        f.note = f.load ? at_bound_load : "at its bound: the module lies outside the card's range, or the model is wrong";
+        f.note = f.load ? fmt::format("at its bound: {}", kLoadAtBound)
+                        : "at its bound: the module lies outside the card's range, or the model is wrong";
       } else if (start_as_good) {
         f.note = "the start card explains the log as well: the data do not tell the fitted value from the start";
       } else if (f.starts_disagree) {
@@ -477,7 +478,7 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
   }
   for (const FittedConstant& f : result.constants) {
     if (f.at_bound) {
-      result.notes.push_back(f.load ? fmt::format("{} ends at its bound: {}", f.name, at_bound_load)
+      result.notes.push_back(f.load ? fmt::format("{} ends at its bound: {}", f.name, kLoadAtBound)
                                     : fmt::format("{} ends at its bound: the module lies outside the card's range, or the "
                                                   "model is wrong",
                                                   f.name));
