@@ -10,7 +10,9 @@
 #include "calibration/fit_cost.hpp"
 #include "calibration/fit_refit.hpp"
 #include "calibration/fit_solve.hpp"
+#include "calibration/load_scale.hpp"
 #include "io/parallel.hpp"
+#include "twin/load_builder.hpp"
 
 namespace sreh {
 namespace {
@@ -81,10 +83,16 @@ DefaultFit default_fit(const std::vector<FitCase>& cases, const ModelCard& start
   return d;
 }
 
-std::vector<double> position_residuals_deg(const std::vector<FitCase>& cases, const ModelCard& card) {
+std::vector<double> position_residuals_deg(const std::vector<FitCase>& cases, const ModelCard& card,
+                                           const std::vector<double>& load_scale) {
   std::vector<double> r(position_count(cases));
-  residuals_into(cases, card, r.data(), false);
+  residuals_into(cases, FitPoint{card, load_scale}, r.data(), false);
   return r;
+}
+
+std::vector<FitCase> with_fitted_load(std::vector<FitCase> cases, const std::vector<double>& load_scale) {
+  for (std::size_t k = 0; k < cases.size() && k < load_scale.size(); ++k) cases[k].setup.load_scale *= load_scale[k];
+  return cases;
 }
 
 namespace {
@@ -134,7 +142,7 @@ std::vector<std::vector<double>> start_points(const Unknowns& u, const std::vect
 // refit is of its first seconds (A-CAL-8): cheaper, and a shorter log's
 // error is the larger, so the interval is on the safe side.
 FitResult refit_of(const std::vector<FitCase>& cases, const ModelCard& from, const FitOptions& options,
-                   const std::vector<std::string>& names, const ModelCard& fitted, double noise_counts, int b) {
+                   const std::vector<std::string>& names, const FitPoint& fitted, double noise_counts, int b) {
   FitOptions o = options;
   o.names = names;
   o.starts = 1;
@@ -144,11 +152,61 @@ FitResult refit_of(const std::vector<FitCase>& cases, const ModelCard& from, con
   o.noise_counts = noise_counts;
   const std::vector<FitCase> coarse = coarse_cases(cases);
   const unsigned seed = kRefitSeed + static_cast<unsigned>(b);
-  FitResult refit = fit_model(synthetic_cases(coarse.empty() ? cases : coarse, fitted, noise_counts, seed,
-                                                               kFirstStepDivisor + b),
+  FitResult refit = fit_model(synthetic_cases(coarse.empty() ? cases : coarse, fitted.card, fitted.load_scale, noise_counts,
+                                              seed, kFirstStepDivisor + b),
                               from, o);
   refit.replays += cases.size(); // the synthetic logs' recordings
   return refit;
+}
+
+// Unknown i as the fit reports it: a card constant (value and start from
+// the cards, its range the card's) or a load (g cm^2: the stated load times
+// the factor, started at the stated load, A-CAL-14).
+FittedConstant fitted_entry(const ModelCard& start, const ModelCard& fitted, const Unknowns& u, const std::vector<double>& x,
+                            std::size_t i) {
+  FittedConstant f;
+  if (u.is_load(i)) {
+    f.name = u.load_name[i];
+    f.unit = "g cm^2";
+    f.load = true;
+    f.value = x[i] * u.scale[i];
+    f.start = u.scale[i];
+    f.range_lo = u.lo[i] * u.scale[i];
+    f.range_hi = u.hi[i] * u.scale[i];
+    return f;
+  }
+  const ModelConstant& c = fitted.constants[u.card_index[i]];
+  f.name = c.name;
+  f.unit = c.unit;
+  f.value = c.value;
+  f.start = start.constants[u.card_index[i]].value;
+  f.range_lo = c.range_lo;
+  f.range_hi = c.range_hi;
+  return f;
+}
+
+std::string unknown_name(const ModelCard& start, const Unknowns& u, std::size_t i) {
+  return u.is_load(i) ? u.load_name[i] : start.constants[u.card_index[i]].name;
+}
+
+constexpr const char* kLoadAtBound =
+    "the module carries a load 30 % or more away from the stated one (or the heaviest it may carry), or the model is "
+    "wrong";
+
+// The fitted load against the stated one, in words (A-CAL-14).
+std::string load_verdict(const FittedConstant& f) {
+  const double change_pct = 100 * (f.value / f.start - 1);
+  if (!f.identified) {
+    return fmt::format("the load is not identified ({}): the module carries {} to {} g cm^2 (stated {})", f.note,
+                       round_gcm2(f.ci95_lo), round_gcm2(f.ci95_hi), round_gcm2(f.start));
+  }
+  if (f.ci95_lo > f.start || f.ci95_hi < f.start) {
+    return fmt::format("the module carries {} g cm^2, not the stated {} ({:+.1f} %; 95 % interval {} to {} g cm^2)",
+                       round_gcm2(f.value), round_gcm2(f.start), change_pct, round_gcm2(f.ci95_lo), round_gcm2(f.ci95_hi));
+  }
+  return fmt::format("the module carries the stated load: {} g cm^2 is inside the fitted load's 95 % interval {} to {} "
+                     "g cm^2 (fitted {}, {:+.1f} %)",
+                     round_gcm2(f.start), round_gcm2(f.ci95_lo), round_gcm2(f.ci95_hi), round_gcm2(f.value), change_pct);
 }
 
 struct StartOutcome {
@@ -160,13 +218,17 @@ struct StartOutcome {
 } // namespace
 
 FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, const FitOptions& options) {
-  const DefaultFit by_default = options.names.empty() ? default_fit(cases, start) : DefaultFit{};
-  const std::vector<std::string> names = options.names.empty() ? by_default.names : options.names;
-  const Unknowns u = unknowns_of(start, names);
-  const std::size_t n = names.size();
+  // The load alone is named: the module's default constants join it (the
+  // load is a question about the setup, asked along with the module's).
+  const bool load_only = !options.names.empty() && std::all_of(options.names.begin(), options.names.end(), is_load_name);
+  const DefaultFit by_default = options.names.empty() || load_only ? default_fit(cases, start) : DefaultFit{};
+  std::vector<std::string> names = options.names.empty() || load_only ? by_default.names : options.names;
+  if (load_only) names.insert(names.end(), options.names.begin(), options.names.end());
+  const Unknowns u = unknowns_of(start, names, cases);
+  const std::size_t n = u.card_index.size(); // a load named once is one unknown per stated load
   std::vector<double> card_x(n, 1.0);
   for (std::size_t i = 0; i < n; ++i) {
-    card_x[i] = std::clamp(start.constants[u.card_index[i]].value / u.scale[i], u.lo[i], u.hi[i]);
+    if (!u.is_load(i)) card_x[i] = std::clamp(start.constants[u.card_index[i]].value / u.scale[i], u.lo[i], u.hi[i]);
   }
 
   FitResult result;
@@ -246,7 +308,7 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
   result.noise_counts = options.noise_counts ? *options.noise_counts : estimated_noise_counts(cases);
   const std::size_t refit_count = static_cast<std::size_t>(std::max(0, options.bootstrap));
   const std::vector<std::vector<double>> refit_starts = start_points(u, card_x, static_cast<int>(refit_count));
-  auto refits_of = [&](const ModelCard& fitted) {
+  auto refits_of = [&](const FitPoint& fitted) {
     std::vector<FitResult> out(refit_count);
     io::parallel_for(refit_count, options.threads, [&](std::size_t b) {
       out[b] = refit_of(cases, card_at(start, u, refit_starts[b].data()), options, names, fitted, result.noise_counts,
@@ -257,7 +319,7 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
   const std::vector<double> first_stage_x = x;
   std::future<std::vector<FitResult>> early_refits;
   if (!coarse.empty() && refit_count > 0) {
-    early_refits = std::async(std::launch::async, refits_of, card_at(start, u, x.data()));
+    early_refits = std::async(std::launch::async, refits_of, point_at(start, u, x.data(), cases.size()));
   }
   Stage stage = coarse.empty() ? std::move(best_stage) : solve(cases, start, u, x, options, full, iterations, reports);
   if (!coarse.empty()) result.replays += stage.cost->replays();
@@ -282,7 +344,11 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
   result.iterations = iterations;
   result.solver_message = stage.summary.message;
   result.starts = static_cast<int>(outcomes.size());
-  result.card = card_at(start, u, x.data());
+  const FitPoint fitted = point_at(start, u, x.data(), cases.size());
+  result.card = fitted.card;
+  if (std::any_of(u.case_load.begin(), u.case_load.end(), [](std::ptrdiff_t i) { return i >= 0; })) {
+    result.load_scale = fitted.load_scale;
+  }
 
   // A likelihood-ratio region (A-CAL-4): points whose sum of squares is
   // within chi2_95 effective residual variances of the best are as
@@ -316,7 +382,7 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
   if (early_refits.valid() && x == first_stage_x) {
     refits_running = std::move(early_refits);
   } else if (refit_count > 0) {
-    refits_running = std::async(std::launch::async, refits_of, result.card);
+    refits_running = std::async(std::launch::async, refits_of, fitted);
   }
   {
     // The curvature's interval assumes a smooth cost; on the replay's rough
@@ -347,7 +413,7 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
         }
         if (xp[i] == x[i]) break;
         std::vector<double> rp(positions);
-        residuals_into(cases, card_at(start, u, xp.data()), rp.data(), false);
+        residuals_into(cases, point_at(start, u, xp.data(), cases.size()), rp.data(), false);
         ++probe_replays[chain];
         if (sum_of_squares(rp, positions) - best_ss > single_threshold) break;
         reach = side < 0 ? std::min(reach, xp[i]) : std::max(reach, xp[i]);
@@ -358,13 +424,7 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
     });
     for (const std::size_t count : probe_replays) result.replays += count;
     for (std::size_t i = 0; i < n; ++i) {
-      const ModelConstant& c = result.card.constants[u.card_index[i]];
-      const ModelConstant& card_c = start.constants[u.card_index[i]];
-      FittedConstant f;
-      f.name = c.name;
-      f.unit = c.unit;
-      f.value = c.value;
-      f.start = card_c.value;
+      FittedConstant f = fitted_entry(start, result.card, u, x, i);
       const auto ii = static_cast<Eigen::Index>(i);
       const double half_u = kZ95 * std::sqrt(std::max(0.0, cov(ii, ii)));
       double lo_u = reached[2 * i], hi_u = reached[2 * i + 1];
@@ -392,15 +452,16 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
       f.ci95_lo = f.likelihood_lo = lo_u * u.scale[i];
       f.ci95_hi = f.likelihood_hi = hi_u * u.scale[i];
       const double half = 0.5 * (f.ci95_hi - f.ci95_lo);
-      const double range = c.range_hi - c.range_lo;
-      f.at_bound = f.value <= c.range_lo + kAtBound * range || f.value >= c.range_hi - kAtBound * range;
+      const double range = f.range_hi - f.range_lo;
+      f.at_bound = f.value <= f.range_lo + kAtBound * range || f.value >= f.range_hi - kAtBound * range;
       // Why a constant is not identified, the first reason that applies.
       if (cv.singular || half_u == 0) {
         f.note = "the data do not move the position: no interval";
       } else if (result.iterations == 0 || f.value == f.start) {
         f.note = "the solve did not move it from the start";
       } else if (f.at_bound) {
-        f.note = "at its bound: the module lies outside the card's range, or the model is wrong";
+        f.note = f.load ? fmt::format("at its bound: {}", kLoadAtBound)
+                        : "at its bound: the module lies outside the card's range, or the model is wrong";
       } else if (start_as_good) {
         f.note = "the start card explains the log as well: the data do not tell the fitted value from the start";
       } else if (f.starts_disagree) {
@@ -410,7 +471,7 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
       }
       for (std::size_t j = 0; j < n && f.note.empty(); ++j) {
         if (j != i && std::abs(result.correlation[i][j]) > kStrongCorrelation) {
-          f.note = fmt::format("correlated with {} (r = {:.2f})", names[j], result.correlation[i][j]);
+          f.note = fmt::format("correlated with {} (r = {:.2f})", unknown_name(start, u, j), result.correlation[i][j]);
         }
       }
       f.identified = f.note.empty();
@@ -419,7 +480,7 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
   }
   const std::vector<FitResult> refits = refits_running.valid() ? refits_running.get() : std::vector<FitResult>{};
   if (early_refits.valid()) early_refits.wait(); // started from a point the whole-log stage left: not used
-  apply_bootstrap(refits, start, result);
+  apply_bootstrap(refits, result);
   for (const FitResult& refit : refits) result.replays += refit.replays;
   // A log the model does not explain (A-CAL-10) identifies nothing: the
   // intervals assume the model's form is right.
@@ -434,9 +495,8 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
   // reports the card's range, which holds any module of the type.
   for (FittedConstant& f : result.constants) {
     if (f.identified) continue;
-    const ModelConstant* c = start.find(f.name);
-    f.ci95_lo = std::min(c->range_lo, f.ci95_lo);
-    f.ci95_hi = std::max(c->range_hi, f.ci95_hi);
+    f.ci95_lo = std::min(f.range_lo, f.ci95_lo);
+    f.ci95_hi = std::max(f.range_hi, f.ci95_hi);
   }
   if (!result.adequate) {
     const std::vector<LogSegment> segments = log_segments(cases, position_r);
@@ -452,9 +512,12 @@ FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, c
   }
   for (const FittedConstant& f : result.constants) {
     if (f.at_bound) {
-      result.notes.push_back(fmt::format("{} ends at its bound: the module lies outside the card's range, or the model is wrong",
-                                         f.name));
+      result.notes.push_back(f.load ? fmt::format("{} ends at its bound: {}", f.name, kLoadAtBound)
+                                    : fmt::format("{} ends at its bound: the module lies outside the card's range, or the "
+                                                  "model is wrong",
+                                                  f.name));
     }
+    if (f.load) result.notes.push_back(load_verdict(f));
   }
   result.converged = stage.converged && result.rms_residual_deg <= options.max_rms_residual_deg;
   return result;

@@ -26,7 +26,10 @@ struct FitCase {
 inline constexpr int kDefaultBootstrap = 3;
 
 struct FitOptions {
-  std::vector<std::string> names; // constants to fit (empty: default_fit(cases, start))
+  // Constants to fit (empty: default_fit(cases, start)); "load" or
+  // "load_inertia" fits the attached load too, and named alone, with the
+  // default constants (A-CAL-14).
+  std::vector<std::string> names;
   int threads = 2;                // replays run in parallel (finite differences)
   int max_iterations = 25;
   // Central-difference step, in units of the start value: wide enough to
@@ -57,6 +60,9 @@ struct FitOptions {
   std::function<void(int iterations, int max_iterations)> progress;
 };
 
+// A fitted constant of the card, or the attached load (`load`, --fit load,
+// A-CAL-14): a quantity of the setup, not of the module, so never written
+// into the model file; its start is the stated load, g cm^2.
 struct FittedConstant {
   std::string name;
   std::string unit;
@@ -76,11 +82,16 @@ struct FittedConstant {
   double likelihood_lo = 0, likelihood_hi = 0;
   double bootstrap_lo = 0, bootstrap_hi = 0;
   std::vector<double> refits{};
+  double range_lo = 0, range_hi = 0; // the card's range (the load's: kLoadScaleLo .. kLoadScaleHi of the stated)
+  bool load = false;
 };
 
 struct FitResult {
   std::vector<FittedConstant> constants;
   ModelCard card;                 // the start card with the fitted values
+  // With the load fitted: each case's carried load over its stated one (1
+  // for a case without a load); empty otherwise. with_fitted_load applies it.
+  std::vector<double> load_scale;
   double rms_residual_deg = 0;
   double start_rms_residual_deg = 0;
   int iterations = 0;
@@ -130,7 +141,12 @@ DefaultFit default_fit(const std::vector<FitCase>& cases, const ModelCard& start
 // is a single value (nothing to fit).
 FitResult fit_model(const std::vector<FitCase>& cases, const ModelCard& start, const FitOptions& options);
 
-// The residuals (simulated - logged position, degrees) of one card on the cases.
-std::vector<double> position_residuals_deg(const std::vector<FitCase>& cases, const ModelCard& card);
+// The residuals (simulated - logged position, degrees) of one card on the
+// cases, each case's load scaled by `load_scale` (a fit's; empty: as stated).
+std::vector<double> position_residuals_deg(const std::vector<FitCase>& cases, const ModelCard& card,
+                                           const std::vector<double>& load_scale = {});
+
+// The cases with the load a fit found (FitResult::load_scale) in place of the stated one.
+std::vector<FitCase> with_fitted_load(std::vector<FitCase> cases, const std::vector<double>& load_scale);
 
 } // namespace sreh

@@ -5,7 +5,10 @@
 
 #include <fmt/format.h>
 
+#include "calibration/load_scale.hpp"
+#include "device_logic/units.hpp"
 #include "io/parallel.hpp"
+#include "twin/load_builder.hpp"
 
 namespace sreh {
 
@@ -25,9 +28,63 @@ std::size_t polled_count(const MasterLog& log) {
 
 } // namespace
 
-Unknowns unknowns_of(const ModelCard& start, const std::vector<std::string>& names) {
+namespace {
+
+// The load unknowns (A-CAL-14): one per distinct stated load, shared by the
+// logs that state it (the command line states one load for every log).
+void add_load_unknowns(Unknowns& u, const std::string& name, const std::vector<FitCase>& cases) {
+  if (std::any_of(u.load_name.begin(), u.load_name.end(), [](const std::string& n) { return !n.empty(); })) {
+    throw CalibrationInputError(fmt::format("--fit {}: the load named twice", name));
+  }
+  u.case_load.assign(cases.size(), -1);
+  std::vector<std::size_t> first_case; // of each load unknown
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const TwinConfig& config = cases[k].setup.config;
+    if (std::holds_alternative<NoLoad>(config.load)) continue;
+    if (const std::string why = why_not_scalable(config.load); !why.empty()) {
+      throw CalibrationInputError(fmt::format("--fit {}: {}", name, why));
+    }
+    const double stated_gcm2 = cases[k].setup.load_scale *
+                               kgm2_to_gcm2(built_load_inertia_kgm2(config.load, config.hard_stops, config.physics_dt_s));
+    if (!(stated_gcm2 > 0)) continue;
+    for (std::size_t j = 0; j < first_case.size(); ++j) {
+      const FitCase& other = cases[first_case[j]];
+      if (other.setup.config.load == config.load && other.setup.load_scale == cases[k].setup.load_scale) {
+        u.case_load[k] = static_cast<std::ptrdiff_t>(u.card_index.size() - first_case.size() + j);
+      }
+    }
+    if (u.case_load[k] >= 0) continue;
+    first_case.push_back(k);
+    u.case_load[k] = static_cast<std::ptrdiff_t>(u.card_index.size());
+    u.card_index.push_back(kLoadUnknown);
+    u.scale.push_back(stated_gcm2); // x is the factor, x * scale the carried load in g cm^2
+    u.lo.push_back(kLoadScaleLo);
+    u.hi.push_back(std::max(kLoadScaleLo, std::min(kLoadScaleHi, max_load_gcm2() / stated_gcm2)));
+    u.load_name.push_back("load_inertia");
+  }
+  if (first_case.empty()) {
+    throw CalibrationInputError(fmt::format("--fit {}: no load is stated (0 g cm^2): nothing to scale; state the load "
+                                            "the module carries with --load-gcm2 or --load",
+                                            name));
+  }
+  if (first_case.size() > 1) { // named by the first log that states it
+    for (std::size_t j = 0; j < first_case.size(); ++j) {
+      const std::size_t i = u.card_index.size() - first_case.size() + j;
+      u.load_name[i] = fmt::format("load_inertia ({})", cases[first_case[j]].log.path);
+    }
+  }
+}
+
+} // namespace
+
+Unknowns unknowns_of(const ModelCard& start, const std::vector<std::string>& names, const std::vector<FitCase>& cases) {
   Unknowns u;
+  u.case_load.assign(cases.size(), -1);
   for (const std::string& name : names) {
+    if (is_load_name(name)) {
+      add_load_unknowns(u, name, cases);
+      continue;
+    }
     if (is_thermal(name)) u.temperature = true;
     const ModelConstant* c = start.find(name);
     if (!c) throw CalibrationInputError(fmt::format("--fit {}: not a constant of the model card", name));
@@ -43,6 +100,7 @@ Unknowns unknowns_of(const ModelCard& start, const std::vector<std::string>& nam
     u.scale.push_back(scale);
     u.lo.push_back(c->range_lo / scale);
     u.hi.push_back(c->range_hi / scale);
+    u.load_name.emplace_back();
   }
   return u;
 }
@@ -50,18 +108,33 @@ Unknowns unknowns_of(const ModelCard& start, const std::vector<std::string>& nam
 ModelCard card_at(const ModelCard& start, const Unknowns& u, const double* x) {
   ModelCard card = start;
   for (std::size_t i = 0; i < u.card_index.size(); ++i) {
+    if (u.is_load(i)) continue;
     auto& c = card.constants[u.card_index[i]];
     c.value = std::clamp(x[i] * u.scale[i], c.range_lo, c.range_hi);
   }
   return card;
 }
 
-void residuals_into(const std::vector<FitCase>& cases, const ModelCard& card, double* out, bool temperature) {
-  const ModuleModel module = card.module_model();
+FitPoint point_at(const ModelCard& start, const Unknowns& u, const double* x, std::size_t case_count) {
+  FitPoint p{card_at(start, u, x), std::vector<double>(case_count, 1.0)};
+  for (std::size_t k = 0; k < case_count && k < u.case_load.size(); ++k) {
+    if (u.case_load[k] >= 0) {
+      const auto i = static_cast<std::size_t>(u.case_load[k]);
+      p.load_scale[k] = std::clamp(x[i], u.lo[i], u.hi[i]);
+    }
+  }
+  return p;
+}
+
+void residuals_into(const std::vector<FitCase>& cases, const FitPoint& point, double* out, bool temperature) {
+  const ModuleModel module = point.card.module_model();
   double* position = out;
   double* polled = out + position_count(cases);
-  for (const FitCase& c : cases) {
-    const ReplayTrack track = replay(c.setup, module, c.log);
+  for (std::size_t n = 0; n < cases.size(); ++n) {
+    const FitCase& c = cases[n];
+    ReplaySetup setup = c.setup;
+    if (n < point.load_scale.size()) setup.load_scale *= point.load_scale[n];
+    const ReplayTrack track = replay(setup, module, c.log);
     for (std::size_t k = 0; k < c.log.rows.size(); ++k) {
       const MasterLogRow& row = c.log.rows[k];
       *position++ = track.position_deg[k] - logged_position_deg(row.pd_in);
@@ -102,7 +175,7 @@ bool ReplayCost::Evaluate(double const* const* parameters, double* residuals, do
       std::copy(known->begin(), known->end(), residuals);
       return true;
     }
-    residuals_into(cases_, card_at(start_, u_, x.data()), residuals, u_.temperature);
+    residuals_into(cases_, point_at(start_, u_, x.data(), cases_.size()), residuals, u_.temperature);
     ++replays_;
     remember(x, std::vector<double>(residuals, residuals + m));
     return true;
@@ -127,7 +200,7 @@ bool ReplayCost::Evaluate(double const* const* parameters, double* residuals, do
     const std::size_t j = k + first;
     std::vector<double> xj = x;
     if (j > 0) xj[(j - 1) / 2] = (j % 2 == 1) ? up[(j - 1) / 2] : down[(j - 1) / 2];
-    residuals_into(cases_, card_at(start_, u_, xj.data()), columns[j].data(), u_.temperature);
+    residuals_into(cases_, point_at(start_, u_, xj.data(), cases_.size()), columns[j].data(), u_.temperature);
   });
   replays_ += 2 * n + 1 - first;
   if (!known) remember(x, columns[0]);

@@ -14,11 +14,24 @@
 
 namespace sreh {
 
+// Card constants and, with --fit load, the attached load (A-CAL-14): one
+// factor per stated load, shared by the logs that state it.
+inline constexpr std::size_t kLoadUnknown = static_cast<std::size_t>(-1);
 struct Unknowns {
-  std::vector<std::size_t> card_index; // into ModelCard::constants
-  std::vector<double> scale;           // value = u * scale (the start value)
+  std::vector<std::size_t> card_index; // into ModelCard::constants; kLoadUnknown for a load factor
+  std::vector<double> scale;           // value = u * scale (the start value; a load: the stated g cm^2, u its factor)
   std::vector<double> lo, hi;          // bounds on u
   bool temperature = false;            // a thermal constant is fitted: the polled temperatures are residuals too
+  std::vector<std::string> load_name;  // per unknown: the load's name ("" for a card constant)
+  std::vector<std::ptrdiff_t> case_load; // per case: the unknown scaling its load, -1 none
+  bool is_load(std::size_t i) const { return card_index[i] == kLoadUnknown; }
+};
+
+// Where the fit stands: the card with the constants, and each case's load
+// factor (1: the stated load).
+struct FitPoint {
+  ModelCard card;
+  std::vector<double> load_scale; // per case; empty: all 1
 };
 
 // A polled temperature's residual in position degrees: each measurement
@@ -26,17 +39,20 @@ struct Unknowns {
 // against one step of index 112 (0.5 degC, manual 6.4) (A-CAL-9).
 inline constexpr double kTemperatureWeight_deg_per_C = (360.0 / 65536.0) / 0.5;
 
-// Throws CalibrationInputError for a name not on the card, named twice, or
-// whose range is a single value.
-Unknowns unknowns_of(const ModelCard& start, const std::vector<std::string>& names);
+// Throws CalibrationInputError for a name not on the card (nor the load),
+// named twice, or whose range is a single value; for the load, when no
+// case states one to scale or the stated load cannot be scaled.
+Unknowns unknowns_of(const ModelCard& start, const std::vector<std::string>& names, const std::vector<FitCase>& cases);
 ModelCard card_at(const ModelCard& start, const Unknowns& u, const double* x);
+FitPoint point_at(const ModelCard& start, const Unknowns& u, const double* x, std::size_t case_count);
 std::size_t position_count(const std::vector<FitCase>& cases);    // logged rows
 std::size_t temperature_count(const std::vector<FitCase>& cases); // rows with a polled temperature
 std::size_t residual_count(const std::vector<FitCase>& cases, const Unknowns& u);
 // Replays every case with `card`: simulated - logged position (deg) for
 // every row in case order, then, with `temperature`, simulated - polled
 // temperature times kTemperatureWeight_deg_per_C for every polled row.
-void residuals_into(const std::vector<FitCase>& cases, const ModelCard& card, double* out, bool temperature);
+// Each case's load scaled by `point`'s factor for it.
+void residuals_into(const std::vector<FitCase>& cases, const FitPoint& point, double* out, bool temperature);
 
 // One residual block: every logged position. The Jacobian is taken by
 // central differences, two replays per constant, in parallel (A-CAL-3).

@@ -19,6 +19,20 @@ const FittedConstant* fitted(const FitResult& fit, const std::string& name) {
   return nullptr;
 }
 
+// The fitted load is the setup's, not the module's (A-CAL-14): named in a
+// comment, never a constant of the file.
+std::string load_comment(const FitResult& fit) {
+  std::string out;
+  for (const FittedConstant& f : fit.constants) {
+    if (f.load) {
+      out += fmt::format("# The attached load was fitted too ({}: {} g cm^2, stated {}); it belongs to the setup, not\n"
+                         "# to the module, and is not written here.\n",
+                         f.name, shortest_number(f.value), shortest_number(f.start));
+    }
+  }
+  return out;
+}
+
 std::string quoted(const std::string& s) {
   std::string out = "\"";
   for (char c : s) {
@@ -41,10 +55,11 @@ std::string fit_model_yaml(const FitResult& fit, const ModelCard& base, const st
       "# Use it with --model on run, size, sweep, serve. Ranges are the card's; an identified constant\n"
       "# adds its 95 % interval, which uncertainty sizing samples instead (docs/calibration.md).\n"
       "# rms residual {} deg (start {} deg, the log's floor {} deg), {} iterations from {} starts, {}.\n"
-      "constants:\n",
+      "{}constants:\n",
       names, shortest_number(fit.rms_residual_deg), shortest_number(fit.start_rms_residual_deg),
       shortest_number(fit.floor_rms_deg), fit.iterations, fit.starts,
-      !fit.adequate ? "the model does not explain this log" : fit.converged ? "converged" : "NOT converged");
+      !fit.adequate ? "the model does not explain this log" : fit.converged ? "converged" : "NOT converged",
+      load_comment(fit));
   for (const ModelConstant& c : fit.card.constants) {
     const ModelConstant* b = base.find(c.name);
     const FittedConstant* f = fitted(fit, c.name);
@@ -80,6 +95,10 @@ nlohmann::json fit_json(const FitResult& fit) {
     c["at_bound"] = f.at_bound;
     c["starts_disagree"] = f.starts_disagree;
     if (!f.refits.empty()) c["refits"] = f.refits; // the bootstrap, A-CAL-12
+    if (f.load) { // the attached load, A-CAL-14: its start is the stated load
+      c["load"] = true;
+      c["stated"] = f.start;
+    }
     constants[f.name] = c;
   }
   nlohmann::json correlation = nlohmann::json::array();

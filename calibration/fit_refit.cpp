@@ -10,18 +10,21 @@
 
 namespace sreh {
 
-std::vector<FitCase> synthetic_cases(const std::vector<FitCase>& cases, const ModelCard& card, double noise_counts,
-                                     unsigned seed, int step_divisor) {
+std::vector<FitCase> synthetic_cases(const std::vector<FitCase>& cases, const ModelCard& card,
+                                     const std::vector<double>& load_scale, double noise_counts, unsigned seed,
+                                     int step_divisor) {
   std::vector<FitCase> out = cases;
   const ModuleModel module = card.module_model();
   std::mt19937 rng(seed);
   std::normal_distribution<double> noise(0.0, noise_counts);
-  for (FitCase& c : out) {
+  for (std::size_t n = 0; n < out.size(); ++n) {
+    FitCase& c = out[n];
     // Recorded at a finer physics step than the fit replays with: the
     // module is continuous, and the twin's step is a model error the fit
     // makes on its log and must make on these (A-CAL-12).
     ReplaySetup module_setup = c.setup;
     module_setup.config.physics_dt_s /= step_divisor;
+    if (n < load_scale.size()) module_setup.load_scale *= load_scale[n];
     const ReplayTrack track = replay(module_setup, module, c.log);
     for (std::size_t k = 0; k < c.log.rows.size(); ++k) {
       MasterLogRow& row = c.log.rows[k];
@@ -44,12 +47,11 @@ double t95(int dof) {
   return z + (z * z * z + z) / (4.0 * dof);
 }
 
-void apply_bootstrap(const std::vector<FitResult>& refits, const ModelCard& start, FitResult& result) {
+void apply_bootstrap(const std::vector<FitResult>& refits, FitResult& result) {
   if (refits.empty()) return;
   const double multiple = t95(static_cast<int>(refits.size()));
   for (std::size_t i = 0; i < result.constants.size(); ++i) {
     FittedConstant& f = result.constants[i];
-    const ModelConstant* c = start.find(f.name);
     double squares = 0;
     for (const FitResult& refit : refits) {
       const double r = refit.constants[i].value;
@@ -64,8 +66,8 @@ void apply_bootstrap(const std::vector<FitResult>& refits, const ModelCard& star
     const double half = multiple * std::sqrt(squares / static_cast<double>(refits.size()));
     const double lo = std::min(f.ci95_lo, f.value - half);
     const double hi = std::max(f.ci95_hi, f.value + half);
-    f.ci95_lo = f.bootstrap_lo = std::max(c->range_lo, lo);
-    f.ci95_hi = f.bootstrap_hi = std::min(c->range_hi, hi);
+    f.ci95_lo = f.bootstrap_lo = std::max(f.range_lo, lo);
+    f.ci95_hi = f.bootstrap_hi = std::min(f.range_hi, hi);
     // Its width before the range clips it: an interval that fills the range
     // is not narrow because the range is.
     const double reported_half = 0.5 * (hi - lo);

@@ -23,8 +23,11 @@ namespace sreh {
 // realisation of the count-level roughness), plus Gaussian noise of
 // `noise_counts` (one sigma), rounded to whole wire counts and seeded by
 // `seed` (deterministic).
-std::vector<FitCase> synthetic_cases(const std::vector<FitCase>& cases, const ModelCard& card, double noise_counts,
-                                     unsigned seed, int step_divisor);
+// Each case's log is recorded with its load scaled by `load_scale` (the
+// fitted load, A-CAL-14; empty: as stated); the cases keep their setups.
+std::vector<FitCase> synthetic_cases(const std::vector<FitCase>& cases, const ModelCard& card,
+                                     const std::vector<double>& load_scale, double noise_counts, unsigned seed,
+                                     int step_divisor);
 // Refit b's log is recorded at the fit's physics step divided by
 // kFirstStepDivisor + b.
 inline constexpr int kFirstStepDivisor = 3;
@@ -41,6 +44,6 @@ double t95(int dof);
 // +-25 % did not (the 2 s plan without a load: Coulomb friction +30.8 %
 // with +-24 %, A-CAL-12).
 inline constexpr double kWideHalfWidth = 0.10; // an interval wider than +-10 % of the value: not identified
-void apply_bootstrap(const std::vector<FitResult>& refits, const ModelCard& start, FitResult& result);
+void apply_bootstrap(const std::vector<FitResult>& refits, FitResult& result);
 
 } // namespace sreh

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "calibration/load_scale.hpp"
 #include "device_logic/parameter_table.hpp"
 #include "scenarios/runner.hpp"
 
@@ -54,11 +55,12 @@ ReplaySetup replay_setup(const MasterLog& log, const LoadSpec& load, const Scena
 ReplayTrack replay(const ReplaySetup& setup, const ModuleModel& module, const MasterLog& log) {
   TwinConfig config = setup.config;
   config.module = module;
+  if (setup.load_scale != 1.0) config.load = scaled_load(config.load, setup.load_scale);
   Twin twin(config);
   // Without a setup scenario: the configured load of every set from the
-  // attached load, whole g cm^2 (manual 3.5.6, A-CAL-2); with one, its writes.
+  // stated load, whole g cm^2 (manual 3.5.6, A-CAL-2); with one, its writes.
   if (setup.configure_load) {
-    const auto load_raw = encode_number(ParamType::UInt16, std::llround(twin.load_inertia_gcm2()));
+    const auto load_raw = encode_number(ParamType::UInt16, std::llround(twin.load_inertia_gcm2() / setup.load_scale));
     for (uint16_t index = kFirstSetIndex; index <= kLastSetIndex; ++index) twin.isdu_write(index, kLoadSubindex, load_raw);
   }
   for (const IsduWriteStep& w : setup.startup_writes) twin.isdu_write(w.index, w.subindex, w.data);

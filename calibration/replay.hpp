@@ -20,6 +20,10 @@ struct ReplaySetup {
   TwinConfig config;                       // load, mounting, supply, physics step; cycle_s from the log
   std::vector<IsduWriteStep> startup_writes;
   bool configure_load = true;
+  // The load the module carries is config.load (the stated one) scaled by
+  // this (the fit of the load, calibration/load_scale.hpp, A-CAL-14); the
+  // sets stay configured for the stated load, as the PLC wrote them.
+  double load_scale = 1.0;
 };
 
 // The setup a log was recorded with. `scenario` (optional, `calibrate

@@ -32,9 +32,10 @@ struct Replayed {
   std::vector<double> t_temperature_s, logged_C, fitted_C;
 };
 
-Replayed replay_both(const FitCase& c, const ModuleModel& start, const ModuleModel& fitted) {
+// The start card on the stated setup, the fitted card on the fitted one.
+Replayed replay_both(const FitCase& c, const FitCase& fitted_case, const ModuleModel& start, const ModuleModel& fitted) {
   const ReplayTrack a = replay(c.setup, start, c.log);
-  const ReplayTrack b = replay(c.setup, fitted, c.log);
+  const ReplayTrack b = replay(fitted_case.setup, fitted, c.log);
   Replayed r;
   for (std::size_t k = 0; k < c.log.rows.size(); ++k) {
     const MasterLogRow& row = c.log.rows[k];
@@ -105,11 +106,12 @@ std::string constants_table(const ModelCard& start, const FitResult& fit) {
   std::string o = "<h2>Constants</h2>\n<table>\n<tr><th>constant</th><th>unit</th><th>start</th><th>fitted</th>"
                   "<th>change</th><th>95 % interval</th><th>identified</th></tr>\n";
   for (const FittedConstant& f : fit.constants) {
-    const ModelConstant* s = start.find(f.name);
+    const ModelConstant* s = f.load ? nullptr : start.find(f.name); // the load's start is the stated load
     const double change_pct = f.start != 0 ? 100.0 * (f.value - f.start) / f.start : 0.0;
     o += fmt::format("<tr><td class=\"l\">{}</td><td>{}</td><td>{:.6g}</td><td>{:.6g}</td><td>{:+.1f} %</td>"
                      "<td>{:.6g} .. {:.6g}</td><td>{}</td></tr>\n",
-                     esc(f.name), esc(f.unit), s ? s->value : f.start, f.value, change_pct, f.ci95_lo, f.ci95_hi,
+                     esc(f.name) + (f.load ? " (the attached load; start: the stated load)" : ""), esc(f.unit),
+                     s ? s->value : f.start, f.value, change_pct, f.ci95_lo, f.ci95_hi,
                      f.identified ? "<span class=\"result ok\">yes</span>"
                                   : "<span class=\"result bad\">no</span> " + esc(f.note));
   }
@@ -161,6 +163,7 @@ std::filesystem::path write_calibration_report(const std::filesystem::path& dir,
                                                const ModelCard& start, const FitResult& fit) {
   const ModuleModel start_module = start.module_model();
   const ModuleModel fitted_module = fit.card.module_model();
+  const std::vector<FitCase> fitted_cases = with_fitted_load(cases, fit.load_scale); // the fitted load (A-CAL-14)
   const std::string title = fmt::format("Calibration: {} log{}", cases.size(), cases.size() == 1 ? "" : "s");
   std::string body = fmt::format("<h1>{}</h1>\n", esc(title));
   const bool ok = fit.converged && fit.adequate;
@@ -174,7 +177,7 @@ std::filesystem::path write_calibration_report(const std::filesystem::path& dir,
   for (const std::string& note : fit.notes) body += fmt::format("<p class=\"note\">{}</p>\n", esc(note));
   body += constants_table(start, fit) + correlation_table(fit);
   for (std::size_t i = 0; i < cases.size(); ++i) {
-    body += log_section(i, cases[i], replay_both(cases[i], start_module, fitted_module));
+    body += log_section(i, cases[i], replay_both(cases[i], fitted_cases[i], start_module, fitted_module));
   }
   io::make_output_folder(dir.string());
   const std::filesystem::path index = dir / "index.html";

@@ -130,8 +130,9 @@ int calibrate_command(CalibrateArgs a) {
     std::size_t name_width = 22; // the card's longest names (the thermal ones) still line up
     for (const FittedConstant& f : fit.constants) name_width = std::max(name_width, f.name.size());
     for (const FittedConstant& f : fit.constants) {
-      std::cout << fmt::format("  {:<{}} {:>12.6g} {:<10} (start {:.6g}, 95 % [{:.6g}, {:.6g}]){}\n", f.name, name_width, f.value,
-                               f.unit, f.start, f.ci95_lo, f.ci95_hi, f.identified ? "" : "  not identified: " + f.note);
+      std::cout << fmt::format("  {:<{}} {:>12.6g} {:<10} ({} {:.6g}, 95 % [{:.6g}, {:.6g}]){}\n", f.name, name_width, f.value,
+                               f.unit, f.load ? "stated" : "start", f.start, f.ci95_lo, f.ci95_hi,
+                               f.identified ? "" : "  not identified: " + f.note);
     }
     for (const std::string& note : fit.notes) std::cout << "  note: " << note << "\n";
     std::cout << "wrote " << a.out << (a.report.empty() ? "" : " and " + a.report + "/index.html") << "\n";
@@ -159,7 +160,9 @@ SREH_REGISTER_COMMAND(57, [](CLI::App& app, int& exit_code) {
   cmd->add_option("--fit", args->fit,
                   "Constants to fit, NAME,NAME... [default: coulomb_friction,viscous_friction,stribeck_excess,"
                   "torsional_stiffness,torsional_damping; and winding_heat_capacity,winding_to_housing_resistance "
-                  "on a log whose polled temperature rises >= 2 degC over the winding's time constant]");
+                  "on a log whose polled temperature rises >= 2 degC over the winding's time constant]. `load` (or "
+                  "`load_inertia`) fits the attached load's inertia too, from the stated --load-gcm2/--load (named "
+                  "alone: with the default constants); it is reported against the stated load, not written to --out");
   cmd->add_option("--out", args->out, "Write the fitted model file here (what --model reads)");
   cmd->add_option("--report", args->report,
                   "Write an HTML report into this folder: logged vs simulated position and error per log (start and "

@@ -3,6 +3,7 @@
 // writes it), plus a held-out move to compare predictions on.
 #pragma once
 #include <cmath>
+#include <optional>
 #include <random>
 #include <string>
 
@@ -101,11 +102,14 @@ inline ModelCard card_with(std::initializer_list<std::pair<const char*, double>>
 // The held-out move of issue 26: 135 deg on set 1 (index 65) configured
 // for the attached load, tolerance 0.0103 deg (15 counts of 2^19, index
 // 65.5), no waiting time; by default with 5000 g cm^2 (another load than the
-// 15000 g cm^2 plan's).
-inline MoveRecord held_out_move(const ModelCard& card, double load_gcm2 = 5000) {
+// 15000 g cm^2 plan's); `configured_gcm2` when the set is configured for
+// another load than the module carries (a load error).
+inline MoveRecord held_out_move(const ModelCard& card, double load_gcm2 = 5000,
+                                std::optional<double> configured_gcm2 = std::nullopt) {
   std::string y = "name: held-out 135 deg\n";
   if (load_gcm2 > 0) y += "load: {inertia_gcm2: " + std::to_string(load_gcm2) + "}\n";
-  y += "device:\n  isdu:\n    - {index: 65, subindex: 4, value: " + std::to_string(std::lround(load_gcm2)) + "}\n";
+  y += "device:\n  isdu:\n    - {index: 65, subindex: 4, value: " +
+       std::to_string(std::lround(configured_gcm2.value_or(load_gcm2))) + "}\n";
   y += R"(    - {index: 65, subindex: 5, value: 15}
     - {index: 65, subindex: 6, value: 0}
 steps:

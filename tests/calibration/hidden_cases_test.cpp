@@ -22,6 +22,11 @@ namespace {
 using test::kSanitized;
 
 const std::vector<int> kMoves{0, 1, 2, 7};
+// The loop-tuning case adds the moves `calibrate --plan` at 15000 g cm^2
+// names for the loop constants (move 3, to -120 deg on set 4; move 14, to
+// 10 deg on set 7: 19 % and 9 % of the velocity bandwidth's change, 13 %
+// and 10 % of the integral ratio's).
+const std::vector<int> kLoopMoves{0, 1, 2, 3, 7, 14};
 
 // Friction and drive train 24-35 % off the card, inside the ranges (the
 // worked example's hidden module).
@@ -87,7 +92,8 @@ TEST(CalibrationCases, TruthRecordedAtAFinerPhysicsStep) {
 }
 
 // Loop tuning from logs at two configured loads (issue 36: at one load the
-// bandwidth and the ratios trade off, correlations 0.95-0.98).
+// bandwidth and the ratios trade off, correlations 0.95-0.98), of the
+// moves that show the loop constants (kLoopMoves).
 TEST(CalibrationCases, LoopTuningFromTwoLoads) {
   if (kSanitized) GTEST_SKIP() << "a fit from three starts with the bootstrap; checked in the Release stage";
   const ModelCard truth = test::card_with({{"velocity_bandwidth", 1060},  // +6 %
@@ -95,7 +101,7 @@ TEST(CalibrationCases, LoopTuningFromTwoLoads) {
                                            {"integral_ratio", 0.36}});    // +20 %
   std::vector<FitCase> cases;
   for (const double load : {0.0, 15000.0}) {
-    const Scenario plan = test::plan_moves(load, kMoves);
+    const Scenario plan = test::plan_moves(load, kLoopMoves);
     cases.push_back(case_for(test::record_log(plan, truth), plan, load));
     cases.back().log.path = load == 0 ? "no_load.csv" : "heavy.csv";
   }
@@ -104,10 +110,14 @@ TEST(CalibrationCases, LoopTuningFromTwoLoads) {
   const FitResult fit = fit_and_print(cases, options);
   EXPECT_TRUE(fit.adequate) << fit.inadequacy;
   test::expect_recovered(fit, truth, 0.10, 1); // the bandwidth (+-3 %, docs/calibration.md)
-  // Issue 36 asks 5 %: at 5000 g cm^2, between the two loads, the fitted
-  // tuning's time into the window came 2.6 ms (5.4 %) late, tracking 1.2 %
-  // (docs/calibration.md "Hidden-style cases"); 6 % guards what is reached.
-  test::expect_predicts_held_out(fit.card, truth, 0.06);
+  // Issue 36's 5 % and max(5 %, 2 ms) at 5000 g cm^2, between the two
+  // loads. The time into the window is the end of a stick-slip creep back
+  // after the overshoot, set by the integral action: on moves 0, 1, 2, 7
+  // alone the integral ratio came +4 % and the time 2.6 ms (5.4 %) late;
+  // with moves 3 and 14 -0.9 ms. It is a rough function of the loop
+  // constants (docs/calibration.md "Loop tuning: the held-out move's time
+  // into the window").
+  test::expect_predicts_held_out(fit.card, truth, 0.05);
 }
 
 // A module carrying 5 % more than the stated 5000 g cm^2 (issue 36 point
@@ -127,6 +137,42 @@ TEST(CalibrationCases, AFivePercentLoadErrorIsFlagged) {
   EXPECT_TRUE(!fit.adequate || at_bound);
   // Whatever it says, its intervals still hold the module's constants (the card's).
   test::expect_recovered(fit, default_model_card(), 0.10, 0);
+}
+
+// The same 5 % load error with the load fitted too (`--fit load`: the
+// default constants and the load, A-CAL-14): the load is recovered, its
+// interval holds the 5250 g cm^2 carried and excludes the 5000 stated, the
+// fit explains the log, and the fitted card with the fitted load predicts
+// the held-out move (on a set configured for the stated load, as the PLC's
+// are).
+TEST(CalibrationCases, AFivePercentLoadErrorIsRecoveredWithFitLoad) {
+  if (kSanitized) GTEST_SKIP() << "a fit from three starts with the bootstrap; checked in the Release stage";
+  constexpr double kStated_gcm2 = 5000;
+  constexpr double kCarried_gcm2 = 5250;
+  const Scenario plan = test::plan_moves(kStated_gcm2, kMoves);
+  Scenario heavier = plan;
+  heavier.world.load = InertiaLoad{kCarried_gcm2};
+  FitOptions options;
+  options.names = {"load"};
+  const FitResult fit = fit_and_print({case_for(test::record_log(heavier, default_model_card()), plan, kStated_gcm2)},
+                                      options);
+  for (const std::string& note : fit.notes) std::printf("note: %s\n", note.c_str());
+  EXPECT_TRUE(fit.adequate) << fit.inadequacy;
+  ASSERT_EQ(fit.constants.size(), default_fit_names().size() + 1);
+  const FittedConstant& load = fit.constants.back();
+  ASSERT_TRUE(load.load);
+  EXPECT_EQ(load.name, "load_inertia");
+  EXPECT_NEAR(load.start, kStated_gcm2, 0.5); // as MuJoCo computes it
+  EXPECT_TRUE(load.identified) << load.note;
+  EXPECT_NEAR(load.value, kCarried_gcm2, 0.02 * kCarried_gcm2);
+  EXPECT_GT(load.ci95_lo, kStated_gcm2); // the stated load is excluded: the error is named
+  ASSERT_EQ(fit.load_scale.size(), 1u);
+  EXPECT_NEAR(fit.load_scale[0] * load.start, load.value, 1e-9 * load.value);
+  bool named = false;
+  for (const std::string& note : fit.notes) named = named || note.starts_with("the module carries 52");
+  EXPECT_TRUE(named) << "no note naming the carried load";
+  test::expect_recovered(fit, default_model_card(), 0.10, 0, kCarried_gcm2);
+  test::expect_predicts_held_out(fit.card, default_model_card(), 0.05, kCarried_gcm2, load.value, kStated_gcm2);
 }
 
 } // namespace
