@@ -369,11 +369,11 @@ MjModelPtr leanest(const std::string& coarse_xml, MjModelPtr coarse, const Model
     MjModelPtr lean = compiled(lean_xml(coarse_xml, coarse.get()), key, false, origin);
     if (same_dynamics(lean.get(), coarse.get())) return lean;
   } catch (const std::exception&) {
-    // a load's text the lean edit breaks: drawn as it is
+    // a load's text the lean edit breaks: the coarse model then
   }
   return coarse;
 }
-} // namespace} // namespace
+} // namespace
 
 double built_load_inertia_kgm2(const LoadSpec& load, const std::vector<HardStop>& hard_stops, double physics_dt_s,
                                const MechanicsConstants& mechanics, const std::string& module_model_path) {

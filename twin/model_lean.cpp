@@ -121,10 +121,6 @@ bool same_actuators_and_equalities(const mjModel* a, const mjModel* b) {
          same_rows(a->eq_solref, b->eq_solref, e, mjNREF) && same_rows(a->eq_solimp, b->eq_solimp, e, mjNIMP);
 }
 
-} // namespace
-
-namespace {
-
 std::string text(double v) {
   char buf[32];
   const auto res = std::to_chars(buf, buf + sizeof buf, v); // shortest form that reads back bit for bit
