@@ -76,7 +76,7 @@ std::optional<std::size_t> searched(const std::vector<SetRun>& runs, double wind
 
 class Window : public ::testing::TestWithParam<Case> {};
 
-TEST_P(Window, FindsTheLowestSimulatedRmsOfTwiceTheWindow) {
+TEST_P(Window, FindsLowestRmsOfTwiceIt) {
   const std::vector<SetRun> runs = runs_within(request(GetParam()), 2 * kGentleProxyWindow);
   std::optional<std::size_t> lowest;
   for (std::size_t i = 0; i < runs.size(); ++i) {
@@ -96,9 +96,9 @@ TEST_P(Window, FindsTheLowestSimulatedRmsOfTwiceTheWindow) {
 // a long dwell, where the torque the friction holds varies from set to
 // set (1.1 %); a horizontal eccentric arm, gravity in the proxy (1.1 %).
 INSTANTIATE_TEST_SUITE_P(Cases, Window,
-                         ::testing::Values(Case{"deg15_1000gcm2_100ms", 15, 1000, 0, 100},
-                                           Case{"deg60_4000gcm2_260ms_dwell", 60, 4000, 0.3, 260},
-                                           Case{"arm_horizontal_10deg_67ms", 10, 0, 0, 67, 0.311, 0.023}),
+                         ::testing::Values(Case{"d15_1000gcm2_100ms", 15, 1000, 0, 100},
+                                           Case{"d60_4000gcm2_260ms_dwell", 60, 4000, 0.3, 260},
+                                           Case{"arm_horizontal_d10_67ms", 10, 0, 0, 67, 0.311, 0.023}),
                          [](const ::testing::TestParamInfo<Case>& i) { return std::string(i.param.name); });
 
 } // namespace
