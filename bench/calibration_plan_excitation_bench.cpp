@@ -7,6 +7,7 @@
 //   calibration_plan_excitation_bench PLAN.yaml [NAME=VALUE ...]
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <iostream>
 #include <string>
 
@@ -28,14 +29,23 @@ int main(int argc, char** argv) {
     for (ModelConstant& k : card.constants) {
       if (eq != std::string::npos && k.name == a.substr(0, eq)) c = &k;
     }
-    if (!c) {
-      std::fprintf(stderr, "calibration_plan_excitation_bench: %s: not NAME=VALUE of a card constant\n", a.c_str());
+    char* end = nullptr;
+    const std::string value = c ? a.substr(eq + 1) : "";
+    const double v = std::strtod(value.c_str(), &end);
+    if (!c || value.empty() || *end != '\0') {
+      std::fprintf(stderr, "calibration_plan_excitation_bench: argument %d, %s: not NAME=VALUE of a card constant\n", i,
+                   a.c_str());
       return 2;
     }
-    c->value = std::stod(a.substr(eq + 1));
+    c->value = v;
   }
   std::vector<std::string> names = default_fit_names();
   names.insert(names.end(), {"rotor_inertia", "velocity_bandwidth", "integral_ratio"});
-  std::cout << format_plan_sensitivity(plan_sensitivity(parse_scenario_file(argv[1]), card, names, 2));
+  try {
+    std::cout << format_plan_sensitivity(plan_sensitivity(parse_scenario_file(argv[1]), card, names, 2));
+  } catch (const std::exception& e) { // the plan file does not read: say so, nothing printed
+    std::fprintf(stderr, "calibration_plan_excitation_bench: %s\n", e.what());
+    return 2;
+  }
   return 0;
 }

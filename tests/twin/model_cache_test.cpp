@@ -6,9 +6,6 @@
 #include <cstring>
 #include <vector>
 
-#include "device_logic/process_data.hpp"
-#include "device_logic/units.hpp"
-#include "tests/twin/twin_helpers.hpp"
 #include "twin/load_builder.hpp"
 #include "twin/model_cache.hpp"
 #include "twin/plant.hpp"
@@ -56,44 +53,6 @@ TEST(ModelLean, ATwinNeverDrawnHasNoGeoms) {
   const BuiltModel stops = build_model(InertiaLoad{5000}, {HardStop{100}}, 1e-4, default_module_model().mechanics,
                                        default_module_model_path(), false);
   EXPECT_EQ(stops.model->ngeom, full.model->ngeom + 1);
-}
-
-// The same PLC program on a drawn twin and on a lean one: every trace row
-// and the MuJoCo state bit for bit.
-TEST(ModelLean, ALeanTwinRunsBitForBitAsTheDrawnOne) {
-  TwinConfig drawn;
-  drawn.load = InertiaLoad{8000};
-  drawn.mounting_tilt_deg = 90; // gravity acts on the load
-  TwinConfig lean = drawn;
-  lean.visual_detail = false;
-  Twin a(drawn), b(lean);
-  for (Twin* t : {&a, &b}) {
-    test::write_raw(*t, 65, 4, 8000); // set 1's configured load
-    ProcessDataOut pd;
-    pd.motor_on = true;
-    pd.parameter_set = 1;
-    t->set_pd_out(pd);
-    for (int i = 0; i < 5; ++i) t->run_cycle();
-    pd.move = true;
-    pd.target_raw = static_cast<int32_t>(deg_to_wire_counts(135));
-    t->set_pd_out(pd);
-    for (int i = 0; i < 400; ++i) t->run_cycle();
-  }
-  ASSERT_EQ(a.trace().size(), b.trace().size());
-  for (std::size_t r = 0; r < a.trace().size(); ++r) {
-    const TraceRow& x = a.trace()[r];
-    const TraceRow& y = b.trace()[r];
-    ASSERT_EQ(x.position_deg, y.position_deg) << r;
-    ASSERT_EQ(x.torque_Nm, y.torque_Nm) << r;
-    ASSERT_EQ(x.velocity_dps, y.velocity_dps) << r;
-    ASSERT_EQ(x.temperature_C, y.temperature_C) << r;
-    ASSERT_EQ(x.pd_in, y.pd_in) << r;
-  }
-  EXPECT_EQ(a.plant().rotor_angle_rad(), b.plant().rotor_angle_rad());
-  EXPECT_EQ(a.plant().twist_rad(), b.plant().twist_rad());
-  EXPECT_EQ(a.plant().velocity_rad_s(), b.plant().velocity_rad_s());
-  EXPECT_EQ(a.moves(), b.moves());
-  EXPECT_NEAR(a.trace().back().position_deg, 135.0, 0.2); // it did move
 }
 
 } // namespace

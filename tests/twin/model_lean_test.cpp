@@ -140,8 +140,10 @@ TEST(ModelLean, ALeanTwinStepsBitForBitAsTheDrawnOneForEveryLoad) {
       ASSERT_EQ(a.trace()[r].position_deg, b.trace()[r].position_deg) << r;
       ASSERT_EQ(a.trace()[r].torque_Nm, b.trace()[r].torque_Nm) << r;
       ASSERT_EQ(a.trace()[r].velocity_dps, b.trace()[r].velocity_dps) << r;
+      ASSERT_EQ(a.trace()[r].temperature_C, b.trace()[r].temperature_C) << r;
       ASSERT_EQ(a.trace()[r].pd_in, b.trace()[r].pd_in) << r;
     }
+    EXPECT_EQ(a.moves(), b.moves());
     EXPECT_EQ(a.plant().rotor_angle_rad(), b.plant().rotor_angle_rad());
     EXPECT_EQ(a.plant().twist_rad(), b.plant().twist_rad());
     EXPECT_EQ(a.plant().rotor_velocity_rad_s(), b.plant().rotor_velocity_rad_s());
