@@ -17,6 +17,7 @@ packages=(
   libosmesa6-dev libpng-dev ffmpeg                        # off-screen rendering, PNG frames, H.264 video
   libjs-dygraphs                                          # zoomable plots, inlined into reports and the live page
   clang libclang-rt-14-dev                                # libFuzzer harnesses (tests/fuzz)
+  lld                                                     # links the big test binaries several times faster than GNU ld (CMake's SREH_LLD; docs/performance-ci.md)
   libxml2-utils                                           # xmllint: checks the IODD-like export against our XSD
   libmodbus-dev libcpp-httplib-dev libmosquitto-dev       # serve: Modbus TCP, HTTP/JSON, MQTT
   libssl-dev                                              # serve: HMAC of signed MQTT commands

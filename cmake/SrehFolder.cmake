@@ -39,6 +39,9 @@ function(sreh_gtest_folder name)
   # Test code is glue around the libraries (compiled -O3, where the time is
   # spent); at -O1 it compiles ~40 % faster, which keeps CI short.
   target_compile_options(${name} PRIVATE $<$<CONFIG:Release>:-O1>)
+  if(TARGET sreh_test_pch) # SREH_PCH (tests/CMakeLists.txt)
+    target_precompile_headers(${name} REUSE_FROM sreh_test_pch)
+  endif()
   # NO_PRETTY_VALUES: a value-parameterised test is named by its name
   # generator, not by the bytes of its parameter (issue 39: short names).
   gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 NO_PRETTY_VALUES PROPERTIES LABELS unit COST ${ARG_COST})
