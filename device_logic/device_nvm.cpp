@@ -7,13 +7,13 @@
 
 namespace sreh {
 namespace {
-constexpr uint8_t kMagic[4] = {'S', 'R', 'N', 'V'};
+constexpr uint8_t kNvmMagic[4] = {'S', 'R', 'N', 'V'};
 constexpr uint8_t kVersion = 1;
 constexpr std::size_t kHeader = 6; // magic, version, firmware-failed flag
 } // namespace
 
 std::vector<uint8_t> save_nvm_image(const DeviceConfiguration& d) {
-  std::vector<uint8_t> out(kMagic, kMagic + 4);
+  std::vector<uint8_t> out(kNvmMagic, kNvmMagic + 4);
   out.push_back(kVersion);
   out.push_back(d.firmware_failed ? 1 : 0);
   const std::vector<uint8_t> store = d.store.image();
@@ -22,7 +22,7 @@ std::vector<uint8_t> save_nvm_image(const DeviceConfiguration& d) {
 }
 
 bool restore_nvm(DeviceConfiguration& d, const std::vector<uint8_t>& image) {
-  if (image.size() < kHeader || !std::equal(kMagic, kMagic + 4, image.begin()) || image[4] != kVersion ||
+  if (image.size() < kHeader || !std::equal(kNvmMagic, kNvmMagic + 4, image.begin()) || image[4] != kVersion ||
       image[5] > 1) {
     return false;
   }

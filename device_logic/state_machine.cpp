@@ -18,7 +18,7 @@ using enum Event;
 using E = ErrorBit;
 
 // Order matters: the first matching row wins.
-constexpr std::array kTable{
+constexpr std::array kTransitions{
     Transition{kOff, SwitchOn, State::Ready, {}, 0, "T1"},
     Transition{kReady, SwitchOff, State::MotorOff, {}, 0, "T2"},
     // Switching off while a command runs is an invalid sequence (manual 7.2, 114.6 code 1).
@@ -47,10 +47,10 @@ static_assert(kNoError == 0x0F);
 
 } // namespace
 
-std::span<const Transition> transition_table() { return kTable; }
+std::span<const Transition> transition_table() { return kTransitions; }
 
 const Transition* find_transition(State from, Event event) {
-  for (const auto& t : kTable) {
+  for (const auto& t : kTransitions) {
     if ((t.from & state_bit(from)) && t.event == event) return &t;
   }
   return nullptr;

@@ -29,7 +29,7 @@ namespace {
 namespace fs = std::filesystem;
 using detail::YamlReader;
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // Half a wire count (manual 2.5): a plain position in degrees matches the nearest count.
 constexpr double kHalfWireCountDeg = 180.0 / static_cast<double>(kWireCountsPerRev);
 // A-SCN-1: plausibility limits of world inputs.
@@ -382,8 +382,8 @@ class Parser {
         const std::string what = "expect." + name;
         const bool counts = k.plain == '=';
         Range r = r_.range(kv.second, what, counts ? 0 : -1e6, counts ? 1e6 : 1e6, counts, 0);
-        if (r.exact && k.plain == '<') r = Range{-kInf, r.max, false};
-        if (r.exact && k.plain == '>') r = Range{r.min, kInf, false};
+        if (r.exact && k.plain == '<') r = Range{-kInfinity, r.max, false};
+        if (r.exact && k.plain == '>') r = Range{r.min, kInfinity, false};
         checks.push_back(RunCheck{k.metric, name, r, r_.loc(kv.second)});
       }
     }

@@ -7,10 +7,10 @@
 namespace sreh::serve {
 
 nlohmann::ordered_json describe_device_event(Twin& twin, uint16_t code) {
-  using Json = nlohmann::ordered_json;
+  using EventJson = nlohmann::ordered_json;
   const EventDefinition* e = find_event(code);
   if (e == nullptr) {
-    return Json{{"name", fmt::format("event 0x{:04X}", code)}, {"index", nullptr}, {"cause_code", nullptr},
+    return EventJson{{"name", fmt::format("event 0x{:04X}", code)}, {"index", nullptr}, {"cause_code", nullptr},
                 {"remedy", nullptr}, {"label", fmt::format("event 0x{:04X}", code)}};
   }
   const uint8_t sub = cause_subindex(e->type, e->bit);
@@ -24,10 +24,10 @@ nlohmann::ordered_json describe_device_event(Twin& twin, uint16_t code) {
     if (causes.size() == 1) c = causes.front();
   }
   const std::string name(c ? c->name : (e->type == EventType::Error ? kErrorBitNames : kWarningBitNames)[e->bit]);
-  return Json{{"name", name},
+  return EventJson{{"name", name},
               {"index", index},
-              {"cause_code", c ? Json(c->code) : Json(nullptr)},
-              {"remedy", c ? Json(std::string(c->remedy)) : Json(nullptr)},
+              {"cause_code", c ? EventJson(c->code) : EventJson(nullptr)},
+              {"remedy", c ? EventJson(std::string(c->remedy)) : EventJson(nullptr)},
               {"label", fmt::format("{} ({})", mid_sentence(name), index)}};
 }
 

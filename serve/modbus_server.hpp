@@ -28,6 +28,8 @@ struct ModbusOptions {
 };
 
 using ModbusServer = Front<ModbusOptions>;
+// Instantiated in serve/modbus_server.cpp only (where Impl is complete), also in a unity build.
+extern template class Front<ModbusOptions>;
 // Instantiated in the .cpp (with its Impl); front.hpp declares the members only, so
 // no other file instantiates them (clang refuses an extern template before Impl).
 

@@ -30,6 +30,8 @@ struct MqttOptions {
 };
 
 using MqttBridge = Front<MqttOptions>;
+// Instantiated in serve/mqtt_bridge.cpp only (where Impl is complete), also in a unity build.
+extern template class Front<MqttOptions>;
 // Instantiated in the .cpp (with its Impl); front.hpp declares the members only, so
 // no other file instantiates them (clang refuses an extern template before Impl).
 

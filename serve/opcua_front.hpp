@@ -25,6 +25,8 @@ struct OpcuaOptions {
 };
 
 using OpcuaFront = Front<OpcuaOptions>;
+// Instantiated in serve/opcua_front.cpp only (where Impl is complete), also in a unity build.
+extern template class Front<OpcuaOptions>;
 
 // 127.0.0.0/8, ::1 or "localhost": security None is offered only there.
 bool is_loopback_host(const std::string& host);

@@ -48,7 +48,7 @@ struct Candidate {
   bool proxies = false;     // the proxies computed (with_proxies)
 };
 
-double round_tenth(double v) { return std::round(v * 10.0) / 10.0; } // the device stores 0.1 units
+double nearest_tenth(double v) { return std::round(v * 10.0) / 10.0; } // the device stores 0.1 units
 
 double distance_rad(const SizingRequest& rq) {
   return internal_counts_to_rad(deg_to_wire_counts(rq.angle_deg) * kInternalPerWireCount);
@@ -99,7 +99,7 @@ std::vector<Candidate> candidates(const SizingRequest& rq, double load_gcm2) {
       bool unreached_taken = false;
       // Lowest speed first, so that the first unreached speed is the one kept.
       for (auto it = std::rbegin(kLevels_pct); it != std::rend(kLevels_pct); ++it) {
-        const MotionSetting s{round_tenth(v_top * *it / 100.0), a, j};
+        const MotionSetting s{nearest_tenth(v_top * *it / 100.0), a, j};
         if (s.speed_dps < 0.1) continue;
         const Profile p = planned(rq, s, load_gcm2);
         const bool reached = std::abs(p.peak_velocity_rad_s()) >= deg_to_rad(s.speed_dps) * (1 - 1e-9);
@@ -288,7 +288,7 @@ std::optional<Evaluation> fastest(const SizingRequest& rq_in, double load_gcm2, 
 
 MotionSetting slowest_setting(const SizingRequest& rq) {
   const double lowest = kLevels_pct[std::size(kLevels_pct) - 1];
-  return {std::max(0.1, round_tenth(voltage_speed_limit_dps(rq.world.supply.voltage_V) * lowest / 100.0)), lowest, lowest};
+  return {std::max(0.1, nearest_tenth(voltage_speed_limit_dps(rq.world.supply.voltage_V) * lowest / 100.0)), lowest, lowest};
 }
 
 SizingResult search_fastest(const SizingRequest& rq, double load_gcm2, const SetJudge& judge) {

@@ -24,12 +24,12 @@ namespace sreh::sizing {
 namespace {
 
 // The ranges in the help are the parameter table's rows (manual 6.2), never retyped.
-std::string row_range(ParamId row) { return fmt::format("{} .. {}", display_min(row), display_max(row)); }
-const param::MotionSet kSet(0);
+std::string sweep_row_range(ParamId row) { return fmt::format("{} .. {}", display_min(row), display_max(row)); }
+const param::MotionSet kSweepSet(0);
 const std::string kLoadsHelp = fmt::format("Load inertias, comma separated, 0 .. {} g cm^2", max_load_gcm2());
 const std::string kVoltagesHelp = fmt::format("Supply voltages {} .. {} V, comma separated", min_voltage_V(), max_voltage_V());
-const std::string kAccelHelp = fmt::format("Acceleration with --speeds-dps, {} %", row_range(kSet.acceleration));
-const std::string kJerkHelp = fmt::format("Jerk with --speeds-dps, {} %", row_range(kSet.jerk));
+const std::string kSweepAccelHelp = fmt::format("Acceleration with --speeds-dps, {} %", sweep_row_range(kSweepSet.acceleration));
+const std::string kSweepJerkHelp = fmt::format("Jerk with --speeds-dps, {} %", sweep_row_range(kSweepSet.jerk));
 
 using W = SweepOptions;
 const OptionSpec<W> kSweepOptions[] = {
@@ -37,8 +37,8 @@ const OptionSpec<W> kSweepOptions[] = {
     {"angles-deg", "Move angles in deg, comma separated", &W::angles_deg, true},
     {"voltages-V", kVoltagesHelp, &W::voltages_V, false, true},
     {"speeds-dps", "Evaluate these speeds in deg/s (comma separated) instead of recommending [default: recommend]", &W::speeds_dps},
-    {"accel-pct", kAccelHelp, &W::accel_pct, false, true},
-    {"jerk-pct", kJerkHelp, &W::jerk_pct, false, true},
+    {"accel-pct", kSweepAccelHelp, &W::accel_pct, false, true},
+    {"jerk-pct", kSweepJerkHelp, &W::jerk_pct, false, true},
     {"dwell-s", "Pause after each move, s", &W::dwell_s, false, true},
     {"tolerance-deg", "Position tolerance in deg (index 64+n.5)", &W::tolerance_deg, false, true},
     {"wait-ms", "Waiting time in ms (index 64+n.6)", &W::wait_ms, false, true},

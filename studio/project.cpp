@@ -108,7 +108,7 @@ Json normalised_segment(const Json& g, std::size_t k) {
   throw ProjectError(fmt::format("{}: kind '{}' is not one of move, dwell, grip, release", what, kind));
 }
 
-std::string num(double v) { return fmt::format("{}", v); }
+std::string yaml_num(double v) { return fmt::format("{}", v); }
 
 std::string yaml_text(const std::string& s) { return Json(s).dump(); } // a JSON string is a YAML double-quoted scalar
 
@@ -203,11 +203,11 @@ std::string parts_yaml(const Json& parts, const std::string& indent, double mass
     for (std::size_t i = 0; i < keys.keys.size(); ++i) {
       double v = p[keys.keys[i]].get<double>();
       if (i == 0) v *= mass_scale; // mass_kg
-      o += fmt::format("{}{}: {}", i ? ", " : "", keys.keys[i], num(v));
+      o += fmt::format("{}{}: {}", i ? ", " : "", keys.keys[i], yaml_num(v));
     }
     o += "}\n";
-    o += fmt::format("{}    at_m: [{}, {}, {}]\n", indent, num(p["at_m"][0]), num(p["at_m"][1]), num(p["at_m"][2]));
-    o += fmt::format("{}    rpy_deg: [{}, {}, {}]\n", indent, num(p["rpy_deg"][0]), num(p["rpy_deg"][1]), num(p["rpy_deg"][2]));
+    o += fmt::format("{}    at_m: [{}, {}, {}]\n", indent, yaml_num(p["at_m"][0]), yaml_num(p["at_m"][1]), yaml_num(p["at_m"][2]));
+    o += fmt::format("{}    rpy_deg: [{}, {}, {}]\n", indent, yaml_num(p["rpy_deg"][0]), yaml_num(p["rpy_deg"][1]), yaml_num(p["rpy_deg"][2]));
   }
   return o;
 }
@@ -216,7 +216,7 @@ std::string load_yaml(const Json& state_in, double mass_scale) {
   const Json s = normalised_state(state_in);
   std::string o = "name: " + yaml_text(s["name"].get<std::string>()) + "\n";
   o += s["parts"].empty() ? "load: {inertia_gcm2: 0}\n" : "load:\n" + parts_yaml(s["parts"], "  ", mass_scale);
-  o += fmt::format("mounting: {{tilt_deg: {}}}\n", num(s["mounting_tilt_deg"].get<double>()));
+  o += fmt::format("mounting: {{tilt_deg: {}}}\n", yaml_num(s["mounting_tilt_deg"].get<double>()));
   return o;
 }
 
@@ -234,12 +234,12 @@ std::string project_yaml(const Json& state_in) {
     if (s["parts"][k]["payload"].get<bool>()) payload += fmt::format("{}{}", payload.empty() ? "" : ", ", k + 1);
   }
   if (!payload.empty()) o += "  payload_parts: [" + payload + "]\n";
-  for (const char* key : {"angle_deg", "dwell_s", "tolerance_deg"}) o += fmt::format("  {}: {}\n", key, num(s[key].get<double>()));
+  for (const char* key : {"angle_deg", "dwell_s", "tolerance_deg"}) o += fmt::format("  {}: {}\n", key, yaml_num(s[key].get<double>()));
   o += fmt::format("  target: {}\n", s["target"].get<std::string>());
-  for (const char* key : {"target_ms", "voltage_V", "ambient_C"}) o += fmt::format("  {}: {}\n", key, num(s[key].get<double>()));
+  for (const char* key : {"target_ms", "voltage_V", "ambient_C"}) o += fmt::format("  {}: {}\n", key, yaml_num(s[key].get<double>()));
   if (!s["set"].is_null()) {
-    o += fmt::format("  set: {{speed_dps: {}, accel_pct: {}, jerk_pct: {}}}\n", num(s["set"]["speed_dps"].get<double>()),
-                     num(s["set"]["accel_pct"].get<double>()), num(s["set"]["jerk_pct"].get<double>()));
+    o += fmt::format("  set: {{speed_dps: {}, accel_pct: {}, jerk_pct: {}}}\n", yaml_num(s["set"]["speed_dps"].get<double>()),
+                     yaml_num(s["set"]["accel_pct"].get<double>()), yaml_num(s["set"]["jerk_pct"].get<double>()));
   }
   return o;
 }
@@ -411,11 +411,11 @@ std::string size_command_line(const Json& state, const std::string& load_file) {
   if (normalised_state(state)["mode"] == "cycle") return "sreh-twin size --cycle " + load_file;
   const sizing::SizeOptions o = size_options(state);
   std::string c = fmt::format("sreh-twin size --load {} --angle-deg {} --voltage-V {} --dwell-s {} --tolerance-deg {} --ambient-C {}",
-                              load_file, num(*o.angle_deg), num(o.voltage_V), num(o.dwell_s), num(o.tolerance_deg),
-                              num(o.ambient_C));
-  if (o.max_positioning_ms) c += " --max-positioning-ms " + num(*o.max_positioning_ms);
-  if (o.max_cycle_ms) c += " --max-cycle-ms " + num(*o.max_cycle_ms);
-  if (o.speed_dps) c += fmt::format(" --speed-dps {} --accel-pct {} --jerk-pct {}", num(*o.speed_dps), num(*o.accel_pct), num(*o.jerk_pct));
+                              load_file, yaml_num(*o.angle_deg), yaml_num(o.voltage_V), yaml_num(o.dwell_s), yaml_num(o.tolerance_deg),
+                              yaml_num(o.ambient_C));
+  if (o.max_positioning_ms) c += " --max-positioning-ms " + yaml_num(*o.max_positioning_ms);
+  if (o.max_cycle_ms) c += " --max-cycle-ms " + yaml_num(*o.max_cycle_ms);
+  if (o.speed_dps) c += fmt::format(" --speed-dps {} --accel-pct {} --jerk-pct {}", yaml_num(*o.speed_dps), yaml_num(*o.accel_pct), yaml_num(*o.jerk_pct));
   return c;
 }
 

@@ -21,7 +21,7 @@ namespace {
 // IODD text is ASCII: anything else becomes a character reference.
 std::string xml_escape(std::string_view s) { return io::html_escape(s, io::NonAscii::AsReference); }
 
-std::string hex_octets(std::string_view bytes) {
+std::string iodd_hex_octets(std::string_view bytes) {
   std::string out;
   for (unsigned char c : bytes) out += fmt::format("{:02X}", c);
   return out;
@@ -79,7 +79,7 @@ std::string default_value(const ParameterEntry& row) {
   if (row.access == Access::W) return {}; // commands have no default
   if (is_numeric(row.type)) return std::to_string(row.default_value);
   if (row.default_text.empty()) return {}; // computed by the device
-  return row.type == ParamType::String ? xml_escape(row.default_text) : hex_octets(row.default_text);
+  return row.type == ParamType::String ? xml_escape(row.default_text) : iodd_hex_octets(row.default_text);
 }
 
 // Our extension attributes (the schema allows them): the raw unit, the

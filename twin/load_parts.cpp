@@ -9,26 +9,26 @@
 namespace sreh {
 namespace {
 
-constexpr double kSteelDensity_kg_m3 = 7850.0; // a point mass is drawn as a steel sphere (A-TWIN-6)
+constexpr double kPointSteelDensity_kg_m3 = 7850.0; // a point mass is drawn as a steel sphere (A-TWIN-6)
 constexpr double kPointInertia_kgm2 = 1e-12;   // MuJoCo needs an inertia above 0
-constexpr int kRingSegments = 32;              // ring drawn from box segments (visual only)
+constexpr int kPartRingSegments = 32;              // ring drawn from box segments (visual only)
 
-std::string num(double v) {
+std::string part_num(double v) {
   char buf[64];
   const auto res = std::to_chars(buf, buf + sizeof buf, v);
   return std::string(buf, res.ptr);
 }
 
 void positive(double v, const std::string& what, const std::string& origin) {
-  if (!(v > 0.0) || !std::isfinite(v)) throw std::invalid_argument(origin + ": " + what + " must be positive and finite, got " + num(v));
+  if (!(v > 0.0) || !std::isfinite(v)) throw std::invalid_argument(origin + ": " + what + " must be positive and finite, got " + part_num(v));
 }
 
 // Roll, pitch, yaw about the fixed x, y, z axes in that order: q = qz qy qx.
 std::string quat_of(const std::array<double, 3>& rpy_deg) {
   const double r = deg_to_rad(rpy_deg[0]) / 2, p = deg_to_rad(rpy_deg[1]) / 2, y = deg_to_rad(rpy_deg[2]) / 2;
   const double cr = std::cos(r), sr = std::sin(r), cp = std::cos(p), sp = std::sin(p), cy = std::cos(y), sy = std::sin(y);
-  return num(cy * cp * cr + sy * sp * sr) + " " + num(cy * cp * sr - sy * sp * cr) + " " + num(cy * sp * cr + sy * cp * sr) +
-         " " + num(sy * cp * cr - cy * sp * sr);
+  return part_num(cy * cp * cr + sy * sp * sr) + " " + part_num(cy * cp * sr - sy * sp * cr) + " " + part_num(cy * sp * cr + sy * cp * sr) +
+         " " + part_num(sy * cp * cr - cy * sp * sr);
 }
 
 struct PartXml {
@@ -41,8 +41,8 @@ struct PartXml {
     positive(l.mass_kg, "disk mass_kg", origin);
     positive(l.radius_m, "disk radius_m", origin);
     positive(l.thickness_m, "disk thickness_m", origin);
-    out.body += "<geom name=\"" + name + "_disk\" type=\"cylinder\" size=\"" + num(l.radius_m) + " " + num(l.thickness_m / 2) +
-                "\" mass=\"" + num(l.mass_kg) + "\" material=\"load_alu\"/>";
+    out.body += "<geom name=\"" + name + "_disk\" type=\"cylinder\" size=\"" + part_num(l.radius_m) + " " + part_num(l.thickness_m / 2) +
+                "\" mass=\"" + part_num(l.mass_kg) + "\" material=\"load_alu\"/>";
   }
   void operator()(const RingLoad& l) const {
     positive(l.mass_kg, "ring mass_kg", origin);
@@ -54,15 +54,15 @@ struct PartXml {
     const double ri2 = l.inner_radius_m * l.inner_radius_m, ro2 = l.outer_radius_m * l.outer_radius_m, t = l.thickness_m;
     const double izz = l.mass_kg * (ri2 + ro2) / 2, ixx = l.mass_kg * (3 * (ri2 + ro2) + t * t) / 12;
     // MuJoCo has no hollow primitive: exact inertial, massless box segments to show it.
-    out.body += "<inertial pos=\"0 0 0\" mass=\"" + num(l.mass_kg) + "\" diaginertia=\"" + num(ixx) + " " + num(ixx) + " " +
-                num(izz) + "\"/>";
+    out.body += "<inertial pos=\"0 0 0\" mass=\"" + part_num(l.mass_kg) + "\" diaginertia=\"" + part_num(ixx) + " " + part_num(ixx) + " " +
+                part_num(izz) + "\"/>";
     const double r_mid = (l.inner_radius_m + l.outer_radius_m) / 2, half_radial = (l.outer_radius_m - l.inner_radius_m) / 2;
-    const double half_tangential = kPi * r_mid / kRingSegments * 1.02;
-    for (int k = 0; k < kRingSegments; ++k) {
-      const double a = 2 * kPi * k / kRingSegments;
-      out.body += "<geom name=\"" + name + "_ring_" + std::to_string(k) + "\" type=\"box\" size=\"" + num(half_radial) + " " +
-                  num(half_tangential) + " " + num(t / 2) + "\" pos=\"" + num(r_mid * std::cos(a)) + " " +
-                  num(r_mid * std::sin(a)) + " 0\" euler=\"0 0 " + num(a) + "\" mass=\"0\" material=\"load_alu\"/>";
+    const double half_tangential = kPi * r_mid / kPartRingSegments * 1.02;
+    for (int k = 0; k < kPartRingSegments; ++k) {
+      const double a = 2 * kPi * k / kPartRingSegments;
+      out.body += "<geom name=\"" + name + "_ring_" + std::to_string(k) + "\" type=\"box\" size=\"" + part_num(half_radial) + " " +
+                  part_num(half_tangential) + " " + part_num(t / 2) + "\" pos=\"" + part_num(r_mid * std::cos(a)) + " " +
+                  part_num(r_mid * std::sin(a)) + " 0\" euler=\"0 0 " + part_num(a) + "\" mass=\"0\" material=\"load_alu\"/>";
     }
   }
   void operator()(const BoxLoad& l) const {
@@ -70,28 +70,28 @@ struct PartXml {
     positive(l.x_m, "box x_m", origin);
     positive(l.y_m, "box y_m", origin);
     positive(l.z_m, "box z_m", origin);
-    out.body += "<geom name=\"" + name + "_box\" type=\"box\" size=\"" + num(l.x_m / 2) + " " + num(l.y_m / 2) + " " +
-                num(l.z_m / 2) + "\" mass=\"" + num(l.mass_kg) + "\" material=\"load_alu\"/>";
+    out.body += "<geom name=\"" + name + "_box\" type=\"box\" size=\"" + part_num(l.x_m / 2) + " " + part_num(l.y_m / 2) + " " +
+                part_num(l.z_m / 2) + "\" mass=\"" + part_num(l.mass_kg) + "\" material=\"load_alu\"/>";
   }
   void operator()(const CylinderPart& l) const {
     positive(l.mass_kg, "cylinder mass_kg", origin);
     positive(l.radius_m, "cylinder radius_m", origin);
     positive(l.length_m, "cylinder length_m", origin);
-    out.body += "<geom name=\"" + name + "_cylinder\" type=\"cylinder\" size=\"" + num(l.radius_m) + " " +
-                num(l.length_m / 2) + "\" mass=\"" + num(l.mass_kg) + "\" material=\"load_alu\"/>";
+    out.body += "<geom name=\"" + name + "_cylinder\" type=\"cylinder\" size=\"" + part_num(l.radius_m) + " " +
+                part_num(l.length_m / 2) + "\" mass=\"" + part_num(l.mass_kg) + "\" material=\"load_alu\"/>";
   }
   void operator()(const SpherePart& l) const {
     positive(l.mass_kg, "sphere mass_kg", origin);
     positive(l.radius_m, "sphere radius_m", origin);
-    out.body += "<geom name=\"" + name + "_sphere\" type=\"sphere\" size=\"" + num(l.radius_m) + "\" mass=\"" +
-                num(l.mass_kg) + "\" material=\"load_steel\"/>";
+    out.body += "<geom name=\"" + name + "_sphere\" type=\"sphere\" size=\"" + part_num(l.radius_m) + "\" mass=\"" +
+                part_num(l.mass_kg) + "\" material=\"load_steel\"/>";
   }
   void operator()(const PointPart& l) const {
     positive(l.mass_kg, "point mass_kg", origin);
-    const double r = std::cbrt(3 * l.mass_kg / (4 * kPi * kSteelDensity_kg_m3));
-    out.body += "<inertial pos=\"0 0 0\" mass=\"" + num(l.mass_kg) + "\" diaginertia=\"" + num(kPointInertia_kgm2) + " " +
-                num(kPointInertia_kgm2) + " " + num(kPointInertia_kgm2) + "\"/><geom name=\"" + name +
-                "_point\" type=\"sphere\" size=\"" + num(r) + "\" mass=\"0\" material=\"load_steel\"/>";
+    const double r = std::cbrt(3 * l.mass_kg / (4 * kPi * kPointSteelDensity_kg_m3));
+    out.body += "<inertial pos=\"0 0 0\" mass=\"" + part_num(l.mass_kg) + "\" diaginertia=\"" + part_num(kPointInertia_kgm2) + " " +
+                part_num(kPointInertia_kgm2) + " " + part_num(kPointInertia_kgm2) + "\"/><geom name=\"" + name +
+                "_point\" type=\"sphere\" size=\"" + part_num(r) + "\" mass=\"0\" material=\"load_steel\"/>";
   }
   void operator()(const MeshPart& l) const {
     positive(l.scale, "mesh scale", origin);
@@ -105,11 +105,11 @@ struct PartXml {
       throw std::invalid_argument(origin + ": mesh: " + e.what());
     }
     out.files.push_back(std::move(file));
-    const std::string s = num(l.scale);
+    const std::string s = part_num(l.scale);
     out.assets += "<mesh name=\"" + name + "_mesh\" file=\"" + out.files.back().name + "\" scale=\"" + s + " " + s + " " + s + "\"/>";
     // MuJoCo computes volume, centre of mass and inertia of the solid mesh.
     out.body += "<geom name=\"" + name + "_mesh\" type=\"mesh\" mesh=\"" + name + "_mesh\" " +
-                (l.mass_kg > 0 ? "mass=\"" + num(l.mass_kg) + "\"" : "density=\"" + num(l.density_kg_m3) + "\"") +
+                (l.mass_kg > 0 ? "mass=\"" + part_num(l.mass_kg) + "\"" : "density=\"" + part_num(l.density_kg_m3) + "\"") +
                 " material=\"load_alu\"/>";
   }
   void operator()(const MjcfLoad& l) const {
@@ -148,7 +148,7 @@ LoadXml assembly_xml(const AssemblyLoad& load, const std::string& module_assets)
     for (double v : p.rpy_deg) {
       if (!std::isfinite(v)) throw std::invalid_argument(origin + ": rpy_deg must be finite");
     }
-    out.body += "<body name=\"" + name + "\" pos=\"" + num(p.at_m[0]) + " " + num(p.at_m[1]) + " " + num(p.at_m[2]) +
+    out.body += "<body name=\"" + name + "\" pos=\"" + part_num(p.at_m[0]) + " " + part_num(p.at_m[1]) + " " + part_num(p.at_m[2]) +
                 "\" quat=\"" + quat_of(p.rpy_deg) + "\">";
     std::visit(PartXml{name, origin, module_assets, out}, p.shape);
     out.body += "</body>";

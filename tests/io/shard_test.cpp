@@ -11,15 +11,15 @@
 namespace sreh::io {
 namespace {
 
-std::map<std::string, std::string> g_env;
-const char* fake_env(const char* name) {
-  const auto it = g_env.find(name);
-  return it == g_env.end() ? nullptr : it->second.c_str();
+std::map<std::string, std::string> g_shard_env;
+const char* fake_shard_env(const char* name) {
+  const auto it = g_shard_env.find(name);
+  return it == g_shard_env.end() ? nullptr : it->second.c_str();
 }
 
 std::pair<std::size_t, std::size_t> parse(const std::string& text, std::map<std::string, std::string> env = {}) {
-  g_env = std::move(env);
-  return parse_shard(text, fake_env);
+  g_shard_env = std::move(env);
+  return parse_shard(text, fake_shard_env);
 }
 
 // The variables Slurm 22.05 sets in every task of an array (checked on a real one in tests/slurm).
@@ -84,15 +84,15 @@ TEST(Shard, SlurmArrayWithAStepGivesEveryShardOnce) {
 }
 
 TEST(Shard, OneTaskArrayNamesTheRerunForm) {
-  g_env = slurm(2, 2, 2, 1, 1); // sbatch --array=2
-  EXPECT_EQ(one_task_array_note("auto", fake_env),
+  g_shard_env = slurm(2, 2, 2, 1, 1); // sbatch --array=2
+  EXPECT_EQ(one_task_array_note("auto", fake_shard_env),
             "note: --shard auto: a one-task Slurm array (task 2) is shard 1/1, the whole batch; to rerun task 2 of "
             "an array 1-N give --shard 2/N");
-  EXPECT_EQ(one_task_array_note("2/3", fake_env), "");
-  g_env = slurm(2, 1, 3, 1, 3);
-  EXPECT_EQ(one_task_array_note("auto", fake_env), "");
-  g_env = {};
-  EXPECT_EQ(one_task_array_note("auto", fake_env), "");
+  EXPECT_EQ(one_task_array_note("2/3", fake_shard_env), "");
+  g_shard_env = slurm(2, 1, 3, 1, 3);
+  EXPECT_EQ(one_task_array_note("auto", fake_shard_env), "");
+  g_shard_env = {};
+  EXPECT_EQ(one_task_array_note("auto", fake_shard_env), "");
 }
 
 TEST(Shard, RefusesSlurmArraysThatAreNotArithmetic) {

@@ -32,7 +32,7 @@ void record(RunRecording& rec, test::ModelData& md) {
   }
 }
 
-std::string slurp(const fs::path& p) {
+std::string slurp_recording(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
   std::stringstream ss;
   ss << in.rdbuf();
@@ -75,7 +75,7 @@ TEST(RunRecording, RendersFramesFromTheSamplesReadBack) {
   EXPECT_EQ(files, summary.frames);
   EXPECT_TRUE(fs::exists(o.frames_dir / "text.tsv")); // the frames' words (issue 39); none drawn here but the header
   // The flange stands at 0 deg at the start and at the end, at 90 deg between the moves.
-  auto frame = [&](int k) { return slurp(o.frames_dir / fmt::format("frame_{:06d}.png", k)); };
+  auto frame = [&](int k) { return slurp_recording(o.frames_dir / fmt::format("frame_{:06d}.png", k)); };
   const std::string start = frame(0);
   ASSERT_FALSE(start.empty());
   EXPECT_TRUE(start == frame(5));      // t = 0.167 s: not moved yet

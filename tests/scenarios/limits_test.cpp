@@ -13,12 +13,12 @@
 namespace sreh {
 namespace {
 
-Scenario parse(const std::string& text, const Limits& limits = {}) {
+Scenario parse_limited(const std::string& text, const Limits& limits = {}) {
   return parse_scenario_text(text, "t.yaml", "", limits);
 }
 
 TEST(RunBound, CountsRepeatsTimesTheirStepsInWholeCycles) {
-  const Scenario s = parse(R"(name: x
+  const Scenario s = parse_limited(R"(name: x
 steps:
   - pd: {motor_on: 1}
   - repeat:
@@ -47,19 +47,19 @@ steps:
   Limits limits;
   limits.max_sim_s = 100;
   try {
-    check_run_bound(parse(text), limits);
+    check_run_bound(parse_limited(text), limits);
     FAIL() << "not refused";
   } catch (const ScenarioError& e) {
     EXPECT_EQ(e.where().line, 4);
     EXPECT_NE(std::string(e.what()).find("--max-sim-s"), std::string::npos) << e.what();
   }
   limits.max_sim_s = 10010;
-  EXPECT_NO_THROW(check_run_bound(parse(text), limits));
+  EXPECT_NO_THROW(check_run_bound(parse_limited(text), limits));
   // run_scenario checks it too (the library path: fuzzers, Python).
   limits.max_sim_s = 100;
   RunOptions o;
   o.limits = limits;
-  EXPECT_THROW(run_scenario(parse(text), o), ScenarioError);
+  EXPECT_THROW(run_scenario(parse_limited(text), o), ScenarioError);
 }
 
 TEST(RunBound, RepeatProductsBeyondIntegersStayFinite) {
@@ -70,9 +70,9 @@ TEST(RunBound, RepeatProductsBeyondIntegersStayFinite) {
     indent += "      ";
   }
   text += indent + "- comment: deep\n";
-  const RunBound b = run_bound(parse(text));
+  const RunBound b = run_bound(parse_limited(text));
   EXPECT_GT(b.steps, 1e29);
-  EXPECT_THROW(check_run_bound(parse(text), Limits{}), ScenarioError);
+  EXPECT_THROW(check_run_bound(parse_limited(text), Limits{}), ScenarioError);
 }
 
 TEST(YamlLimits, AliasExpansionDepthAndSizeAreBounded) {
@@ -80,24 +80,24 @@ TEST(YamlLimits, AliasExpansionDepthAndSizeAreBounded) {
   small.max_yaml_nodes = 50;
   const std::string aliases = "name: x\na: &a [1, 2, 3, 4, 5, 6, 7, 8, 9, 10]\nb: [*a, *a, *a, *a, *a]\nsteps:\n  - wait_s: 1\n";
   try {
-    parse(aliases, small);
+    parse_limited(aliases, small);
     FAIL() << "not refused";
   } catch (const ScenarioError& e) {
     EXPECT_NE(std::string(e.what()).find("--max-yaml-nodes"), std::string::npos) << e.what();
   }
   small.max_yaml_nodes = 1000;
   small.max_yaml_depth = 3;
-  EXPECT_THROW(parse("name: x\nsteps:\n  - wait_s: [[1]]\n", small), ScenarioError);
+  EXPECT_THROW(parse_limited("name: x\nsteps:\n  - wait_s: [[1]]\n", small), ScenarioError);
   small.max_file_bytes = 10;
-  EXPECT_THROW(parse("name: x\nsteps:\n  - wait_s: 1\n", small), ScenarioError);
+  EXPECT_THROW(parse_limited("name: x\nsteps:\n  - wait_s: 1\n", small), ScenarioError);
 }
 
 TEST(YamlTags, CoreTagsMustMatchTheirValue) {
-  EXPECT_NO_THROW(parse("name: !!str x\nsteps:\n  - wait_s: !!float 0.5\n  - wait_s: !!int 1\n"));
-  EXPECT_THROW(parse("name: x\nsteps:\n  - wait_s: !!str 5\n"), ScenarioError);
-  EXPECT_THROW(parse("name: x\nsteps:\n  - wait_s: !!int 0.5\n"), ScenarioError);
-  EXPECT_THROW(parse("name: x\nsteps:\n  - pd: {motor_on: !!str true}\n"), ScenarioError);
-  EXPECT_THROW(parse("name: !local x\nsteps:\n  - wait_s: 1\n"), ScenarioError);
+  EXPECT_NO_THROW(parse_limited("name: !!str x\nsteps:\n  - wait_s: !!float 0.5\n  - wait_s: !!int 1\n"));
+  EXPECT_THROW(parse_limited("name: x\nsteps:\n  - wait_s: !!str 5\n"), ScenarioError);
+  EXPECT_THROW(parse_limited("name: x\nsteps:\n  - wait_s: !!int 0.5\n"), ScenarioError);
+  EXPECT_THROW(parse_limited("name: x\nsteps:\n  - pd: {motor_on: !!str true}\n"), ScenarioError);
+  EXPECT_THROW(parse_limited("name: !local x\nsteps:\n  - wait_s: 1\n"), ScenarioError);
 }
 
 TEST(TraceStreaming, StreamedBytesEqualTheInMemoryTrace) {
@@ -111,7 +111,7 @@ steps:
 )";
   RunOptions memory;
   memory.record_trace = true;
-  const RunResult a = run_scenario(parse(text), memory);
+  const RunResult a = run_scenario(parse_limited(text), memory);
   std::ostringstream held;
   write_trace_csv(held, a.trace);
 
@@ -119,7 +119,7 @@ steps:
   write_trace_header(streamed);
   RunOptions stream;
   stream.trace_sink = [&](const TraceRow& row) { write_trace_row(streamed, row); };
-  const RunResult b = run_scenario(parse(text), stream);
+  const RunResult b = run_scenario(parse_limited(text), stream);
   EXPECT_TRUE(b.trace.empty()); // nothing held in memory
   EXPECT_GT(a.trace.size(), 100u);
   EXPECT_EQ(streamed.str(), held.str());

@@ -16,10 +16,10 @@
 namespace sreh {
 namespace {
 
-Scenario parse(const std::string& text) { return parse_scenario_text(text, "t.yaml", "", Limits{}); }
+Scenario parse_streamed(const std::string& text) { return parse_scenario_text(text, "t.yaml", "", Limits{}); }
 
 std::string in_memory_json(const std::string& text, int indent = 2, const nlohmann::json& extra = nlohmann::json::object()) {
-  const RunResult r = run_scenario(parse(text));
+  const RunResult r = run_scenario(parse_streamed(text));
   nlohmann::json j = to_json(r);
   j.update(extra);
   return j.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
@@ -30,7 +30,7 @@ std::string streamed_json(const std::string& text, RunResult* out = nullptr, int
   ResultJsonStream stream(indent);
   RunOptions options;
   stream.attach(options);
-  const RunResult r = run_scenario(parse(text), options);
+  const RunResult r = run_scenario(parse_streamed(text), options);
   std::ostringstream json;
   stream.write(json, r, extra);
   if (out) *out = r;
@@ -111,7 +111,7 @@ TEST(ResultJsonStream, RunMetricsCountTheStreamedMoves) {
   // The metrics sum up finished and open records alike, whether kept or streamed.
   RunResult streamed;
   streamed_json(kBusyRun, &streamed);
-  const RunResult held = run_scenario(parse(kBusyRun));
+  const RunResult held = run_scenario(parse_streamed(kBusyRun));
   ASSERT_EQ(held.checks.size(), streamed.checks_recorded);
   EXPECT_EQ(held.checks_held, streamed.checks_held);
   EXPECT_EQ(held.moves.size(), streamed.moves_recorded);

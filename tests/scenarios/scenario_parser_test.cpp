@@ -10,12 +10,12 @@
 namespace sreh {
 namespace {
 
-Scenario parse(const std::string& text) { return parse_scenario_text(text, "t.yaml", ""); }
+Scenario parse_text(const std::string& text) { return parse_scenario_text(text, "t.yaml", ""); }
 
 // Parses `text`, expecting a ScenarioError; returns it.
 ScenarioError parse_error(const std::string& text) {
   try {
-    parse(text);
+    parse_text(text);
   } catch (const ScenarioError& e) {
     return e;
   }
@@ -32,7 +32,7 @@ TEST(ScenarioParser, InterfacesExampleParses) {
   // The example of interfaces.md, verbatim apart from the load: the
   // contract's disk (0.4 kg, r 0.1 m) is 20000 g cm^2, above the module's
   // limit, and since issue 28 refused while parsing (LoadAboveTheLimit...).
-  const Scenario s = parse(R"(
+  const Scenario s = parse_text(R"(
 name: absolute move 90 deg with a 2000 g cm^2 disk
 device:
   supply_V: 24
@@ -109,7 +109,7 @@ TEST(ScenarioParser, LoadAboveTheLimitIsRefusedAtItsLine_Issue28) {
 }
 
 TEST(ScenarioParser, AssemblyPartsWithOffsetsAndNames_Issue28) {
-  const Scenario s = parse("name: x\nload:\n  parts:\n    - box: {mass_kg: 0.2, x_m: 0.02, y_m: 0.02, z_m: 0.02}\n"
+  const Scenario s = parse_text("name: x\nload:\n  parts:\n    - box: {mass_kg: 0.2, x_m: 0.02, y_m: 0.02, z_m: 0.02}\n"
                            "      at_m: [0.06, 0, 0.02]\n      rpy_deg: [0, 0, 45]\n      name: cube\n"
                            "    - point: {mass_kg: 0.1}\n      at_m: [0, 0.05, 0]\nsteps:\n  - wait_s: 0.1\n");
   const auto& a = std::get<AssemblyLoad>(s.world.load);
@@ -127,7 +127,7 @@ TEST(ScenarioParser, AssemblyPartsWithOffsetsAndNames_Issue28) {
 
 TEST(ScenarioParser, PlainPositionMatchesNearestWireCount) {
   // manual 2.5: one count is 360/2^16 deg; a plain number matches within half a count.
-  const Scenario s = parse("name: x\nsteps:\n  - expect: {position_deg: 380}\n");
+  const Scenario s = parse_text("name: x\nsteps:\n  - expect: {position_deg: 380}\n");
   const Range r = action<ExpectStep>(s, 0).check.position_deg->terms.at(0).range;
   EXPECT_TRUE(r.exact);
   EXPECT_TRUE(r.contains(380.0 + 0.0027));
@@ -135,7 +135,7 @@ TEST(ScenarioParser, PlainPositionMatchesNearestWireCount) {
 }
 
 TEST(ScenarioParser, NegativeTargetAndHexRaw) {
-  const Scenario s = parse("name: x\nsteps:\n  - pd: {target_deg: -360}\n  - pd: {target_raw: 0x7FFFFFFF}\n");
+  const Scenario s = parse_text("name: x\nsteps:\n  - pd: {target_deg: -360}\n  - pd: {target_raw: 0x7FFFFFFF}\n");
   EXPECT_EQ(*action<PdStep>(s, 0).target_raw, -65536); // manual 2.5 table: FFFF 0000 = -360 deg
   EXPECT_EQ(*action<PdStep>(s, 1).target_raw, 2147483647);
 }
@@ -147,14 +147,14 @@ TEST(ScenarioParser, HexRawBeyondInt32IsRejected) {
 }
 
 TEST(ScenarioParser, StatesAndLedsAsListsMeanAnyOf) {
-  const Scenario s = parse("name: x\nsteps:\n  - expect: {state: [Ready, Done], led: [green, orange]}\n");
+  const Scenario s = parse_text("name: x\nsteps:\n  - expect: {state: [Ready, Done], led: [green, orange]}\n");
   const auto& c = action<ExpectStep>(s, 0).check;
   EXPECT_EQ(c.state, (std::vector<State>{State::Ready, State::Done}));
   EXPECT_EQ(c.led, (std::vector<LedColor>{LedColor::Green, LedColor::Orange}));
 }
 
 TEST(ScenarioParser, RepeatNumbersNestedSteps) {
-  const Scenario s = parse(R"(name: x
+  const Scenario s = parse_text(R"(name: x
 steps:
   - pd: {motor_on: 1}
   - repeat:
@@ -170,14 +170,14 @@ steps:
 }
 
 TEST(ScenarioParser, CommentNextToAnAction) {
-  const Scenario s = parse("name: x\nsteps:\n  - {wait_s: 0.1, comment: why}\n  - comment: just a note\n");
+  const Scenario s = parse_text("name: x\nsteps:\n  - {wait_s: 0.1, comment: why}\n  - comment: just a note\n");
   EXPECT_EQ(s.steps[0].kind, "wait_s");
   EXPECT_EQ(s.steps[0].comment, "why");
   EXPECT_EQ(action<CommentStep>(s, 1).text, "just a note");
 }
 
 TEST(ScenarioParser, IsduStringsAndRawBytes) {
-  const Scenario s = parse(R"(name: x
+  const Scenario s = parse_text(R"(name: x
 steps:
   - isdu_write: {index: 24, value: station 7}
   - isdu_read: {index: 16, expect: Afag}
@@ -194,14 +194,14 @@ steps:
 
 TEST(ScenarioParser, Int32ParameterIsEncodedBigEndianTwosComplement) {
   // manual 6.2, index 86: int32 in 2^-16 * 360 deg.
-  const Scenario s = parse("name: x\nsteps:\n  - isdu_write: {index: 86, value: -65536}\n");
+  const Scenario s = parse_text("name: x\nsteps:\n  - isdu_write: {index: 86, value: -65536}\n");
   EXPECT_EQ(action<IsduWriteStep>(s, 0).data, (std::vector<uint8_t>{0xFF, 0xFF, 0x00, 0x00}));
 }
 
 TEST(ScenarioParser, WholeRecordWriteTakesOneValuePerMember) {
   // manual 6.2, index 85: minimum and maximum motor voltage in mV.
   ASSERT_EQ(record_members(85).size(), 2u);
-  const Scenario s = parse("name: x\nsteps:\n  - isdu_write: {index: 85, value: [17000, 31000]}\n");
+  const Scenario s = parse_text("name: x\nsteps:\n  - isdu_write: {index: 85, value: [17000, 31000]}\n");
   EXPECT_EQ(action<IsduWriteStep>(s, 0).data, (std::vector<uint8_t>{0x42, 0x68, 0x79, 0x18}));
 }
 
@@ -213,7 +213,7 @@ TEST(ScenarioParser, ValueThatDoesNotFitTheWireTypeIsRejected) {
 }
 
 TEST(ScenarioParser, RunExpectPlainNumbersAreBounds) {
-  const Scenario s = parse("name: x\nsteps: [{wait_s: 0}]\nexpect:\n  max_settling_s: 0.1\n  min_supply_V: 20\n  moves: 2\n");
+  const Scenario s = parse_text("name: x\nsteps: [{wait_s: 0}]\nexpect:\n  max_settling_s: 0.1\n  min_supply_V: 20\n  moves: 2\n");
   ASSERT_EQ(s.expect.size(), 3u);
   EXPECT_TRUE(s.expect[0].range.contains(0.0));
   EXPECT_FALSE(s.expect[0].range.contains(0.2));

@@ -21,14 +21,14 @@
 namespace sreh::sizing {
 namespace {
 
-struct Case {
+struct PruneCase {
   const char* name;
   double angle_deg, load_gcm2, dwell_s;
   double max_positioning_ms; // 0: none
   double max_cycle_ms;       // 0: none
 };
 
-SizingRequest request(const Case& c) {
+SizingRequest prune_request(const PruneCase& c) {
   SizingRequest rq;
   rq.angle_deg = c.angle_deg;
   rq.world.load = InertiaLoad{c.load_gcm2};
@@ -48,7 +48,7 @@ double allowed_positioning_s(const SizingRequest& rq) {
   return s;
 }
 
-double travel_s(const SizingRequest& rq, const MotionSetting& s, double load_gcm2) {
+double prune_travel_s(const SizingRequest& rq, const MotionSetting& s, double load_gcm2) {
   const double d = internal_counts_to_rad(deg_to_wire_counts(rq.angle_deg) * kInternalPerWireCount);
   return Profile::rest_to_rest(d, limits_from_parameter_set(s.speed_dps, s.accel_pct, s.jerk_pct, load_gcm2))
       .duration_s();
@@ -69,7 +69,7 @@ std::vector<Beyond> just_beyond(const SizingRequest& rq, double load_gcm2, doubl
     for (double a = 3.0; a <= 100.0; a *= 1.17) {
       for (double j : {5.0, 12.0, 30.0, 70.0, 100.0}) {
         const MotionSetting s{std::round(v_top * v * 10.0) / 10.0, std::round(a * 10.0) / 10.0, j};
-        const double bound = travel_s(rq, s, load_gcm2) + wait_s;
+        const double bound = prune_travel_s(rq, s, load_gcm2) + wait_s;
         if (bound > allowed && bound <= allowed + 0.004) out.push_back({s, bound});
       }
     }
@@ -79,10 +79,10 @@ std::vector<Beyond> just_beyond(const SizingRequest& rq, double load_gcm2, doubl
   return out;
 }
 
-class PlanPrune : public ::testing::TestWithParam<Case> {};
+class PlanPrune : public ::testing::TestWithParam<PruneCase> {};
 
 TEST_P(PlanPrune, BeyondBoundMisses_3_5_2) {
-  const SizingRequest rq = request(GetParam());
+  const SizingRequest rq = prune_request(GetParam());
   const double load_gcm2 = validate(rq);
   const double wait_s = make_parameter_set(rq, MotionSetting{}, load_gcm2).wait_ms * 1e-3;
   const double allowed = allowed_positioning_s(rq);
@@ -106,7 +106,7 @@ TEST_P(PlanPrune, BeyondBoundMisses_3_5_2) {
 // planned travel plus the waiting time: the bound holds for the sets the
 // search did run, feasible or not.
 TEST_P(PlanPrune, RunsMeetBound_3_5_2) {
-  const SizingRequest rq = request(GetParam());
+  const SizingRequest rq = prune_request(GetParam());
   const SizingResult r = size(rq);
   ASSERT_EQ(r.objective, "gentlest");
   ASSERT_FALSE(r.tried.empty());
@@ -121,11 +121,11 @@ TEST_P(PlanPrune, RunsMeetBound_3_5_2) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, PlanPrune,
-                         ::testing::Values(Case{"m90_5000g_300ms", 90.0, 5000.0, 0.0, 300.0, 0.0},
-                                           Case{"m60_4000g_260ms", 60.0, 4000.0, 0.3, 260.0, 0.0},
-                                           Case{"m45_8000g_250ms", 45.0, 8000.0, 0.0, 250.0, 0.0},
-                                           Case{"c120_3000g_900ms", 120.0, 3000.0, 0.1, 0.0, 900.0}),
-                         [](const ::testing::TestParamInfo<Case>& p) { return std::string(p.param.name); });
+                         ::testing::Values(PruneCase{"m90_5000g_300ms", 90.0, 5000.0, 0.0, 300.0, 0.0},
+                                           PruneCase{"m60_4000g_260ms", 60.0, 4000.0, 0.3, 260.0, 0.0},
+                                           PruneCase{"m45_8000g_250ms", 45.0, 8000.0, 0.0, 250.0, 0.0},
+                                           PruneCase{"c120_3000g_900ms", 120.0, 3000.0, 0.1, 0.0, 900.0}),
+                         [](const ::testing::TestParamInfo<PruneCase>& p) { return std::string(p.param.name); });
 
 } // namespace
 } // namespace sreh::sizing

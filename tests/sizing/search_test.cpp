@@ -26,7 +26,7 @@ SizingRequest request(double angle_deg, double load_gcm2) {
   return rq;
 }
 
-double travel_s(const SizingRequest& rq, const MotionSetting& s, double load_gcm2) {
+double search_travel_s(const SizingRequest& rq, const MotionSetting& s, double load_gcm2) {
   const double d = internal_counts_to_rad(deg_to_wire_counts(rq.angle_deg) * kInternalPerWireCount);
   return Profile::rest_to_rest(d, limits_from_parameter_set(s.speed_dps, s.accel_pct, s.jerk_pct, load_gcm2))
       .duration_s();
@@ -46,16 +46,16 @@ std::vector<MotionSetting> brute_grid(double v_top, int n, double step) {
   return g;
 }
 
-struct Case {
+struct SearchCase {
   double angle_deg, load_gcm2, dwell_s, voltage_V;
 };
 
-class Fastest : public ::testing::TestWithParam<Case> {};
+class Fastest : public ::testing::TestWithParam<SearchCase> {};
 
 // Issue 17: the fastest recommendation is within 0.5 % of the best
 // positioning time found by brute force.
 TEST_P(Fastest, WithinHalfAPercentOfBruteForce) {
-  const Case c = GetParam();
+  const SearchCase c = GetParam();
   SizingRequest rq = request(c.angle_deg, c.load_gcm2);
   rq.dwell_s = c.dwell_s;
   rq.world.supply.voltage_V = c.voltage_V;
@@ -68,7 +68,7 @@ TEST_P(Fastest, WithinHalfAPercentOfBruteForce) {
   const double wait_s = r.evaluation.set.wait_ms * 1e-3;
   int runs = 0;
   for (const MotionSetting& s : brute_grid(voltage_speed_limit_dps(rq.world.supply.voltage_V), 11, 8.7)) {
-    if (travel_s(rq, s, c.load_gcm2) + wait_s >= 0.995 * best) continue; // cannot beat it by 0.5 %
+    if (search_travel_s(rq, s, c.load_gcm2) + wait_s >= 0.995 * best) continue; // cannot beat it by 0.5 %
     SizingRequest one = rq;
     one.setting = s;
     const Evaluation e = size(one).evaluation;
@@ -82,13 +82,13 @@ TEST_P(Fastest, WithinHalfAPercentOfBruteForce) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Loads, Fastest,
-                         ::testing::Values(Case{30.0, 500.0, 0.5, 24.0},     // at the module's limits
-                                           Case{90.0, 6000.0, 0.2, 24.0},
-                                           Case{180.0, 15000.0, 0.0, 24.0},  // heat-limited
-                                           Case{360.0, 15000.0, 0.0, 24.0},  // the issue's example
-                                           Case{360.0, 2000.0, 0.3, 16.0}),  // torque at speed, 16 V
+                         ::testing::Values(SearchCase{30.0, 500.0, 0.5, 24.0},     // at the module's limits
+                                           SearchCase{90.0, 6000.0, 0.2, 24.0},
+                                           SearchCase{180.0, 15000.0, 0.0, 24.0},  // heat-limited
+                                           SearchCase{360.0, 15000.0, 0.0, 24.0},  // the issue's example
+                                           SearchCase{360.0, 2000.0, 0.3, 16.0}),  // torque at speed, 16 V
                          // Short names (issue 39: ctest prints the parameter bytes otherwise).
-                         [](const ::testing::TestParamInfo<Case>& param_info) {
+                         [](const ::testing::TestParamInfo<SearchCase>& param_info) {
                            return std::to_string(static_cast<int>(param_info.param.angle_deg)) + "d_" +
                                   std::to_string(static_cast<int>(param_info.param.load_gcm2)) + "g_" +
                                   std::to_string(static_cast<int>(param_info.param.voltage_V)) + "V";
@@ -109,7 +109,7 @@ TEST(Gentlest, MeetsTheTargetWithTheLowestRmsTorque) {
   const double wait_s = r.evaluation.set.wait_ms * 1e-3;
   // Coarser than the fastest check: every point meeting T on travel runs.
   for (const MotionSetting& s : brute_grid(voltage_speed_limit_dps(rq.world.supply.voltage_V), 6, 15.3)) {
-    if (travel_s(rq, s, 4000.0) + wait_s > 0.260) continue;
+    if (search_travel_s(rq, s, 4000.0) + wait_s > 0.260) continue;
     SizingRequest one = rq;
     one.setting = s;
     const Evaluation e = size(one).evaluation;

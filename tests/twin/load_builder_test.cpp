@@ -15,7 +15,7 @@ double load_gcm2(const LoadSpec& load) {
   return kgm2_to_gcm2(build_model(load, {}, 1e-4).load_inertia_kgm2);
 }
 
-std::string refusal(const LoadSpec& load) {
+std::string builder_refusal(const LoadSpec& load) {
   try {
     build_model(load, {}, 1e-4);
   } catch (const std::invalid_argument& e) {
@@ -24,7 +24,7 @@ std::string refusal(const LoadSpec& load) {
   return "(accepted)";
 }
 
-const std::string kData = std::string(SREH_SOURCE_DIR) + "/tests/twin/data/";
+const std::string kBuilderData = std::string(SREH_SOURCE_DIR) + "/tests/twin/data/";
 
 TEST(LoadBuilder, ModuleAloneHasJIntern_3_5_4) {
   // A-TWIN-4: rotor J_m (armature of joint "rotor") + flange J_f = J_intern.
@@ -81,45 +81,45 @@ TEST(LoadBuilder, RelativeLoadPathResolvesInTheSourceTree) {
 }
 
 TEST(LoadBuilder, RefusesLoadAboveModuleLimit_6_2_64_4) {
-  const std::string msg = refusal(InertiaLoad{20000});
+  const std::string msg = builder_refusal(InertiaLoad{20000});
   EXPECT_NE(msg.find("20000"), std::string::npos) << msg;
   EXPECT_NE(msg.find("15000"), std::string::npos) << msg;
   // A disk computed by MuJoCo beyond the limit: 0.5 * 0.4 * 0.1^2 = 20000 g cm^2.
-  EXPECT_NE(refusal(DiskLoad{0.4, 0.1, 0.01}).find("above the module's limit"), std::string::npos);
+  EXPECT_NE(builder_refusal(DiskLoad{0.4, 0.1, 0.01}).find("above the module's limit"), std::string::npos);
 }
 
 TEST(LoadBuilder, RefusesNonPositiveDimensionsNamingTheField) {
-  EXPECT_NE(refusal(DiskLoad{0.3, 0.0, 0.01}).find("radius_m"), std::string::npos);
-  EXPECT_NE(refusal(DiskLoad{-1.0, 0.05, 0.01}).find("mass_kg"), std::string::npos);
-  EXPECT_NE(refusal(BoxLoad{1.0, 0.1, -0.1, 0.1}).find("y_m"), std::string::npos);
-  EXPECT_NE(refusal(RingLoad{0.5, 0.06, 0.04, 0.01}).find("inner_radius_m"), std::string::npos);
-  EXPECT_NE(refusal(ArmLoad{0.1, 0.1, -0.01}).find("arm_mass_kg"), std::string::npos);
-  EXPECT_NE(refusal(InertiaLoad{-5}).find("inertia_gcm2"), std::string::npos);
+  EXPECT_NE(builder_refusal(DiskLoad{0.3, 0.0, 0.01}).find("radius_m"), std::string::npos);
+  EXPECT_NE(builder_refusal(DiskLoad{-1.0, 0.05, 0.01}).find("mass_kg"), std::string::npos);
+  EXPECT_NE(builder_refusal(BoxLoad{1.0, 0.1, -0.1, 0.1}).find("y_m"), std::string::npos);
+  EXPECT_NE(builder_refusal(RingLoad{0.5, 0.06, 0.04, 0.01}).find("inner_radius_m"), std::string::npos);
+  EXPECT_NE(builder_refusal(ArmLoad{0.1, 0.1, -0.01}).find("arm_mass_kg"), std::string::npos);
+  EXPECT_NE(builder_refusal(InertiaLoad{-5}).find("inertia_gcm2"), std::string::npos);
 }
 
 TEST(LoadBuilder, RefusesBrokenMjcfNamingFileAndLine) {
-  const std::string file = kData + "broken_load.xml";
-  const std::string msg = refusal(MjcfLoad{file});
+  const std::string file = kBuilderData + "broken_load.xml";
+  const std::string msg = builder_refusal(MjcfLoad{file});
   EXPECT_NE(msg.find(file), std::string::npos) << msg;
   EXPECT_NE(msg.find("colour"), std::string::npos) << msg;
   EXPECT_NE(msg.find("line 3"), std::string::npos) << msg;
 }
 
 TEST(LoadBuilder, RefusesMalformedXmlNamingTheFile) {
-  const std::string file = kData + "unclosed_load.xml";
-  const std::string msg = refusal(MjcfLoad{file});
+  const std::string file = kBuilderData + "unclosed_load.xml";
+  const std::string msg = builder_refusal(MjcfLoad{file});
   EXPECT_NE(msg.find(file), std::string::npos) << msg;
   EXPECT_NE(msg.find("invalid MJCF"), std::string::npos) << msg;
 }
 
 TEST(LoadBuilder, RefusesMissingFile) {
-  const std::string msg = refusal(MjcfLoad{kData + "no_such_load.xml"});
+  const std::string msg = builder_refusal(MjcfLoad{kBuilderData + "no_such_load.xml"});
   EXPECT_NE(msg.find("no_such_load.xml"), std::string::npos) << msg;
   EXPECT_NE(msg.find("cannot open"), std::string::npos) << msg;
 }
 
 TEST(LoadBuilder, RefusesLoadWithJoints) {
-  const std::string msg = refusal(MjcfLoad{kData + "jointed_load.xml"});
+  const std::string msg = builder_refusal(MjcfLoad{kBuilderData + "jointed_load.xml"});
   EXPECT_NE(msg.find("rigid"), std::string::npos) << msg;
 }
 

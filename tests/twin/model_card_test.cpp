@@ -29,7 +29,7 @@ struct TempFile {
   static inline int counter = 0;
 };
 
-std::string error_of(const std::string& text) {
+std::string card_error_of(const std::string& text) {
   TempFile f(text);
   try {
     apply_model_file(default_model_card(), f.path);
@@ -86,26 +86,26 @@ TEST(ModelCard, ARangeGivenWithTheValueLetsAModuleLieOutside) {
 }
 
 TEST(ModelCard, BadFilesNameFileLineAndConstant) {
-  EXPECT_EQ(error_of("constants:\n  coulomb_frition: 0.01\n").substr(0, 40), ":2:3: unknown constant 'coulomb_frition'");
-  EXPECT_NE(error_of("constants:\n  coulomb_friction: 0.1\n").find(":2:21: coulomb_friction = 0.1 N m is outside its range"),
+  EXPECT_EQ(card_error_of("constants:\n  coulomb_frition: 0.01\n").substr(0, 40), ":2:3: unknown constant 'coulomb_frition'");
+  EXPECT_NE(card_error_of("constants:\n  coulomb_friction: 0.1\n").find(":2:21: coulomb_friction = 0.1 N m is outside its range"),
             std::string::npos);
-  EXPECT_NE(error_of("constants:\n  coulomb_friction: {value: 0.004, unit: \"mN m\"}\n").find("unit 'mN m' differs"),
+  EXPECT_NE(card_error_of("constants:\n  coulomb_friction: {value: 0.004, unit: \"mN m\"}\n").find("unit 'mN m' differs"),
             std::string::npos);
-  EXPECT_NE(error_of("constants:\n  coulomb_friction: {value: 0.004, range: [0.01, 0.001]}\n").find("lo 0.01 > hi 0.001"),
+  EXPECT_NE(card_error_of("constants:\n  coulomb_friction: {value: 0.004, range: [0.01, 0.001]}\n").find("lo 0.01 > hi 0.001"),
             std::string::npos);
-  EXPECT_NE(error_of("constants:\n  loop_delay: 2.5\n").find("whole number"), std::string::npos);
-  EXPECT_NE(error_of("constants:\n  loop_delay: {value: 6, range: [0, 10]}\n").find("at most 4 control periods"),
+  EXPECT_NE(card_error_of("constants:\n  loop_delay: 2.5\n").find("whole number"), std::string::npos);
+  EXPECT_NE(card_error_of("constants:\n  loop_delay: {value: 6, range: [0, 10]}\n").find("at most 4 control periods"),
             std::string::npos);
-  EXPECT_NE(error_of("constants:\n  gear_efficiency: {value: 1.1, range: [0.9, 1.2]}\n").find("gear_efficiency must be at most 1"),
+  EXPECT_NE(card_error_of("constants:\n  gear_efficiency: {value: 1.1, range: [0.9, 1.2]}\n").find("gear_efficiency must be at most 1"),
             std::string::npos);
-  EXPECT_NE(error_of("constants:\n  coulomb_friction: abc\n").find("finite number, got 'abc'"), std::string::npos);
-  EXPECT_NE(error_of("constants:\n  coulomb_friction: .nan\n").find("finite number"), std::string::npos);
-  EXPECT_NE(error_of("constants:\n  coulomb_friction: 0.006\n  coulomb_friction: 0.007\n").find("given twice"),
+  EXPECT_NE(card_error_of("constants:\n  coulomb_friction: abc\n").find("finite number, got 'abc'"), std::string::npos);
+  EXPECT_NE(card_error_of("constants:\n  coulomb_friction: .nan\n").find("finite number"), std::string::npos);
+  EXPECT_NE(card_error_of("constants:\n  coulomb_friction: 0.006\n  coulomb_friction: 0.007\n").find("given twice"),
             std::string::npos);
-  EXPECT_NE(error_of("constant:\n  coulomb_friction: 0.004\n").find("unknown key 'constant'"), std::string::npos);
-  EXPECT_NE(error_of("constants: [1, 2]\n").find("'constants' must be a mapping"), std::string::npos);
-  EXPECT_NE(error_of("constants: {}\n---\nconstants: {}\n").find("exactly one YAML document"), std::string::npos);
-  EXPECT_NE(error_of("constants:\n  coulomb_friction: {value: 0.004, color: red}\n").find("unknown key 'color'"),
+  EXPECT_NE(card_error_of("constant:\n  coulomb_friction: 0.004\n").find("unknown key 'constant'"), std::string::npos);
+  EXPECT_NE(card_error_of("constants: [1, 2]\n").find("'constants' must be a mapping"), std::string::npos);
+  EXPECT_NE(card_error_of("constants: {}\n---\nconstants: {}\n").find("exactly one YAML document"), std::string::npos);
+  EXPECT_NE(card_error_of("constants:\n  coulomb_friction: {value: 0.004, color: red}\n").find("unknown key 'color'"),
             std::string::npos);
 }
 

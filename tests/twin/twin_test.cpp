@@ -42,25 +42,25 @@ void switch_on_and_move(Twin& twin, double target_deg) {
   twin.set_pd_out(pd);
 }
 
-TwinConfig config_with(LoadSpec load) {
+TwinConfig twin_config_with(LoadSpec load) {
   TwinConfig c;
   c.load = std::move(load);
   return c;
 }
 
-TwinConfig config_2000() {
+TwinConfig twin_config_2000() {
   TwinConfig c;
   c.load = InertiaLoad{2000};
   return c;
 }
 
 TEST(Twin, ReportsActualLoadInertia) {
-  Twin twin(config_with(DiskLoad{0.3, 0.08, 0.01}));
+  Twin twin(twin_config_with(DiskLoad{0.3, 0.08, 0.01}));
   EXPECT_NEAR(twin.load_inertia_gcm2(), 9600.0, 1e-6);
 }
 
 TEST(Twin, RefusesLoadBeyondModuleLimit_6_2) {
-  EXPECT_THROW({ Twin t(config_with(InertiaLoad{20000})); }, std::invalid_argument);
+  EXPECT_THROW({ Twin t(twin_config_with(InertiaLoad{20000})); }, std::invalid_argument);
 }
 
 TEST(Twin, RefusesCycleNotAMultipleOfPhysicsStep) {
@@ -79,7 +79,7 @@ TEST(Twin, ClocksAreIntegerCycles) {
 }
 
 TEST(Twin, NinetyDegreeMoveCompletes_3_5_2) {
-  Twin twin(config_2000());
+  Twin twin(twin_config_2000());
   write_u16(twin, 65, 4, 2000); // parameter set 1: configured load = actual load
   switch_on_and_move(twin, 90.0);
   ASSERT_GT(run_until(twin, [&] { return twin.pd_in().done; }, 1000), 0);
@@ -106,7 +106,7 @@ TEST(Twin, NinetyDegreeMoveCompletes_3_5_2) {
 
 TEST(Twin, SameRunTwiceGivesIdenticalTraceBytes) {
   auto run_once = [] {
-    Twin twin(config_2000());
+    Twin twin(twin_config_2000());
     write_u16(twin, 65, 4, 2000);
     switch_on_and_move(twin, 90.0);
     for (int i = 0; i < 200; ++i) twin.run_cycle();
@@ -123,7 +123,7 @@ TEST(Twin, SameRunTwiceGivesIdenticalTraceBytes) {
 }
 
 TEST(Twin, HardStopCausesTrackingError_7_2_114_5) {
-  TwinConfig c = config_2000();
+  TwinConfig c = twin_config_2000();
   c.hard_stops = {HardStop{45.0}};
   Twin twin(c);
   write_u16(twin, 65, 4, 2000);
@@ -177,7 +177,7 @@ TEST(Twin, LinkDownWhileMotorOnIsAnError_5) {
 }
 
 TEST(Twin, PowerCycleKeepsAbsolutePosition_4_1) {
-  Twin twin(config_2000());
+  Twin twin(twin_config_2000());
   write_u16(twin, 65, 4, 2000);
   switch_on_and_move(twin, 90.0);
   ASSERT_GT(run_until(twin, [&] { return twin.pd_in().done; }, 1000), 0);
@@ -190,7 +190,7 @@ TEST(Twin, PowerCycleKeepsAbsolutePosition_4_1) {
 }
 
 TEST(Twin, ExternalTorqueIsResistedWhileHolding) {
-  Twin twin(config_2000());
+  Twin twin(twin_config_2000());
   write_u16(twin, 65, 4, 2000);
   switch_on_and_move(twin, 90.0);
   ASSERT_GT(run_until(twin, [&] { return twin.pd_in().done; }, 1000), 0);
@@ -204,7 +204,7 @@ TEST(Twin, ExternalTorqueIsResistedWhileHolding) {
 // A-TWIN-30: a blocked flange stays where it is, whatever the motor does;
 // the device's own monitor then reports the tracking error (manual 7.2 114.5).
 TEST(Twin, BlockedFlangeHoldsAndGivesTrackingError_7_2_114_5) {
-  Twin twin(config_2000());
+  Twin twin(twin_config_2000());
   write_u16(twin, 65, 4, 2000);
   switch_on_and_move(twin, 120.0);
   ASSERT_GT(run_until(twin, [&] { return rad_to_deg(twin.plant().angle_rad()) > 10.0; }, 200), 0);
@@ -231,7 +231,7 @@ TEST(Twin, BlockedFlangeHoldsAndGivesTrackingError_7_2_114_5) {
 }
 
 TEST(Twin, ReleasedFlangeMovesAgain) {
-  Twin twin(config_2000());
+  Twin twin(twin_config_2000());
   write_u16(twin, 65, 4, 2000);
   twin.set_flange_blocked(true);
   twin.set_flange_blocked(false);
@@ -255,7 +255,7 @@ TEST(Twin, AmbientChangeIsFollowedNotJumped) {
 }
 
 TEST(Twin, GhostShowsThePlannedSetpoint) {
-  Twin twin(config_2000());
+  Twin twin(twin_config_2000());
   write_u16(twin, 65, 4, 2000);
   switch_on_and_move(twin, 90.0);
   for (int i = 0; i < 20; ++i) twin.run_cycle(); // mid-move
