@@ -26,7 +26,10 @@ struct RouteInfo {
 std::vector<RouteInfo> http_routes();
 
 using HttpServer = Front<HttpOptions>;
-// Instantiated in serve/http_server.cpp only (where Impl is complete), also in a unity build.
+// Defined and instantiated in serve/http_server.cpp only (declared here, so that no other
+// file instantiates the members without it, also in a unity build).
+template <>
+struct Front<HttpOptions>::Impl;
 extern template class Front<HttpOptions>;
 // Instantiated in the .cpp (with its Impl); front.hpp declares the members only, so
 // no other file instantiates them (clang refuses an extern template before Impl).

@@ -269,14 +269,14 @@ struct Front<MqttOptions>::Impl {
   }
 
   void publish_loop() {
-    using Clock = std::chrono::steady_clock;
-    std::vector<Clock::time_point> last(static_cast<std::size_t>(hub.port_count()), Clock::time_point{});
+    using PublishClock = std::chrono::steady_clock;
+    std::vector<PublishClock::time_point> last(static_cast<std::size_t>(hub.port_count()), PublishClock::time_point{});
     while (running.load()) {
       for (int p = 1; p <= hub.port_count(); ++p) {
         const auto i = static_cast<std::size_t>(p - 1);
         const Json pd = hub.with_port(p, [&](Hub::Port& port) { return processdata_json(port); });
         std::string text = pd.dump();
-        const auto now = Clock::now();
+        const auto now = PublishClock::now();
         if (text != last_published[i] || now - last[i] >= std::chrono::milliseconds(options.interval_ms)) {
           publish(topic(p, "processdata"), text, true);
           last_published[i] = std::move(text);

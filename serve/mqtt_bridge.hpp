@@ -30,7 +30,10 @@ struct MqttOptions {
 };
 
 using MqttBridge = Front<MqttOptions>;
-// Instantiated in serve/mqtt_bridge.cpp only (where Impl is complete), also in a unity build.
+// Defined and instantiated in serve/mqtt_bridge.cpp only (declared here, so that no other
+// file instantiates the members without it, also in a unity build).
+template <>
+struct Front<MqttOptions>::Impl;
 extern template class Front<MqttOptions>;
 // Instantiated in the .cpp (with its Impl); front.hpp declares the members only, so
 // no other file instantiates them (clang refuses an extern template before Impl).

@@ -25,7 +25,10 @@ struct OpcuaOptions {
 };
 
 using OpcuaFront = Front<OpcuaOptions>;
-// Instantiated in serve/opcua_front.cpp only (where Impl is complete), also in a unity build.
+// Defined and instantiated in serve/opcua_front.cpp only (declared here, so that no other
+// file instantiates the members without it, also in a unity build).
+template <>
+struct Front<OpcuaOptions>::Impl;
 extern template class Front<OpcuaOptions>;
 
 // 127.0.0.0/8, ::1 or "localhost": security None is offered only there.
