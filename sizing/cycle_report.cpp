@@ -220,16 +220,16 @@ std::filesystem::path write_cycle_report(const std::filesystem::path& dir, const
 #else
 
 namespace {
-[[noreturn]] void no_reports() { throw std::runtime_error("this build has no reports (SREH_WITH_RENDER=OFF)"); }
+[[noreturn]] void no_cycle_reports() { throw std::runtime_error("this build has no reports (SREH_WITH_RENDER=OFF)"); }
 } // namespace
 std::string temperature_plot(double, double, double, const std::optional<double>&, const ThermalConstants&,
                              const UncertaintyResult*) {
-  no_reports();
+  no_cycle_reports();
 }
-std::string cycle_report_html(const CycleRequest&, const CycleResult&, const UncertaintyResult*) { no_reports(); }
+std::string cycle_report_html(const CycleRequest&, const CycleResult&, const UncertaintyResult*) { no_cycle_reports(); }
 std::filesystem::path write_cycle_report(const std::filesystem::path&, const CycleRequest&, const CycleResult&,
                                          const UncertaintyResult*) {
-  no_reports();
+  no_cycle_reports();
 }
 
 #endif
