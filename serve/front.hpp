@@ -27,4 +27,16 @@ class Front {
   std::unique_ptr<Impl> impl_;
 };
 
+// In a front's header, after its `using`: the members are instantiated in the
+// front's .cpp only (after its Impl), so no other file instantiates them, also
+// where serve/front_impl.hpp is visible without that Impl (a unity build puts
+// several .cpp files in one translation unit). Not `extern template class`:
+// clang refuses the .cpp's Impl after it.
+#define SREH_SERVE_EXTERN_FRONT(Options)                         \
+  extern template Front<Options>::Front(Hub&, const Options&); \
+  extern template Front<Options>::~Front();                    \
+  extern template int Front<Options>::bound_port() const;      \
+  extern template void Front<Options>::start();                \
+  extern template void Front<Options>::stop()
+
 } // namespace sreh::serve

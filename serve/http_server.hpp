@@ -26,11 +26,7 @@ struct RouteInfo {
 std::vector<RouteInfo> http_routes();
 
 using HttpServer = Front<HttpOptions>;
-// Defined and instantiated in serve/http_server.cpp only (declared here, so that no other
-// file instantiates the members without it, also in a unity build).
-template <>
-struct Front<HttpOptions>::Impl;
-extern template class Front<HttpOptions>;
+SREH_SERVE_EXTERN_FRONT(HttpOptions);
 // Instantiated in the .cpp (with its Impl); front.hpp declares the members only, so
 // no other file instantiates them (clang refuses an extern template before Impl).
 

@@ -28,11 +28,7 @@ struct ModbusOptions {
 };
 
 using ModbusServer = Front<ModbusOptions>;
-// Defined and instantiated in serve/modbus_server.cpp only (declared here, so that no other
-// file instantiates the members without it, also in a unity build).
-template <>
-struct Front<ModbusOptions>::Impl;
-extern template class Front<ModbusOptions>;
+SREH_SERVE_EXTERN_FRONT(ModbusOptions);
 // Instantiated in the .cpp (with its Impl); front.hpp declares the members only, so
 // no other file instantiates them (clang refuses an extern template before Impl).
 

@@ -30,11 +30,7 @@ struct MqttOptions {
 };
 
 using MqttBridge = Front<MqttOptions>;
-// Defined and instantiated in serve/mqtt_bridge.cpp only (declared here, so that no other
-// file instantiates the members without it, also in a unity build).
-template <>
-struct Front<MqttOptions>::Impl;
-extern template class Front<MqttOptions>;
+SREH_SERVE_EXTERN_FRONT(MqttOptions);
 // Instantiated in the .cpp (with its Impl); front.hpp declares the members only, so
 // no other file instantiates them (clang refuses an extern template before Impl).
 

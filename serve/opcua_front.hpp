@@ -25,11 +25,7 @@ struct OpcuaOptions {
 };
 
 using OpcuaFront = Front<OpcuaOptions>;
-// Defined and instantiated in serve/opcua_front.cpp only (declared here, so that no other
-// file instantiates the members without it, also in a unity build).
-template <>
-struct Front<OpcuaOptions>::Impl;
-extern template class Front<OpcuaOptions>;
+SREH_SERVE_EXTERN_FRONT(OpcuaOptions);
 
 // 127.0.0.0/8, ::1 or "localhost": security None is offered only there.
 bool is_loopback_host(const std::string& host);
