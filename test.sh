@@ -4,6 +4,8 @@
 #   ./test.sh              Release build in build/
 #   ./test.sh --sanitize   AddressSanitizer + UBSan build in build-asan/ (clang, no rendering; with the fuzz targets)
 # Any other arguments go to ctest (e.g. -L scenario, -R Planner).
+# Both are unity builds (SREH_UNITY: on unless a ccache launcher is configured;
+# docs/performance-ci.md).
 # SREH_BUILD_ONLY=1 stops after the build (CI builds the sanitizer tree while
 # the Release tests run).
 # Tests are always configured on, whatever an earlier ./demo.sh left in the
