@@ -407,7 +407,12 @@ BuiltModel build(const LoadSpec& load, const std::vector<HardStop>& hard_stops, 
   if (std::optional<BuiltModel> kept = cached_model(key)) return std::move(*kept); // issue 31: compiled once
   BuiltModel built;
   const std::string xml = detail == Detail::Full ? key.xml : without_texture_detail(key.xml);
-  built.model = compiled(xml, key, !hard_stops.empty(), origin);
+  // The lean model is made from the coarse one (same text, same compile):
+  // a load checked before (check_load, as every load file's parser and the
+  // studio's load panel do) has it compiled already.
+  std::optional<BuiltModel> coarse;
+  if (detail == Detail::Lean) coarse = cached_model(model_key(composed, physics_dt_s, mechanics, Detail::Coarse));
+  built.model = coarse ? std::move(coarse->model) : compiled(xml, key, !hard_stops.empty(), origin);
   if (detail == Detail::Lean) built.model = leanest(xml, std::move(built.model), key, origin);
   mjModel* m = built.model.get();
   // The module's own joints: "rotor" and "flange" (the compliance).
