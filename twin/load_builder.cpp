@@ -383,6 +383,14 @@ double built_load_inertia_kgm2(const LoadSpec& load, const std::vector<HardStop>
   if (const auto kept = cached_figures(model_key(composed, physics_dt_s, mechanics, detail))) {
     return kept->load_inertia_kgm2;
   }
+  // The lean model steps bit for bit as the coarse one (same_dynamics: the
+  // same moving bodies, inertials and armature), so its figures are the
+  // coarse one's: a load checked before needs no compile here (issue 37).
+  if (detail == Detail::Lean) {
+    if (const auto kept = cached_figures(model_key(composed, physics_dt_s, mechanics, Detail::Coarse))) {
+      return kept->load_inertia_kgm2;
+    }
+  }
   return build(load, hard_stops, physics_dt_s, mechanics, module_model_path, detail).load_inertia_kgm2;
 }
 
