@@ -15,7 +15,9 @@ sets:
   - the runs that rule takes at the window in force and, for the proxy
     before (the planned acceleration's RMS), at its 3 %.
 
-usage: gentle_proxy.py BUILD_DIR [--window 0.08] [--cases N] [--keep DIR] [--arms]
+usage: gentle_proxy.py BUILD_DIR [--window 0.08] [--cases N] [--seed S] [--keep DIR] [--arms]
+(--seed: of the random cases, 37 unless given; another seed is a fresh
+sample to check a window chosen on the first)
 (--arms: the eight horizontal-arm cases with time to spare instead, where
 the answers changed; docs/performance-sizing.md)
 (the old proxy's figures, the planned acceleration's RMS, alongside)
@@ -72,8 +74,8 @@ def planned_min_ms(angle_deg):
     return 1000.0 * (angle_deg / 4300.0 + 0.02)
 
 
-def random_cases(n, tmp):
-    rng = random.Random(37)
+def random_cases(n, tmp, seed=37):
+    rng = random.Random(seed)
     cases = []
     for k in range(n):
         angle = rng.choice([5, 10, 15, 30, 45, 60, 90, 120, 180, 270, 360, 720])
@@ -163,6 +165,7 @@ def main():
     build = sys.argv[1]
     window = sys.argv[sys.argv.index("--window") + 1] if "--window" in sys.argv else "0.08"
     n = int(sys.argv[sys.argv.index("--cases") + 1]) if "--cases" in sys.argv else 120
+    seed = int(sys.argv[sys.argv.index("--seed") + 1]) if "--seed" in sys.argv else 37
     keep = sys.argv[sys.argv.index("--keep") + 1] if "--keep" in sys.argv else None
     tmp = keep or tempfile.mkdtemp(prefix="gentle_proxy_")
     os.makedirs(tmp, exist_ok=True)
@@ -174,7 +177,7 @@ def main():
                 f.write(ARM_LOAD % (mass, radius))
         groups = [("arms", [c.format(**arms) for c in ARM_CASES])]
     else:
-        groups = [("docs", DOCS_CASES), ("studio", studio_cases(tmp)), ("random", random_cases(n, tmp))]
+        groups = [("docs", DOCS_CASES), ("studio", studio_cases(tmp)), ("random", random_cases(n, tmp, seed))]
     cases = [c for _, g in groups for c in g]
     with open(os.path.join(tmp, "cases.txt"), "w") as f:
         f.write("\n".join(cases) + "\n")

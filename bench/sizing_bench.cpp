@@ -36,12 +36,12 @@ void BM_Evaluate90(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(evaluate(rq, set, false));
 }
 
-// A sizing twin restored from this thread's pool (the same world again).
+// A sizing twin restored from the pool (the same world again).
 void BM_FreshTwinFromPool(benchmark::State& state) {
   TwinConfig cfg;
   cfg.load = InertiaLoad{5000};
   cfg.visual_detail = false;
-  for (auto _ : state) benchmark::DoNotOptimize(&fresh_twin(cfg));
+  for (auto _ : state) benchmark::DoNotOptimize(&*fresh_twin(cfg));
 }
 
 // A lean model from the cache vs. compiled (the cache emptied each time).

@@ -49,7 +49,8 @@ double PositionController::update(const KinematicState& setpoint, double measure
   last_sp_pos_ = setpoint.pos_rad;
 
   const double j = inertia_kgm2;
-  const double wv = gains_.velocity_bandwidth_for(j);
+  if (j != wv_memo_.inertia_kgm2) wv_memo_ = {j, gains_.velocity_bandwidth_for(j)};
+  const double wv = wv_memo_.wv_rad_s;
   const double kv = j * wv;
   const double pos_err = setpoint.pos_rad - measured_pos_rad;
   const double vel_err = sp_vel_ + gains_.position_ratio * wv * pos_err - vel_est_;

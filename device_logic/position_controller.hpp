@@ -78,6 +78,15 @@ class PositionController {
   std::array<double, kMaxDelayPeriods> pending_{}; // outputs of the last periods (loop delay, A-CTRL-7)
   int pending_head_ = 0;
   bool primed_ = false;
+  // wv(J) for the inertia of the last call: J changes only with the
+  // configured load, and the pow() of every step was ~2 % of a sizing run's
+  // CPU. A cache of a pure function, not state: equal whatever it holds.
+  struct BandwidthMemo {
+    double inertia_kgm2 = -1;
+    double wv_rad_s = 0;
+    bool operator==(const BandwidthMemo&) const { return true; }
+  };
+  BandwidthMemo wv_memo_;
   bool saturated_ = false;
 };
 

@@ -271,14 +271,22 @@ void draw_limits(std::string& o, const Plot& p, const Frame& f) {
 void draw_series(std::string& o, const Plot& p, const Frame& f) {
   for (const Series& s : p.series) {
     if (s.markers) {
-      // Unordered points: at most ~3000 dots, evenly strided.
+      // Unordered points: at most ~3000 dots, evenly strided, as one path
+      // of zero-length strokes with round caps (a dot each): one element
+      // for the browser to parse and lay out, not one per point (611 in the
+      // studio's answer, issue 37).
       const std::size_t n = std::min(s.x.size(), s.y.size()), stride = std::max<std::size_t>(1, n / 3000);
-      o += fmt::format(R"(<g class="series" fill="{}" fill-opacity="0.6">)", xml_escape(s.color));
+      std::string dots;
       for (std::size_t i = 0; i < n; i += stride) {
         if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i]) || s.x[i] < f.xr.lo || s.x[i] > f.xr.hi) continue;
-        o += fmt::format(R"(<circle cx="{:.1f}" cy="{:.1f}" r="{:.1f}"/>)", f.px(s.x[i]), f.py(s.y[i]), std::max(1.8, s.width_px / 2));
+        dots += fmt::format("M{:.1f} {:.1f}h0", f.px(s.x[i]), f.py(s.y[i]));
       }
-      o += "</g>\n";
+      if (!dots.empty()) {
+        o += fmt::format(R"(<path class="series" fill="none" stroke="{}" stroke-opacity="0.6" stroke-width="{:.1f}" )"
+                         R"(stroke-linecap="round" d="{}"/>)",
+                         xml_escape(s.color), 2 * std::max(1.8, s.width_px / 2), dots);
+        o += '\n';
+      }
       continue;
     }
     const auto keep = decimate_min_max(s.x, s.y, f.xr.lo, f.xr.hi, static_cast<int>(f.pw));

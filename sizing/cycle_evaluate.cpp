@@ -213,7 +213,8 @@ CycleEvaluation evaluate_cycle(const CycleRequest& rq, const CyclePlan& plan, co
                                bool keep_trace) {
   if (rq.on_simulation) rq.on_simulation();
   const TwinConfig cfg = sizing_twin_config(rq.world);
-  Twin& twin = fresh_twin(cfg); // as make_twin(cfg) builds it (issue 31)
+  const PooledTwin lent = fresh_twin(cfg); // as make_twin(cfg) builds it (issue 31)
+  Twin& twin = *lent;
   const Thermal thermal(cfg.thermal, rq.world.module.thermal);
   const double cycle_s = cfg.cycle_s;
 

@@ -223,7 +223,8 @@ void cycle_means(const SizingRequest& rq, const Thermal& thermal, const std::vec
 Evaluation evaluate(const SizingRequest& rq, const ParameterSetValues& set, bool keep_trace) {
   if (rq.on_simulation) rq.on_simulation();
   const TwinConfig cfg = sizing_twin_config(rq.world);
-  Twin& twin = fresh_twin(cfg); // as make_twin(cfg) builds it (issue 31)
+  const PooledTwin lent = fresh_twin(cfg); // as make_twin(cfg) builds it (issue 31)
+  Twin& twin = *lent;
   const MotorModel& motor = rq.world.module.drive.motor;
   const Thermal thermal(cfg.thermal, rq.world.module.thermal);
 

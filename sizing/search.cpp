@@ -333,7 +333,19 @@ std::vector<Candidate> gentle_order(const SizingRequest& rq, double load_gcm2, i
   std::erase_if(cs, [&](const Candidate& c) { return c.travel_s + wait_s > max_pos_s; });
   const double fixed_s = fixed_per_move_s(rq, load_gcm2);
   const TorqueProxy rms(rq, load_gcm2);
-  for (Candidate& c : cs) with_proxies(rq, load_gcm2, fixed_s, c, &rms);
+  // A pure function of each candidate: with threads, half of them on
+  // another (the proxies of ~3000 plans are most of the search's serial
+  // part, issue 37).
+  const auto fill = [&](std::size_t from, std::size_t to) {
+    for (std::size_t i = from; i < to; ++i) with_proxies(rq, load_gcm2, fixed_s, cs[i], &rms);
+  };
+  if (rq.search_threads > 1 && cs.size() > 64) {
+    auto second = std::async(std::launch::async, fill, cs.size() / 2, cs.size());
+    fill(0, cs.size() / 2);
+    second.get();
+  } else {
+    fill(0, cs.size());
+  }
   std::sort(cs.begin(), cs.end(), [&](const Candidate& a, const Candidate& b) {
     if (a.rms_Nm != b.rms_Nm) return a.rms_Nm < b.rms_Nm;
     return a.travel_s < b.travel_s;

@@ -1,6 +1,7 @@
 // validate(), and size(): evaluate the given set, or search (search.cpp,
 // A-SIZE-10) the fastest feasible one or the gentlest one meeting a target.
 #include <cmath>
+#include <future>
 #include <stdexcept>
 #include <string>
 
@@ -9,7 +10,9 @@
 #include "device_logic/parameter_ids.hpp"
 #include "device_logic/units.hpp"
 #include "scenarios/load_file.hpp"
+#include "sizing/run_parts.hpp"
 #include "sizing/sizing.hpp"
+#include "sizing/twin_factory.hpp"
 #include "twin/load_builder.hpp"
 #include "twin/model_card.hpp"
 
@@ -118,6 +121,13 @@ SizingResult size(const SizingRequest& rq, const SetJudge& judge) {
     result.best_positioning_s = result.evaluation.positioning_s;
     result.best_cycle_s = result.evaluation.cycle_s;
     return result;
+  }
+  // The first run's twin is built (its lean model compiled) on another
+  // thread while the search plans its grid (issue 37): then it waits in the
+  // pool (twin_factory.hpp).
+  std::future<void> warm;
+  if (rq.search_threads > 1 && !judge) {
+    warm = std::async(std::launch::async, [&rq] { (void)fresh_twin(sizing_twin_config(rq.world)); });
   }
   result = (rq.max_positioning_ms || rq.max_cycle_ms) ? search_gentlest(rq, load_gcm2, judge)
                                                            : search_fastest(rq, load_gcm2, judge);

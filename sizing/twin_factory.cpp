@@ -9,11 +9,21 @@
 #include "twin/twin_snapshot.hpp"
 
 namespace sreh::sizing {
+
+struct KeptTwin {
+  TwinConfig config;
+  std::unique_ptr<Twin> twin;
+  TwinSnapshot fresh; // taken right after construction
+};
+
 namespace {
 
-// Twins kept per thread: a sweep point's runs share one world; the
-// uncertainty samples each have their own.
-constexpr std::size_t kKeptPerThread = 3;
+// Twins kept idle: a sweep point's runs share one world; the uncertainty
+// samples each have their own; the searches' look-ahead runs come on
+// threads of their own (search.cpp Speculation), so the pool is shared by
+// all threads, not kept per thread: a per-thread pool built each look-ahead
+// run's twin anew (model copy, mjData, device), issue 37.
+constexpr std::size_t kKeptIdle = 6;
 
 // Everything of a TwinConfig that make_twin's twin depends on.
 // Every field of the world (WorldSpec's ==, so a field added there is
@@ -23,11 +33,15 @@ bool same_world(const TwinConfig& a, const TwinConfig& b) {
          a.record_trace == b.record_trace && a.visual_detail == b.visual_detail && a.nvm_image == b.nvm_image;
 }
 
-struct Kept {
-  TwinConfig config;
-  std::unique_ptr<Twin> twin;
-  TwinSnapshot fresh; // taken right after construction
+struct Pool {
+  std::mutex mutex;
+  std::list<std::unique_ptr<KeptTwin>> idle; // most recently returned first
 };
+
+Pool& pool() {
+  static Pool p;
+  return p;
+}
 
 } // namespace
 
@@ -41,22 +55,41 @@ std::unique_ptr<Twin> make_twin(const TwinConfig& config) {
   }
 }
 
-Twin& fresh_twin(const TwinConfig& config) {
+PooledTwin::PooledTwin(std::unique_ptr<KeptTwin> kept) : kept_(std::move(kept)) {}
+PooledTwin::PooledTwin(PooledTwin&&) noexcept = default;
+
+PooledTwin::~PooledTwin() {
+  if (!kept_) return;
+  Pool& p = pool();
+  const std::lock_guard<std::mutex> lock(p.mutex);
+  p.idle.push_front(std::move(kept_));
+  if (p.idle.size() > kKeptIdle) p.idle.pop_back();
+}
+
+Twin& PooledTwin::operator*() const { return *kept_->twin; }
+
+PooledTwin fresh_twin(const TwinConfig& config) {
   if (config.trace_sink || config.move_sink || config.nvm_image) {
     throw std::logic_error("fresh_twin: a config with sinks or a memory image is not kept");
   }
-  thread_local std::list<Kept> kept; // most recently used first
-  auto it = std::find_if(kept.begin(), kept.end(), [&](const Kept& k) { return same_world(k.config, config); });
-  if (it != kept.end()) {
-    kept.splice(kept.begin(), kept, it);
-    kept.front().twin->restore(kept.front().fresh);
-    return *kept.front().twin;
+  std::unique_ptr<KeptTwin> kept;
+  {
+    Pool& p = pool();
+    const std::lock_guard<std::mutex> lock(p.mutex);
+    auto it = std::find_if(p.idle.begin(), p.idle.end(), [&](const auto& k) { return same_world(k->config, config); });
+    if (it != p.idle.end()) {
+      kept = std::move(*it);
+      p.idle.erase(it);
+    }
   }
-  std::unique_ptr<Twin> twin = make_twin(config);
-  TwinSnapshot fresh = twin->snapshot();
-  kept.push_front(Kept{config, std::move(twin), std::move(fresh)});
-  if (kept.size() > kKeptPerThread) kept.pop_back();
-  return *kept.front().twin;
+  if (kept) {
+    kept->twin->restore(kept->fresh); // outside the lock: threads restore in parallel
+  } else {
+    std::unique_ptr<Twin> twin = make_twin(config);
+    TwinSnapshot fresh = twin->snapshot();
+    kept.reset(new KeptTwin{config, std::move(twin), std::move(fresh)});
+  }
+  return PooledTwin(std::move(kept));
 }
 
 } // namespace sreh::sizing

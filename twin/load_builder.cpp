@@ -383,6 +383,14 @@ double built_load_inertia_kgm2(const LoadSpec& load, const std::vector<HardStop>
   if (const auto kept = cached_figures(model_key(composed, physics_dt_s, mechanics, detail))) {
     return kept->load_inertia_kgm2;
   }
+  // The lean model steps bit for bit as the coarse one (same_dynamics: the
+  // same moving bodies, inertials and armature), so its figures are the
+  // coarse one's: a load checked before needs no compile here (issue 37).
+  if (detail == Detail::Lean) {
+    if (const auto kept = cached_figures(model_key(composed, physics_dt_s, mechanics, Detail::Coarse))) {
+      return kept->load_inertia_kgm2;
+    }
+  }
   return build(load, hard_stops, physics_dt_s, mechanics, module_model_path, detail).load_inertia_kgm2;
 }
 
@@ -407,7 +415,12 @@ BuiltModel build(const LoadSpec& load, const std::vector<HardStop>& hard_stops, 
   if (std::optional<BuiltModel> kept = cached_model(key)) return std::move(*kept); // issue 31: compiled once
   BuiltModel built;
   const std::string xml = detail == Detail::Full ? key.xml : without_texture_detail(key.xml);
-  built.model = compiled(xml, key, !hard_stops.empty(), origin);
+  // The lean model is made from the coarse one (same text, same compile):
+  // a load checked before (check_load, as every load file's parser and the
+  // studio's load panel do) has it compiled already.
+  std::optional<BuiltModel> coarse;
+  if (detail == Detail::Lean) coarse = cached_model(model_key(composed, physics_dt_s, mechanics, Detail::Coarse));
+  built.model = coarse ? std::move(coarse->model) : compiled(xml, key, !hard_stops.empty(), origin);
   if (detail == Detail::Lean) built.model = leanest(xml, std::move(built.model), key, origin);
   mjModel* m = built.model.get();
   // The module's own joints: "rotor" and "flange" (the compliance).

@@ -8,6 +8,9 @@
 
 namespace sreh {
 namespace {
+// -x beyond which exp(x) rounds to exactly 0 in double (exp(-745.14) is
+// under half the least subnormal, 4.9e-324).
+constexpr double kExpIsZeroBeyond = 746.0;
 
 // Physics steps per control period (issue 25): the drive keeps its own
 // clock, the simulator sub-steps it.
@@ -147,7 +150,10 @@ void Plant::set_drive_train_state() {
   apply_damping(touching ? c.torsional_damping_Nms_per_rad : 0.0, c.viscous_friction_Nms_per_rad);
   const double transmitted_Nm = c.torsional_stiffness_Nm_per_rad * (twist - reference);
   const double w = data_->qvel[rotor_dof_] / c.stribeck_speed_rad_s;
-  m->dof_frictionloss[rotor_dof_] = c.coulomb_friction_Nm + c.stribeck_excess_Nm * std::exp(-w * w) +
+  // exp(x) is exactly 0 below x = -745.14 (under half the least subnormal),
+  // where libm takes its slow underflow path: a moving rotor is far beyond.
+  const double stribeck = w * w > kExpIsZeroBeyond ? 0.0 : std::exp(-w * w);
+  m->dof_frictionloss[rotor_dof_] = c.coulomb_friction_Nm + c.stribeck_excess_Nm * stribeck +
                                     (1.0 - c.gear_efficiency) * std::abs(transmitted_Nm);
 }
 

@@ -221,9 +221,10 @@ ${stl}<div class="row">${dims}</div>
     let a;
     try { a = await post(state); } finally { done(); }
     if (mine !== seq) return; // a newer edit is on its way
+    const t1 = performance.now(); // the answer read and parsed
     window.studio.answer = a;
     showAnswer(a);
-    timings.push({client_ms: performance.now() - t0, server_ms: a.elapsed_ms, cpu_ms: a.cpu_ms});
+    timings.push({client_ms: performance.now() - t0, server_ms: a.elapsed_ms, cpu_ms: a.cpu_ms, shown_ms: performance.now() - t1});
     $('status').classList.remove('busy');
     $('status').textContent = `answered in ${Math.round(performance.now() - t0)} ms`;
     window.studio.pending = 0;

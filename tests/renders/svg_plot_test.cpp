@@ -57,6 +57,30 @@ TEST(SvgPlot, OffScaleLimitIsNamedNotScaledTo) {
   EXPECT_NE(s.find(">0.0010<"), std::string::npos);
 }
 
+// Issue 37: operating points are dots of one path (a round-capped
+// zero-length stroke each), not an element per point: the studio's answer
+// carried 611 circles, which the page parsed, laid out and painted on every
+// answer. Every finite point in the x range is one dot.
+TEST(SvgPlot, MarkersAreOnePathWithADotPerPoint) {
+  Plot p;
+  Series dots{"operating points", {}, {}};
+  dots.markers = true;
+  for (int i = 0; i < 611; ++i) {
+    dots.x.push_back(i);
+    dots.y.push_back(std::sin(0.1 * i));
+  }
+  dots.y[7] = std::nan("");
+  p.series = {dots};
+  const std::string s = to_svg(p);
+  EXPECT_EQ(count(s, "<circle"), 1u); // the legend's swatch only
+  EXPECT_EQ(count(s, "<path class=\"series\""), 1u);
+  EXPECT_EQ(count(s, "h0"), 610u); // the NaN point left out
+  EXPECT_NE(s.find("stroke-linecap=\"round\""), std::string::npos);
+  // No point in range: no empty path.
+  p.series[0].y.assign(611, std::nan(""));
+  EXPECT_EQ(count(to_svg(p), "<path class=\"series\""), 0u);
+}
+
 TEST(Decimation, KeepsSpikesAndBoundsThePointCount) {
   std::vector<double> x(200000), y(200000);
   for (std::size_t i = 0; i < x.size(); ++i) {

@@ -151,6 +151,14 @@ TEST(ModelLean, ALeanTwinStepsBitForBitAsTheDrawnOneForEveryLoad) {
     EXPECT_EQ(a.plant().ghost_angle_rad(), b.plant().ghost_angle_rad()); // kept, though nothing draws it
     EXPECT_EQ(a.plant().led_band_rgba(), b.plant().led_band_rgba());
     EXPECT_GT(std::abs(a.trace().back().position_deg), 60.0); // it did move
+    // The lean model's figures are the coarse model's, bit for bit (a
+    // sizing check takes them from the coarse one when it is cached).
+    const BuiltModel coarse = check_load(load);
+    const BuiltModel lean_model = build_model(load, {}, 1e-4, default_module_model().mechanics,
+                                              default_module_model_path(), false);
+    EXPECT_EQ(coarse.load_inertia_kgm2, lean_model.load_inertia_kgm2);
+    EXPECT_EQ(coarse.axis_inertia_kgm2, lean_model.axis_inertia_kgm2);
+    EXPECT_LT(lean_model.model->nbody, coarse.model->nbody); // the lean one indeed
   }
 }
 
