@@ -18,7 +18,6 @@ namespace sreh {
 namespace {
 
 constexpr double kZ95 = 1.959963984540054;     // two-sided 95 % of the normal distribution
-constexpr double kStrongCorrelation = 0.95;    // |r| above this: the data cannot separate the two
 constexpr double kAtBound = 0.001;             // within 0.1 % of the range from a bound: at it
 constexpr int kLikelihoodProbes = 5;           // step-outs per side, each twice the last
 constexpr unsigned kRefitSeed = 36;            // the bootstrap's noise, refit b's seed kRefitSeed + b (A-CAL-12)

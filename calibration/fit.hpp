@@ -14,6 +14,10 @@
 
 namespace sreh {
 
+// |r| above this: the data cannot separate two fitted constants; the fit
+// flags them (A-CAL-4) and the report shows r in bold.
+inline constexpr double kStrongCorrelation = 0.95;
+
 struct FitCase {
   MasterLog log;
   ReplaySetup setup;

@@ -7,10 +7,10 @@
 
 #include <fmt/format.h>
 
+#include "device_logic/units.hpp"
+
 namespace sreh {
 namespace {
-
-constexpr double kLogCountsPerRev = 65536.0; // manual 2.5
 
 [[noreturn]] void fail(const std::string& path, int line, const std::string& what) {
   throw CalibrationInputError(fmt::format("{}:{}: {}", path, line, what));
@@ -114,7 +114,7 @@ void write_master_log_row(std::ostream& out, double t_s, const PdOutFrame& pd_ou
 
 double logged_position_deg(const PdInFrame& pd_in) {
   const ProcessDataIn in = decode_in(pd_in);
-  return (static_cast<double>(in.position_raw) + 0.5) * (360.0 / kLogCountsPerRev);
+  return (static_cast<double>(in.position_raw) + 0.5) * (360.0 / static_cast<double>(kWireCountsPerRev)); // manual 2.5
 }
 
 } // namespace sreh

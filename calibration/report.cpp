@@ -20,7 +20,6 @@
 namespace sreh {
 namespace {
 
-constexpr double kReportStrongCorrelation = 0.9;          // as fit.cpp flags a constant (A-CAL-4)
 constexpr const char* kLogged = "#333333";
 constexpr const char* kStart = "#ff7f0e";
 constexpr const char* kFitted = "#1f77b4";
@@ -123,14 +122,14 @@ std::string correlation_table(const FitResult& fit) {
   std::string o = fmt::format("<h2>Correlation of the fitted constants</h2>\n<p>|r| above {} (bold) means the data "
                               "trade one constant against the other: excite more (another amplitude, speed or a hold) "
                               "or fit fewer.</p>\n<table>\n<tr><th></th>",
-                              kReportStrongCorrelation);
+                              kStrongCorrelation);
   for (const FittedConstant& f : fit.constants) o += "<th>" + esc(f.name) + "</th>";
   o += "</tr>\n";
   for (std::size_t i = 0; i < fit.constants.size(); ++i) {
     o += "<tr><td class=\"l\">" + esc(fit.constants[i].name) + "</td>";
     for (std::size_t j = 0; j < fit.constants.size(); ++j) {
       const double r = fit.correlation[i][j];
-      const bool strong = i != j && std::abs(r) > kReportStrongCorrelation;
+      const bool strong = i != j && std::abs(r) > kStrongCorrelation;
       o += strong ? fmt::format("<td><b>{:+.2f}</b></td>", r) : fmt::format("<td>{:+.2f}</td>", r);
     }
     o += "</tr>\n";

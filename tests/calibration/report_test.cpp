@@ -49,7 +49,7 @@ TEST(CalibrationReport, ShowsEachLogWithStartAndFittedCard) {
   fit.iterations = 4;
   fit.constants = {{"coulomb_friction", "N m", 0.0054, 0.004, 0.0050, 0.0058, true, ""},
                    {"viscous_friction", "N m s/rad", 1e-5, 1e-5, 0.0, 3e-5, false, "interval wider than +-25 %"}};
-  fit.correlation = {{1.0, 0.95}, {0.95, 1.0}};
+  fit.correlation = {{1.0, 0.97}, {0.97, 1.0}}; // above kStrongCorrelation
   const auto dir = std::filesystem::temp_directory_path() / ("sreh_calibration_report_test_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   const std::filesystem::path index = write_calibration_report(dir, {c}, default_model_card(), fit);
@@ -68,7 +68,7 @@ TEST(CalibrationReport, ShowsEachLogWithStartAndFittedCard) {
   // The constants table: change and the unidentified one with its reason; the strong correlation in bold.
   EXPECT_NE(html.find("+35.0 %"), std::string::npos); // 0.004 -> 0.0054
   EXPECT_NE(html.find("no</span> interval wider than +-25 %"), std::string::npos);
-  EXPECT_NE(html.find("<b>+0.95</b>"), std::string::npos);
+  EXPECT_NE(html.find("<b>+0.97</b>"), std::string::npos);
   std::filesystem::remove_all(dir);
 }
 
